@@ -1,0 +1,1 @@
+//! Host-side float reference, metrics and test helpers.

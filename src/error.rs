@@ -1,0 +1,86 @@
+//! The one error type of fixel: returned by constructors that validate input.
+//!
+//! Drawing never fails: degenerate or clipped-away triangles are skipped. Everything that can
+//! be wrong with *input* (a texture whose side is not a power of two, a slice of the wrong
+//! length, a band taller than its buffer, a mesh index out of range) is refused where it
+//! enters, with a variant that says what is wrong.
+
+use core::fmt;
+
+/// What is wrong with an input handed to a fixel constructor.
+///
+/// `Copy + Debug + Display`, and `#[non_exhaustive]` so that new checks can be added without
+/// a breaking change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A texture or buffer side is not a power of two (the value is the offending side).
+    NotPowerOfTwo(u32),
+    /// A side is zero or larger than the largest supported (the value is the offending side).
+    BadSize(u32),
+    /// A slice does not have the length its declared size needs.
+    WrongLength {
+        /// Length the declared size needs.
+        expected: usize,
+        /// Length that was given.
+        actual: usize,
+    },
+    /// A band is taller than the buffer that should hold it, or has zero height.
+    BandTooTall {
+        /// Rows asked for.
+        rows: u16,
+        /// Rows the buffer can hold.
+        capacity: u16,
+    },
+    /// A mesh index points past the end of the vertex list.
+    IndexOutOfRange {
+        /// Position of the bad index in the index list.
+        at: usize,
+        /// The bad index.
+        index: u16,
+        /// Number of vertices.
+        vertices: usize,
+    },
+    /// A viewport is empty or larger than the raster supports (see `geometry::viewport`).
+    BadViewport {
+        /// Requested width in pixels.
+        width: u32,
+        /// Requested height in pixels.
+        height: u32,
+    },
+    /// A camera or projection parameter is out of its documented range.
+    BadProjection(&'static str),
+    /// A fixed-capacity store is full.
+    CapacityExceeded {
+        /// Its capacity.
+        capacity: usize,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::NotPowerOfTwo(n) => write!(f, "size {n} is not a power of two"),
+            Error::BadSize(n) => write!(f, "size {n} is zero or larger than supported"),
+            Error::WrongLength { expected, actual } => {
+                write!(f, "slice has {actual} elements, the declared size needs {expected}")
+            }
+            Error::BandTooTall { rows, capacity } => {
+                write!(f, "band of {rows} rows does not fit a buffer of {capacity} rows")
+            }
+            Error::IndexOutOfRange { at, index, vertices } => write!(
+                f,
+                "index {index} at position {at} is out of range for {vertices} vertices"
+            ),
+            Error::BadViewport { width, height } => {
+                write!(f, "viewport {width}x{height} is empty or too large")
+            }
+            Error::BadProjection(what) => write!(f, "bad projection: {what}"),
+            Error::CapacityExceeded { capacity } => {
+                write!(f, "fixed capacity of {capacity} exceeded")
+            }
+        }
+    }
+}
+
+impl core::error::Error for Error {}

@@ -1,0 +1,1 @@
+//! Fixed-point math (being written).

@@ -1,0 +1,1 @@
+//! Textures (being written).
