@@ -63,12 +63,22 @@ impl fmt::Display for Error {
             Error::NotPowerOfTwo(n) => write!(f, "size {n} is not a power of two"),
             Error::BadSize(n) => write!(f, "size {n} is zero or larger than supported"),
             Error::WrongLength { expected, actual } => {
-                write!(f, "slice has {actual} elements, the declared size needs {expected}")
+                write!(
+                    f,
+                    "slice has {actual} elements, the declared size needs {expected}"
+                )
             }
             Error::BandTooTall { rows, capacity } => {
-                write!(f, "band of {rows} rows does not fit a buffer of {capacity} rows")
+                write!(
+                    f,
+                    "band of {rows} rows does not fit a buffer of {capacity} rows"
+                )
             }
-            Error::IndexOutOfRange { at, index, vertices } => write!(
+            Error::IndexOutOfRange {
+                at,
+                index,
+                vertices,
+            } => write!(
                 f,
                 "index {index} at position {at} is out of range for {vertices} vertices"
             ),

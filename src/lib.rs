@@ -9,3 +9,4 @@ pub mod math;
 pub mod texture;
 
 pub use error::Error;
+pub mod raster;

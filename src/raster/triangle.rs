@@ -1,0 +1,265 @@
+//! Triangle to spans: sorts the vertices by y, walks the long edge against the two short
+//! ones with [`EdgeWalker`], and hands each non-empty row span, cropped to a clip
+//! rectangle, to a [`SpanSink`].
+//!
+//! Rows covered are those whose centre `yc` satisfies `y_top <= yc < y_bottom` (flat top
+//! edges in, flat bottom edges out); within a row the span is `[left, right)` from the two
+//! edge walkers (left edges in, right edges out). Zero-area and collinear triangles emit
+//! nothing. Cost: one `i64` division per edge at set-up (twice for the long edge when the
+//! triangle starts above the clip rectangle), then two adds and a compare per edge per row.
+
+use super::{EdgeWalker, SUBPIXEL_ONE};
+
+/// A pixel rectangle, half-open: columns `x0..x1`, rows `y0..y1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Rect {
+    /// First column.
+    pub x0: i32,
+    /// First row.
+    pub y0: i32,
+    /// One past the last column.
+    pub x1: i32,
+    /// One past the last row.
+    pub y1: i32,
+}
+
+impl Rect {
+    /// The rectangle `0..width` by `0..height`.
+    pub const fn of_size(width: u32, height: u32) -> Rect {
+        Rect {
+            x0: 0,
+            y0: 0,
+            x1: width as i32,
+            y1: height as i32,
+        }
+    }
+
+    /// Rows `y0..y1` of this rectangle (clamped to it).
+    pub fn rows(self, y0: i32, y1: i32) -> Rect {
+        Rect {
+            y0: y0.max(self.y0),
+            y1: y1.min(self.y1),
+            ..self
+        }
+    }
+
+    /// True when the rectangle contains no pixel.
+    pub fn is_empty(self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+}
+
+/// Receives the spans of covered pixels, one row at a time, top to bottom.
+pub trait SpanSink {
+    /// Pixels `x0..x1` (non-empty, inside the clip rectangle) of row `y` are covered.
+    fn span(&mut self, y: i32, x0: i32, x1: i32);
+}
+
+/// First pixel row whose centre is at or below `y` (sub-pixel units): `ceil((y - 8) / 16)`.
+#[inline]
+pub fn first_row_at_or_below(y: i32) -> i32 {
+    (y - SUBPIXEL_ONE / 2 + SUBPIXEL_ONE - 1) >> super::SUBPIXEL_BITS
+}
+
+/// Rasterizes the triangle `v` (sub-pixel screen coordinates inside the guard band, any
+/// winding) into spans cropped to `clip`. Zero-area triangles emit nothing.
+pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mut S) {
+    let mut p = v;
+    // Sort by y (a stable 3-element network).
+    if p[1].1 < p[0].1 {
+        p.swap(0, 1);
+    }
+    if p[2].1 < p[1].1 {
+        p.swap(1, 2);
+    }
+    if p[1].1 < p[0].1 {
+        p.swap(0, 1);
+    }
+    let [top, mid, bot] = p;
+    // Side of the middle vertex relative to the long edge; zero means collinear.
+    let cross = (i64::from(mid.0) - i64::from(top.0)) * (i64::from(bot.1) - i64::from(top.1))
+        - (i64::from(mid.1) - i64::from(top.1)) * (i64::from(bot.0) - i64::from(top.0));
+    if cross == 0 {
+        return;
+    }
+    let mid_right = cross > 0;
+
+    let row_top = first_row_at_or_below(top.1).max(clip.y0);
+    let row_mid = first_row_at_or_below(mid.1).clamp(row_top, clip.y1.max(row_top));
+    let row_bot = first_row_at_or_below(bot.1).min(clip.y1);
+    if row_top >= row_bot {
+        return;
+    }
+    let mut long = EdgeWalker::new(top, bot, row_top);
+    // Upper half: rows with centre in [top.y, mid.y).
+    if row_top < row_mid {
+        let mut short = EdgeWalker::new(top, mid, row_top);
+        walk(
+            &mut long,
+            &mut short,
+            mid_right,
+            row_top,
+            row_mid.min(row_bot),
+            clip,
+            sink,
+        );
+    }
+    // Lower half: rows with centre in [mid.y, bot.y).
+    let start = row_mid.max(row_top);
+    if start < row_bot {
+        let mut short = EdgeWalker::new(mid, bot, start);
+        walk(&mut long, &mut short, mid_right, start, row_bot, clip, sink);
+    }
+}
+
+#[inline(always)]
+fn walk<S: SpanSink + ?Sized>(
+    long: &mut EdgeWalker,
+    short: &mut EdgeWalker,
+    short_is_right: bool,
+    y0: i32,
+    y1: i32,
+    clip: Rect,
+    sink: &mut S,
+) {
+    for y in y0..y1 {
+        let (l, r) = if short_is_right {
+            (long.x(), short.x())
+        } else {
+            (short.x(), long.x())
+        };
+        let (l, r) = (l.max(clip.x0), r.min(clip.x1));
+        if l < r {
+            sink.span(y, l, r);
+        }
+        long.step();
+        short.step();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::vec::Vec;
+
+    /// Counts writes per pixel into a small grid and fails on out-of-bounds spans.
+    struct Grid {
+        w: i32,
+        h: i32,
+        hits: Vec<u8>,
+    }
+    impl Grid {
+        fn new(w: i32, h: i32) -> Self {
+            Grid {
+                w,
+                h,
+                hits: std::vec![0; (w * h) as usize],
+            }
+        }
+        fn ascii(&self) -> std::string::String {
+            let mut s = std::string::String::new();
+            for y in 0..self.h {
+                for x in 0..self.w {
+                    let c = self.hits[(y * self.w + x) as usize];
+                    s.push(match c {
+                        0 => '.',
+                        1 => '#',
+                        _ => '2',
+                    });
+                }
+                s.push('\n');
+            }
+            s
+        }
+    }
+    impl SpanSink for Grid {
+        fn span(&mut self, y: i32, x0: i32, x1: i32) {
+            assert!(
+                x0 < x1 && x0 >= 0 && x1 <= self.w && y >= 0 && y < self.h,
+                "bad span"
+            );
+            for x in x0..x1 {
+                self.hits[(y * self.w + x) as usize] += 1;
+            }
+        }
+    }
+
+    fn px(x: i32, y: i32) -> (i32, i32) {
+        (x * 16, y * 16)
+    }
+
+    #[test]
+    fn square_of_two_triangles_covers_each_pixel_once() {
+        let mut g = Grid::new(6, 4);
+        let clip = Rect::of_size(6, 4);
+        rasterize([px(1, 0), px(5, 0), px(5, 3)], clip, &mut g);
+        rasterize([px(1, 0), px(5, 3), px(1, 3)], clip, &mut g);
+        assert_eq!(g.ascii(), ".####.\n.####.\n.####.\n......\n");
+    }
+
+    #[test]
+    fn fill_rule_ties_on_pixel_centres() {
+        // Vertices exactly on pixel centres: left/top edges through centres are in,
+        // right/bottom ones out.
+        let c = |x: i32, y: i32| (x * 16 + 8, y * 16 + 8);
+        let mut g = Grid::new(5, 5);
+        rasterize([c(0, 0), c(4, 0), c(0, 4)], Rect::of_size(5, 5), &mut g);
+        assert_eq!(g.ascii(), "####.\n###..\n##...\n#....\n.....\n");
+    }
+
+    #[test]
+    fn fan_around_a_vertex_is_watertight() {
+        let (w, h) = (40, 40);
+        let mut g = Grid::new(w, h);
+        let centre = (20 * 16 + 5, 19 * 16 + 11);
+        let ring: Vec<(i32, i32)> = [
+            (0, 0),
+            (13, 0),
+            (40, 0),
+            (40, 17),
+            (40, 40),
+            (22, 40),
+            (0, 40),
+            (0, 9),
+        ]
+        .iter()
+        .map(|&(x, y)| (x * 16, y * 16))
+        .collect();
+        for i in 0..ring.len() {
+            rasterize(
+                [centre, ring[i], ring[(i + 1) % ring.len()]],
+                Rect::of_size(40, 40),
+                &mut g,
+            );
+        }
+        assert!(g.hits.iter().all(|&c| c == 1), "\n{}", g.ascii());
+    }
+
+    #[test]
+    fn degenerate_triangles_emit_nothing() {
+        let mut g = Grid::new(8, 8);
+        let clip = Rect::of_size(8, 8);
+        rasterize([px(1, 1), px(5, 5), px(3, 3)], clip, &mut g); // collinear
+        rasterize([px(2, 2), px(2, 2), px(2, 2)], clip, &mut g); // a point
+        rasterize([px(1, 1), px(7, 1), px(4, 1)], clip, &mut g); // flat
+        assert!(g.hits.iter().all(|&c| c == 0));
+    }
+
+    #[test]
+    fn clipping_to_rows_and_columns_equals_cropping() {
+        let tri = [(-300, -50), (900, 200), (100, 1000)];
+        let mut whole = Grid::new(40, 40);
+        rasterize(tri, Rect::of_size(40, 40), &mut whole);
+        let mut parts = Grid::new(40, 40);
+        for band in 0..5 {
+            rasterize(
+                tri,
+                Rect::of_size(40, 40).rows(band * 8, band * 8 + 8),
+                &mut parts,
+            );
+        }
+        assert_eq!(whole.hits, parts.hits);
+        assert!(whole.hits.iter().any(|&c| c == 1));
+    }
+}
