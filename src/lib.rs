@@ -9,4 +9,5 @@ pub mod math;
 pub mod texture;
 
 pub use error::Error;
+pub mod geometry;
 pub mod raster;

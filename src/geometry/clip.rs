@@ -1,0 +1,255 @@
+//! Homogeneous clipping in clip space, then projection to the screen.
+//!
+//! A triangle is clipped (Sutherland–Hodgman) against up to seven planes: `w >= W_MIN`,
+//! near `z >= -w`, far `z <= w`, and the four guard-band planes `|x| <= gx w`,
+//! `|y| <= gy w` (see [`Viewport`]). Only planes that some vertex violates are visited; a
+//! triangle entirely outside one plane is dropped; the common all-inside case does no clipping
+//! work at all. The surviving convex polygon (at most 10 vertices) is projected and
+//! fan-triangulated; back- or front-facing and zero-area triangles are skipped.
+//!
+//! Watertightness: an edge is always cut from its inside vertex towards its outside vertex,
+//! so two triangles sharing an edge compute bit-identical intersection points.
+//!
+//! Arithmetic: plane distances and interpolation in `i64`; the parameter `t` is Q30.
+//! Attributes (position, uv, colour) are interpolated linearly in clip space, which is
+//! correct for perspective (GL does the same).
+
+use super::vertex::{ClipVertex, ScreenTriangle, ScreenVertex};
+use super::viewport::{Cull, Viewport};
+
+/// Smallest clip-space `w` that reaches the rasterizer: 2^-8 (I16F16 bits 256). Keeps
+/// `1/w` bounded for any input, including a low-level caller's w-near-zero vertices.
+pub const W_MIN_BITS: i32 = 256;
+
+const MAX_POLY: usize = 10;
+const PLANES: usize = 7;
+
+/// A clip vertex as plain integers: x, y, z, w, s, t, r, g, b.
+type Attr = [i32; 9];
+
+fn attr(v: &ClipVertex) -> Attr {
+    [
+        v.position[0].to_bits(),
+        v.position[1].to_bits(),
+        v.position[2].to_bits(),
+        v.position[3].to_bits(),
+        v.uv[0].to_bits(),
+        v.uv[1].to_bits(),
+        i32::from(v.color[0]),
+        i32::from(v.color[1]),
+        i32::from(v.color[2]),
+    ]
+}
+
+#[inline]
+fn dist(plane: usize, a: &Attr, guard: (i64, i64)) -> i64 {
+    let (x, y, z, w) = (
+        i64::from(a[0]),
+        i64::from(a[1]),
+        i64::from(a[2]),
+        i64::from(a[3]),
+    );
+    match plane {
+        0 => w - i64::from(W_MIN_BITS),
+        1 => z + w,
+        2 => w - z,
+        3 => guard.0 * w - x,
+        4 => guard.0 * w + x,
+        5 => guard.1 * w - y,
+        _ => guard.1 * w + y,
+    }
+}
+
+fn outcode(a: &Attr, guard: (i64, i64)) -> u8 {
+    let mut c = 0;
+    for p in 0..PLANES {
+        if dist(p, a, guard) < 0 {
+            c |= 1 << p;
+        }
+    }
+    c
+}
+
+/// Point on the edge from `inside` (distance `di >= 0`) to `outside` (`do_ < 0`).
+fn intersect(inside: &Attr, outside: &Attr, di: i64, do_: i64) -> Attr {
+    let mut num = di;
+    let mut den = di - do_;
+    while den >= 1 << 32 {
+        num >>= 1;
+        den >>= 1;
+    }
+    let t = (num << 30) / den.max(1); // Q30 in [0, 1]
+    let mut out = [0; 9];
+    for k in 0..9 {
+        let a = i64::from(inside[k]);
+        let d = i64::from(outside[k]) - a;
+        out[k] = (a + ((d * t + (1 << 29)) >> 30)) as i32;
+    }
+    out
+}
+
+/// Clips `tri` to the view volume and guard band, projects it with `vp`, culls per `cull`,
+/// and calls `emit` with each resulting screen triangle (0 to 8 of them).
+pub fn clip_and_project(
+    tri: &[ClipVertex; 3],
+    vp: &Viewport,
+    cull: Cull,
+    emit: &mut impl FnMut(&ScreenTriangle),
+) {
+    let guard = vp.guard;
+    let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
+    let codes = [
+        outcode(&a[0], guard),
+        outcode(&a[1], guard),
+        outcode(&a[2], guard),
+    ];
+    if codes[0] & codes[1] & codes[2] != 0 {
+        return; // wholly outside one plane
+    }
+    let mut poly = [[0i32; 9]; MAX_POLY];
+    let mut n = 3;
+    poly[..3].copy_from_slice(&a);
+    let any = codes[0] | codes[1] | codes[2];
+    if any != 0 {
+        let mut next = [[0i32; 9]; MAX_POLY];
+        for plane in 0..PLANES {
+            if any & (1 << plane) == 0 {
+                continue;
+            }
+            let mut m = 0;
+            for i in 0..n {
+                let (cur, nxt) = (&poly[i], &poly[(i + 1) % n]);
+                let (dc, dn) = (dist(plane, cur, guard), dist(plane, nxt, guard));
+                if dc >= 0 && m < MAX_POLY {
+                    next[m] = *cur;
+                    m += 1;
+                }
+                if (dc >= 0) != (dn >= 0) && m < MAX_POLY {
+                    next[m] = if dc >= 0 {
+                        intersect(cur, nxt, dc, dn)
+                    } else {
+                        intersect(nxt, cur, dn, dc)
+                    };
+                    m += 1;
+                }
+            }
+            n = m;
+            if n < 3 {
+                return;
+            }
+            poly[..n].copy_from_slice(&next[..n]);
+        }
+    }
+    let mut screen = [ScreenVertex::default(); MAX_POLY];
+    for (s, p) in screen.iter_mut().zip(&poly[..n]) {
+        let w = p[3].max(W_MIN_BITS);
+        let (x, y, z) = vp.project(p[0], p[1], p[2], w);
+        let c = |v: i32| v.clamp(0, i32::from(u16::MAX)) as u16;
+        *s = ScreenVertex {
+            x,
+            y,
+            z,
+            w,
+            uv: [p[4], p[5]],
+            color: [c(p[6]), c(p[7]), c(p[8])],
+        };
+    }
+    for i in 1..n - 1 {
+        let t = [screen[0], screen[i], screen[i + 1]];
+        let area2 = (i64::from(t[1].x) - i64::from(t[0].x))
+            * (i64::from(t[2].y) - i64::from(t[0].y))
+            - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
+        // y points down on screen, so counter-clockwise in NDC (front) has negative area.
+        let front = area2 < 0;
+        let skip = area2 == 0
+            || match cull {
+                Cull::None => false,
+                Cull::Back => !front,
+                Cull::Front => front,
+            };
+        if !skip {
+            emit(&t);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::math::Fx;
+    use std::vec::Vec;
+
+    fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
+        ClipVertex::new(
+            [
+                Fx::from_num(x),
+                Fx::from_num(y),
+                Fx::from_num(z),
+                Fx::from_num(w),
+            ],
+            [Fx::ZERO; 2],
+        )
+    }
+
+    fn run(tri: [ClipVertex; 3], cull: Cull) -> Vec<ScreenTriangle> {
+        let vp = Viewport::new(0, 0, 320, 240).unwrap();
+        let mut out = Vec::new();
+        clip_and_project(&tri, &vp, cull, &mut |t| out.push(*t));
+        out
+    }
+
+    #[test]
+    fn inside_triangle_passes_unclipped_and_culls_by_winding() {
+        let ccw = [
+            v(-0.5, -0.5, 0.0, 1.0),
+            v(0.5, -0.5, 0.0, 1.0),
+            v(0.0, 0.5, 0.0, 1.0),
+        ];
+        assert_eq!(run(ccw, Cull::Back).len(), 1);
+        assert_eq!(run(ccw, Cull::Front).len(), 0);
+        let cw = [ccw[0], ccw[2], ccw[1]];
+        assert_eq!(run(cw, Cull::Back).len(), 0);
+        assert_eq!(run(cw, Cull::None).len(), 1);
+    }
+
+    #[test]
+    fn behind_camera_is_dropped_and_near_crossing_is_clipped() {
+        let behind = [
+            v(-1.0, -1.0, -3.0, -2.0),
+            v(1.0, -1.0, -3.0, -2.0),
+            v(0.0, 1.0, -3.0, -2.0),
+        ];
+        assert!(run(behind, Cull::None).is_empty());
+        let crossing = [
+            v(-1.0, -1.0, -2.0, 0.001),
+            v(1.0, -1.0, 0.5, 1.0),
+            v(0.0, 1.0, 0.5, 1.0),
+        ];
+        let out = run(crossing, Cull::None);
+        assert!(!out.is_empty());
+        for t in &out {
+            for s in t {
+                assert!(s.w >= W_MIN_BITS && s.z >= 0 && s.z <= 65535 << 14);
+            }
+        }
+    }
+
+    #[test]
+    fn enormous_triangles_stay_inside_the_guard_band() {
+        let big = 30000.0;
+        let tri = [
+            v(-big, -big, 0.0, 1.0),
+            v(big, -big, 0.0, 1.0),
+            v(0.0, big, 0.0, 0.004),
+        ];
+        let out = run(tri, Cull::None);
+        assert!(!out.is_empty());
+        let lim = crate::raster::GUARD_BAND_PX * 16;
+        for t in &out {
+            for s in t {
+                assert!(s.x.abs() <= lim && s.y.abs() <= lim, "{s:?}");
+            }
+        }
+    }
+}

@@ -1,0 +1,20 @@
+//! Geometry stage: clip-space triangles in, screen-space triangles out.
+//!
+//! * [`vertex`]: the clip-space vertex (the low-level entry point's input) and the screen
+//!   vertex (the rasterizer's input).
+//! * [`clip`]: homogeneous clipping against the near and far planes, a minimum `w`, and the
+//!   guard band, so nothing behind the camera or absurdly far off screen reaches the
+//!   raster math.
+//! * [`viewport`]: the viewport, perspective divide and mapping to sub-pixel coordinates,
+//!   back-face culling.
+//!
+//! Clip space follows OpenGL: a point is visible when `-w <= x, y, z <= w`; NDC z in
+//! `[-1, 1]` maps to depth `[0, 1]`; NDC y up maps to screen y down.
+
+pub mod clip;
+pub mod vertex;
+pub mod viewport;
+
+pub use clip::clip_and_project;
+pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, COLOR_ONE};
+pub use viewport::{Cull, Viewport};

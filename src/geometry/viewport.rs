@@ -1,0 +1,150 @@
+//! The viewport: where NDC lands on the screen, and the guard band that bounds it.
+//!
+//! Mapping (OpenGL, with y flipped so row 0 is the top of the framebuffer):
+//! `x_s = x0 + (x_ndc + 1) * width / 2`, `y_s = y0 + (1 - y_ndc) * height / 2`,
+//! `depth = (z_ndc + 1) / 2`, all rounded to the nearest 1/16 pixel
+//! ([`crate::raster::SUBPIXEL_BITS`] = 4). The largest viewport side is
+//! [`crate::raster::MAX_VIEWPORT_PX`] (2048); the clipper keeps every vertex within
+//! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
+//! its per-row stepping in `i32`.
+
+use crate::raster::{Rect, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_ONE};
+use crate::Error;
+
+/// Which faces to skip. Front faces are counter-clockwise in NDC (OpenGL's default).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Cull {
+    /// Draw both faces.
+    None,
+    /// Skip faces seen from behind (the default).
+    #[default]
+    Back,
+    /// Skip faces seen from the front.
+    Front,
+}
+
+/// A validated viewport rectangle and its guard band.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Viewport {
+    rect: Rect,
+    /// Guard-band half-extent in NDC units per axis (integer, >= 1): the clipper keeps
+    /// `|x| <= gx * w` and `|y| <= gy * w`.
+    pub(crate) guard: (i64, i64),
+}
+
+impl Viewport {
+    /// A viewport at `(x0, y0)` of `width` x `height` pixels.
+    ///
+    /// Errors with [`Error::BadViewport`] when a side is zero or the rectangle does not fit in
+    /// `0..2048` on either axis.
+    ///
+    /// ```
+    /// use fixel::geometry::Viewport;
+    /// let vp = Viewport::new(0, 0, 320, 240).unwrap();
+    /// assert_eq!(vp.width(), 320);
+    /// assert!(Viewport::new(0, 0, 0, 240).is_err());
+    /// ```
+    pub fn new(x0: u32, y0: u32, width: u32, height: u32) -> Result<Self, Error> {
+        let max = MAX_VIEWPORT_PX;
+        if width == 0 || height == 0 || x0 + width > max || y0 + height > max {
+            return Err(Error::BadViewport { width, height });
+        }
+        let rect = Rect {
+            x0: x0 as i32,
+            y0: y0 as i32,
+            x1: (x0 + width) as i32,
+            y1: (y0 + height) as i32,
+        };
+        // Largest integer g with x0 + (g + 1) * width / 2 <= GUARD_BAND_PX, and the same on
+        // the negative side (which is looser).
+        let g = |start: u32, size: u32| {
+            ((i64::from(GUARD_BAND_PX) - i64::from(start)) * 2 / i64::from(size) - 1).max(1)
+        };
+        Ok(Viewport {
+            rect,
+            guard: (g(x0, width), g(y0, height)),
+        })
+    }
+
+    /// The viewport's pixel rectangle.
+    pub fn rect(&self) -> Rect {
+        self.rect
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        (self.rect.x1 - self.rect.x0) as u32
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        (self.rect.y1 - self.rect.y0) as u32
+    }
+
+    /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)` and a
+    /// depth in `0..=65535 << 14`.
+    pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, i32) {
+        let w = i64::from(w.max(1));
+        let one = i64::from(SUBPIXEL_ONE);
+        let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
+        let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
+        let cx = i64::from(self.rect.x0) * one + hw;
+        let cy = i64::from(self.rect.y0) * one + hh;
+        let lim = i64::from(GUARD_BAND_PX) * one;
+        let sx = (cx + div_round(i64::from(x) * hw, w)).clamp(-lim, lim);
+        let sy = (cy - div_round(i64::from(y) * hh, w)).clamp(-lim, lim);
+        // depth = (z/w + 1)/2 * 65535, 14 fraction bits: 65535 * 2^13 * (z/w + 1).
+        let k = 65535i64 << 13;
+        let d = (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14);
+        (sx as i32, sy as i32, d as i32)
+    }
+}
+
+/// `n / d` rounded to nearest, ties away from zero; `d > 0`.
+#[inline]
+pub(crate) fn div_round(n: i64, d: i64) -> i64 {
+    let half = d / 2;
+    if n >= 0 {
+        (n + half) / d
+    } else {
+        -((half - n) / d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn maps_ndc_corners_to_pixel_edges() {
+        let vp = Viewport::new(0, 0, 320, 240).unwrap();
+        let one = 1 << 16;
+        assert_eq!(vp.project(-one, one, -one, one), (0, 0, 0));
+        assert_eq!(
+            vp.project(one, -one, one, one),
+            (320 * 16, 240 * 16, 65535 << 14)
+        );
+        assert_eq!(
+            vp.project(0, 0, 0, 2 * one),
+            (160 * 16, 120 * 16, 65535 << 13)
+        );
+    }
+
+    #[test]
+    fn rejects_bad_viewports() {
+        assert!(Viewport::new(0, 0, 0, 1).is_err());
+        assert!(Viewport::new(0, 0, 2049, 1).is_err());
+        assert!(Viewport::new(2000, 0, 100, 1).is_err());
+        assert!(Viewport::new(0, 0, 2048, 2048).is_ok());
+    }
+
+    #[test]
+    fn guard_band_stays_inside_raster_limits() {
+        for (w, h) in [(1, 1), (320, 240), (2048, 2048), (2047, 3)] {
+            let vp = Viewport::new(0, 0, w, h).unwrap();
+            let (gx, gy) = vp.guard;
+            assert!((gx + 1) * i64::from(w) / 2 <= i64::from(GUARD_BAND_PX) + 1);
+            assert!((gy + 1) * i64::from(h) / 2 <= i64::from(GUARD_BAND_PX) + 1);
+        }
+    }
+}
