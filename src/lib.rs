@@ -4,6 +4,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs, missing_debug_implementations)]
 
+pub mod color;
 pub mod error;
 pub mod math;
 pub mod texture;

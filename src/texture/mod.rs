@@ -1,1 +1,18 @@
-//! Textures (being written).
+//! Textures: a borrowed power-of-two RGB565 [`Texture`], wrap modes and filters.
+//!
+//! Units and conventions (OpenGL ES 3.0 §3.8.10/§3.8.11): texels are row-major with row 0
+//! first (`v = 0` at row 0), texel centres at `i + 0.5`, sampling coordinates are raw I16F16
+//! texel units (`i32`, 65536 = one texel). Sides are powers of two, 1..=4096. Wrap modes and
+//! filters are zero-sized markers ([`Repeat`], [`MirroredRepeat`], [`ClampToEdge`],
+//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`]) so the per-pixel path is monomorphised;
+//! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
+//! raw RGB565 `u16`. See each submodule for the exact formulas.
+
+mod sample;
+#[allow(clippy::module_inception)]
+mod texture;
+mod wrap;
+
+pub use sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
+pub use texture::{Texture, MAX_LOG2_SIZE};
+pub use wrap::{ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Repeat, Wrap, WrapMode};
