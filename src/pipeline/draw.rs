@@ -1,0 +1,264 @@
+//! A draw: a validated mode plus its resources, and the two ways triangles enter it.
+//!
+//! * [`Draw::clip_triangles`]: the low-level entry point. Triangles in OpenGL clip space
+//!   with per-vertex uv and colour: the seam where any other renderer, a GL implementation
+//!   included, can be fed exactly the same input.
+//! * [`Draw::screen_triangle`]: one already clipped and projected triangle (what the scene
+//!   level and the band renderer hand over).
+//!
+//! The per-pixel code is chosen when the draw is built: [`Draw::new`] for stages chosen as
+//! types (a firmware links exactly one span loop), [`Draw::dynamic`] for stages chosen at
+//! run time from a [`DrawMode`] (links every combination; for hosts and tests).
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+
+use super::setup::setup;
+use super::span::{span, SpanCtx};
+use super::stages::*;
+use crate::color::TargetColor;
+use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewport};
+use crate::raster::{rasterize, Rect, SpanSink};
+use crate::target::RenderTarget;
+use crate::texture::{
+    Bilinear, ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Nearest, Repeat, Texture,
+    Wrap, WrapMode,
+};
+use crate::Error;
+
+/// Builds a wrap-mode value from the draw's run-time wrap (markers ignore it).
+pub trait FromWrap: WrapMode {
+    /// The wrap-mode value for `w`.
+    fn from_wrap(w: Wrap) -> Self;
+}
+macro_rules! from_wrap_marker {
+    ($($t:ty),*) => {$(
+        impl FromWrap for $t {
+            #[inline(always)]
+            fn from_wrap(_: Wrap) -> Self {
+                <$t>::default()
+            }
+        }
+    )*};
+}
+from_wrap_marker!(Repeat, MirroredRepeat, ClampToEdge, ClampToBorder);
+impl FromWrap for DynWrap {
+    #[inline(always)]
+    fn from_wrap(w: Wrap) -> Self {
+        DynWrap(w)
+    }
+}
+
+/// A 1x1 black texture for untextured draws (so the span loop never branches on "is there
+/// a texture").
+static NO_TEXELS: [Rgb565; 1] = [Rgb565::new(0, 0, 0)];
+
+type RasterFn<'a, C> = fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>);
+
+/// A ready-to-use draw: mode, texture, viewport and the span loop chosen for them.
+pub struct Draw<'a, C: TargetColor> {
+    mode: DrawMode,
+    texture: Texture<'a>,
+    viewport: Viewport,
+    flat: u16,
+    raster: RasterFn<'a, C>,
+}
+
+impl<C: TargetColor> core::fmt::Debug for Draw<'_, C> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Draw").field("mode", &self.mode).field("viewport", &self.viewport).finish()
+    }
+}
+
+fn check(mode: &DrawMode, texture: &Option<Texture<'_>>) -> Result<(), Error> {
+    if mode.shading.textured() && texture.is_none() {
+        return Err(Error::BadMode("textured shading needs a texture"));
+    }
+    if let Projection::Subdivided { log2_n } = mode.projection {
+        if !(1..=6).contains(&log2_n) {
+            return Err(Error::BadMode("subdivision log2_n must be in 1..=6 (N = 2..64)"));
+        }
+    }
+    Ok(())
+}
+
+impl<'a, C: TargetColor + 'a> Draw<'a, C> {
+    /// A draw whose stages are the types of `M` (see [`Pipeline`]); only that span loop is
+    /// compiled in. `texture` is required when `M`'s shading samples one.
+    ///
+    /// `projection` supplies the subdivision length when `M::P` is [`Subdivided`]; wrap modes
+    /// and the rest come from the types.
+    pub fn new<M>(texture: Option<Texture<'a>>, viewport: Viewport, cull: Cull) -> Result<Self, Error>
+    where
+        M: Stages + 'a,
+        M::WU: FromWrap,
+        M::WV: FromWrap,
+    {
+        let projection = match <M::P as ProjectionStage>::KIND {
+            ProjKind::Affine => Projection::Affine,
+            ProjKind::Exact => Projection::Exact,
+            ProjKind::Subdivided => Projection::Subdivided { log2_n: 4 },
+        };
+        let mode = DrawMode {
+            projection,
+            filter: <M::F as crate::texture::Sampler>::FILTER,
+            wrap: [<M::WU as WrapMode>::MODE, <M::WV as WrapMode>::MODE],
+            shading: <M::S as ShadingStage>::KIND,
+            depth: if <M::D as DepthStage>::TEST { DepthTest::Less } else { DepthTest::Off },
+            cull,
+        };
+        check(&mode, &texture)?;
+        Ok(Draw {
+            mode,
+            texture: texture.unwrap_or(Texture::from_static(&NO_TEXELS, 1, 1)),
+            viewport,
+            flat: 0xFFFF,
+            raster: raster_triangle::<M, C>,
+        })
+    }
+
+    /// A draw whose stages are chosen at run time. Links every combination of span loop
+    /// (wrap modes are matched per texel fetch); meant for host tools, tests and demos.
+    pub fn dynamic(mode: DrawMode, texture: Option<Texture<'a>>, viewport: Viewport) -> Result<Self, Error> {
+        check(&mode, &texture)?;
+        Ok(Draw {
+            mode,
+            texture: texture.unwrap_or(Texture::from_static(&NO_TEXELS, 1, 1)),
+            viewport,
+            flat: 0xFFFF,
+            raster: select::<C>(&mode),
+        })
+    }
+
+    /// Sets the constant colour of [`Shading::Flat`] (RGB565; default white).
+    pub fn with_flat_color(mut self, c: Rgb565) -> Self {
+        self.flat = embedded_graphics_core::pixelcolor::raw::RawU16::from(c).into_inner();
+        self
+    }
+
+    /// With a different subdivision length for [`Projection::Subdivided`] (`log2_n` in
+    /// `1..=6`).
+    pub fn with_subdivision(mut self, log2_n: u8) -> Result<Self, Error> {
+        if !(1..=6).contains(&log2_n) {
+            return Err(Error::BadMode("subdivision log2_n must be in 1..=6 (N = 2..64)"));
+        }
+        if let Projection::Subdivided { .. } = self.mode.projection {
+            self.mode.projection = Projection::Subdivided { log2_n };
+        }
+        Ok(self)
+    }
+
+    /// The draw's mode.
+    pub fn mode(&self) -> &DrawMode {
+        &self.mode
+    }
+
+    /// The viewport triangles are mapped to.
+    pub fn viewport(&self) -> &Viewport {
+        &self.viewport
+    }
+
+    /// Draws triangles given in clip space. Triangles behind the camera, outside the view
+    /// volume, culled or of zero area are skipped; the rest are clipped.
+    pub fn clip_triangles<T: RenderTarget<Color = C>>(&self, tris: &[[ClipVertex; 3]], target: &mut T) {
+        for tri in tris {
+            clip_and_project(tri, &self.viewport, self.mode.cull, &mut |s| (self.raster)(self, s, target));
+        }
+    }
+
+    /// Clips, projects and culls one clip-space triangle, handing each resulting screen
+    /// triangle to `emit` (for binning).
+    pub fn project(&self, tri: &[ClipVertex; 3], emit: &mut impl FnMut(&ScreenTriangle)) {
+        clip_and_project(tri, &self.viewport, self.mode.cull, emit);
+    }
+
+    /// Draws one screen triangle (already clipped, projected and culled).
+    pub fn screen_triangle(&self, tri: &ScreenTriangle, target: &mut dyn RenderTarget<Color = C>) {
+        (self.raster)(self, tri, target);
+    }
+}
+
+struct Writer<'c, 't, M: Stages, C> {
+    ctx: SpanCtx<'c, M>,
+    target: &'t mut dyn RenderTarget<Color = C>,
+}
+
+impl<M: Stages, C: TargetColor> SpanSink for Writer<'_, '_, M, C> {
+    #[inline]
+    fn span(&mut self, y: i32, x0: i32, x1: i32) {
+        if let Some((row, depth)) = self.target.row_mut(y) {
+            span::<M, C>(&self.ctx, y, x0, x1, row, depth);
+        }
+    }
+}
+
+fn raster_triangle<'a, M, C>(draw: &Draw<'a, C>, tri: &ScreenTriangle, target: &mut dyn RenderTarget<Color = C>)
+where
+    M: Stages,
+    M::WU: FromWrap,
+    M::WV: FromWrap,
+    C: TargetColor,
+{
+    let vp = draw.viewport.rect();
+    let (r0, r1) = target.row_range();
+    let clip = Rect { x0: vp.x0.max(0), x1: vp.x1.min(target.width() as i32), ..vp }.rows(r0, r1);
+    if clip.is_empty() {
+        return;
+    }
+    let mode = &draw.mode;
+    let log2 = (draw.texture.log2_width(), draw.texture.log2_height());
+    let Some(setup) = setup(tri, vp, M::P::KIND, M::S::KIND, M::D::TEST, log2, mode.wrap) else {
+        return;
+    };
+    let periodic = mode.wrap.map(|w| matches!(w, Wrap::Repeat | Wrap::MirroredRepeat));
+    let log2_n = match mode.projection {
+        Projection::Subdivided { log2_n } => u32::from(log2_n),
+        _ => 4,
+    };
+    let ctx = SpanCtx::<M> {
+        setup,
+        tex: draw.texture,
+        wu: M::WU::from_wrap(mode.wrap[0]),
+        wv: M::WV::from_wrap(mode.wrap[1]),
+        log2_n,
+        flat: draw.flat,
+        periodic,
+    };
+    let mut w = Writer { ctx, target };
+    rasterize([(tri[0].x, tri[0].y), (tri[1].x, tri[1].y), (tri[2].x, tri[2].y)], clip, &mut w);
+}
+
+/// The run-time dispatch table: one instance per (projection, filter, shading, depth).
+fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
+    macro_rules! by_depth {
+        ($p:ty, $f:ty, $s:ty) => {
+            match mode.depth {
+                DepthTest::Off => raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, NoDepth>, C>,
+                DepthTest::Less => raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, DepthLess>, C>,
+            }
+        };
+    }
+    macro_rules! by_shading {
+        ($p:ty, $f:ty) => {
+            match mode.shading {
+                Shading::Replace => by_depth!($p, $f, Replace),
+                Shading::Modulate => by_depth!($p, $f, Modulate),
+                Shading::ModulateIntensity => by_depth!($p, $f, ModulateIntensity),
+                Shading::Gouraud => by_depth!($p, Nearest, Gouraud),
+                Shading::Flat => by_depth!($p, Nearest, Flat),
+            }
+        };
+    }
+    macro_rules! by_filter {
+        ($p:ty) => {
+            match mode.filter {
+                crate::texture::Filter::Nearest => by_shading!($p, Nearest),
+                crate::texture::Filter::Bilinear => by_shading!($p, Bilinear),
+            }
+        };
+    }
+    match mode.projection {
+        Projection::Affine => by_filter!(Affine),
+        Projection::Subdivided { .. } => by_filter!(Subdivided),
+        Projection::Exact => by_filter!(Exact),
+    }
+}

@@ -1,0 +1,217 @@
+//! The stages a draw can use, as small runtime enums and as zero-sized marker types.
+//!
+//! A firmware picks its stages as *types* ([`Pipeline`]): the per-pixel loop is then
+//! monomorphised for exactly that combination and an unused stage costs no cycles and no
+//! flash. Host tools and tests can pick them at run time with [`DrawMode`], which dispatches
+//! once per draw to one of the pre-instantiated combinations (and so links them all).
+
+use core::fmt::Debug;
+use core::marker::PhantomData;
+
+use crate::geometry::Cull;
+use crate::texture::{Filter, Sampler, Wrap, WrapMode};
+
+/// How texture coordinates (and colours) are interpolated across a triangle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Projection {
+    /// Screen-linear: cheapest, wrong under perspective (textures swim and bend).
+    Affine,
+    /// Exact every `2^log2_n` pixels along a span, affine in between (`log2_n` in `1..=6`).
+    Subdivided {
+        /// Log2 of the subdivision length N.
+        log2_n: u8,
+    },
+    /// Perspective-correct at every pixel (hyperbolic interpolation of `u/w, v/w, 1/w`).
+    #[default]
+    Exact,
+}
+
+/// What colour a covered pixel gets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Shading {
+    /// The texel as it is (GL_REPLACE).
+    Replace,
+    /// Texel times the interpolated vertex colour, per channel (GL_MODULATE).
+    Modulate,
+    /// Texel times one interpolated intensity: the vertex colour's red channel (the scene's
+    /// lighting sets all three equal). One interpolant instead of three.
+    #[default]
+    ModulateIntensity,
+    /// Untextured: the interpolated vertex colour.
+    Gouraud,
+    /// Untextured: one constant colour for the whole draw.
+    Flat,
+}
+
+impl Shading {
+    /// True when this shading reads a texture.
+    pub const fn textured(self) -> bool {
+        matches!(self, Shading::Replace | Shading::Modulate | Shading::ModulateIntensity)
+    }
+}
+
+/// Depth testing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DepthTest {
+    /// No test and no depth writes: later triangles overwrite earlier ones.
+    #[default]
+    Off,
+    /// GL_LESS against a 16-bit depth buffer, writing depth of pixels that pass.
+    Less,
+}
+
+/// Every run-time choice of one draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DrawMode {
+    /// Interpolation of texture coordinates and colours.
+    pub projection: Projection,
+    /// Texture filter (magnification and minification alike).
+    pub filter: Filter,
+    /// Wrap modes for s and t.
+    pub wrap: [Wrap; 2],
+    /// Pixel colour.
+    pub shading: Shading,
+    /// Depth test.
+    pub depth: DepthTest,
+    /// Face culling (costs nothing per pixel).
+    pub cull: Cull,
+}
+
+/// Marker for the projection stage.
+pub trait ProjectionStage: Copy + Default + Debug {
+    /// Which interpolation this marker selects (subdivision length comes from the draw).
+    const KIND: ProjKind;
+}
+/// Projection kind without parameters (for markers).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProjKind {
+    /// See [`Projection::Affine`].
+    Affine,
+    /// See [`Projection::Subdivided`].
+    Subdivided,
+    /// See [`Projection::Exact`].
+    Exact,
+}
+/// Marker for the shading stage.
+pub trait ShadingStage: Copy + Default + Debug {
+    /// Which shading this marker selects.
+    const KIND: Shading;
+}
+/// Marker for the depth stage.
+pub trait DepthStage: Copy + Default + Debug {
+    /// Whether the depth test runs.
+    const TEST: bool;
+}
+
+/// Affine projection marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Affine;
+impl ProjectionStage for Affine {
+    const KIND: ProjKind = ProjKind::Affine;
+}
+/// Subdivided projection marker (N comes from the draw, default 16).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Subdivided;
+impl ProjectionStage for Subdivided {
+    const KIND: ProjKind = ProjKind::Subdivided;
+}
+/// Exact perspective marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Exact;
+impl ProjectionStage for Exact {
+    const KIND: ProjKind = ProjKind::Exact;
+}
+
+/// Replace-shading marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Replace;
+impl ShadingStage for Replace {
+    const KIND: Shading = Shading::Replace;
+}
+/// Modulate-by-colour marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Modulate;
+impl ShadingStage for Modulate {
+    const KIND: Shading = Shading::Modulate;
+}
+/// Modulate-by-intensity marker (lit textures).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ModulateIntensity;
+impl ShadingStage for ModulateIntensity {
+    const KIND: Shading = Shading::ModulateIntensity;
+}
+/// Untextured Gouraud marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Gouraud;
+impl ShadingStage for Gouraud {
+    const KIND: Shading = Shading::Gouraud;
+}
+/// Untextured flat marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Flat;
+impl ShadingStage for Flat {
+    const KIND: Shading = Shading::Flat;
+}
+
+/// No depth test marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NoDepth;
+impl DepthStage for NoDepth {
+    const TEST: bool = false;
+}
+/// GL_LESS depth test marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DepthLess;
+impl DepthStage for DepthLess {
+    const TEST: bool = true;
+}
+
+/// The stages of a draw as types: projection `P`, filter `F`, wraps `WU`/`WV`, shading `S`,
+/// depth `D`.
+///
+/// ```
+/// use fixel::pipeline::*;
+/// use fixel::texture::{Bilinear, Repeat};
+/// // The benchmark cube: lit, bilinear, perspective-correct, depth-tested.
+/// type CubePipeline = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+/// ```
+pub struct Pipeline<P, F, WU, WV, S, D>(PhantomData<(P, F, WU, WV, S, D)>);
+
+impl<P, F, WU, WV, S, D> Debug for Pipeline<P, F, WU, WV, S, D> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("Pipeline")
+    }
+}
+
+/// The stage types of a [`Pipeline`].
+pub trait Stages {
+    /// Projection stage.
+    type P: ProjectionStage;
+    /// Texture filter.
+    type F: Sampler;
+    /// Wrap mode for s.
+    type WU: WrapMode;
+    /// Wrap mode for t.
+    type WV: WrapMode;
+    /// Shading.
+    type S: ShadingStage;
+    /// Depth test.
+    type D: DepthStage;
+}
+
+impl<P, F, WU, WV, S, D> Stages for Pipeline<P, F, WU, WV, S, D>
+where
+    P: ProjectionStage,
+    F: Sampler,
+    WU: WrapMode,
+    WV: WrapMode,
+    S: ShadingStage,
+    D: DepthStage,
+{
+    type P = P;
+    type F = F;
+    type WU = WU;
+    type WV = WV;
+    type S = S;
+    type D = D;
+}
