@@ -5,3 +5,4 @@
 //! ([`golden`]).
 
 pub mod reference;
+pub mod scenes;
