@@ -4,5 +4,6 @@
 //! ([`metrics`]), RGB565 PNG I/O ([`png_io`]) and golden-image checks
 //! ([`golden`]).
 
+pub mod png_io;
 pub mod reference;
 pub mod scenes;
