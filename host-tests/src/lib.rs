@@ -1,1 +1,11 @@
-//! Host-side float reference, metrics and test helpers.
+//! Host-side float reference, metrics and test helpers for fixel: an
+//! independent f64 reference renderer ([`reference`]), the benchmark scenes
+//! built in f64 ([`scenes`]), error metrics against the reference
+//! ([`metrics`]), RGB565 PNG I/O ([`png_io`]) and golden-image checks
+//! ([`golden`]).
+
+pub mod golden;
+pub mod metrics;
+pub mod png_io;
+pub mod reference;
+pub mod scenes;
