@@ -25,7 +25,7 @@ use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888};
 ///   (`r8 = r5 << 3 | r5 >> 2`, `g8 = g6 << 2 | g6 >> 4`, `b8 = b5 << 3 | b5 >> 2`).
 /// - [`Gray8`]: luma `(r8 * 77 + g8 * 150 + b8 * 29 + 128) >> 8` of the expanded 8-bit
 ///   channels (BT.601 weights in Q8, summing to 256; white maps to 255, black to 0).
-pub trait TargetColor: Copy + Default + PartialEq + core::fmt::Debug {
+pub trait TargetColor: Copy + Default + PartialEq + core::fmt::Debug + 'static {
     /// Converts a raw RGB565 value (`rrrrr gggggg bbbbb`) to this colour type.
     fn from_rgb565(raw: u16) -> Self;
 }

@@ -50,6 +50,8 @@ pub enum Error {
     },
     /// A camera or projection parameter is out of its documented range.
     BadProjection(&'static str),
+    /// A draw mode is inconsistent (for example textured shading without a texture).
+    BadMode(&'static str),
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -86,6 +88,7 @@ impl fmt::Display for Error {
                 write!(f, "viewport {width}x{height} is empty or too large")
             }
             Error::BadProjection(what) => write!(f, "bad projection: {what}"),
+            Error::BadMode(what) => write!(f, "bad draw mode: {what}"),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")
             }

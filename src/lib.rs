@@ -6,9 +6,11 @@
 
 pub mod color;
 pub mod error;
+pub mod geometry;
 pub mod math;
+pub mod pipeline;
+pub mod raster;
+pub mod target;
 pub mod texture;
 
 pub use error::Error;
-pub mod geometry;
-pub mod raster;

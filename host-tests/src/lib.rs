@@ -4,6 +4,7 @@
 //! ([`metrics`]), RGB565 PNG I/O ([`png_io`]) and golden-image checks
 //! ([`golden`]).
 
+pub mod adapter;
 pub mod golden;
 pub mod metrics;
 pub mod png_io;

@@ -20,8 +20,8 @@ use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewpo
 use crate::raster::{rasterize, Rect, SpanSink};
 use crate::target::RenderTarget;
 use crate::texture::{
-    Bilinear, ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Nearest, Repeat, Texture,
-    Wrap, WrapMode,
+    Bilinear, ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Nearest, Repeat, Texture, Wrap,
+    WrapMode,
 };
 use crate::Error;
 
@@ -52,7 +52,7 @@ impl FromWrap for DynWrap {
 /// a texture").
 static NO_TEXELS: [Rgb565; 1] = [Rgb565::new(0, 0, 0)];
 
-type RasterFn<'a, C> = fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>);
+type RasterFn<'a, C> = fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>) -> u32;
 
 /// A ready-to-use draw: mode, texture, viewport and the span loop chosen for them.
 pub struct Draw<'a, C: TargetColor> {
@@ -65,7 +65,10 @@ pub struct Draw<'a, C: TargetColor> {
 
 impl<C: TargetColor> core::fmt::Debug for Draw<'_, C> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Draw").field("mode", &self.mode).field("viewport", &self.viewport).finish()
+        f.debug_struct("Draw")
+            .field("mode", &self.mode)
+            .field("viewport", &self.viewport)
+            .finish()
     }
 }
 
@@ -75,7 +78,9 @@ fn check(mode: &DrawMode, texture: &Option<Texture<'_>>) -> Result<(), Error> {
     }
     if let Projection::Subdivided { log2_n } = mode.projection {
         if !(1..=6).contains(&log2_n) {
-            return Err(Error::BadMode("subdivision log2_n must be in 1..=6 (N = 2..64)"));
+            return Err(Error::BadMode(
+                "subdivision log2_n must be in 1..=6 (N = 2..64)",
+            ));
         }
     }
     Ok(())
@@ -87,7 +92,11 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     ///
     /// `projection` supplies the subdivision length when `M::P` is [`Subdivided`]; wrap modes
     /// and the rest come from the types.
-    pub fn new<M>(texture: Option<Texture<'a>>, viewport: Viewport, cull: Cull) -> Result<Self, Error>
+    pub fn new<M>(
+        texture: Option<Texture<'a>>,
+        viewport: Viewport,
+        cull: Cull,
+    ) -> Result<Self, Error>
     where
         M: Stages + 'a,
         M::WU: FromWrap,
@@ -103,7 +112,11 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             filter: <M::F as crate::texture::Sampler>::FILTER,
             wrap: [<M::WU as WrapMode>::MODE, <M::WV as WrapMode>::MODE],
             shading: <M::S as ShadingStage>::KIND,
-            depth: if <M::D as DepthStage>::TEST { DepthTest::Less } else { DepthTest::Off },
+            depth: if <M::D as DepthStage>::TEST {
+                DepthTest::Less
+            } else {
+                DepthTest::Off
+            },
             cull,
         };
         check(&mode, &texture)?;
@@ -118,7 +131,11 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
 
     /// A draw whose stages are chosen at run time. Links every combination of span loop
     /// (wrap modes are matched per texel fetch); meant for host tools, tests and demos.
-    pub fn dynamic(mode: DrawMode, texture: Option<Texture<'a>>, viewport: Viewport) -> Result<Self, Error> {
+    pub fn dynamic(
+        mode: DrawMode,
+        texture: Option<Texture<'a>>,
+        viewport: Viewport,
+    ) -> Result<Self, Error> {
         check(&mode, &texture)?;
         Ok(Draw {
             mode,
@@ -131,7 +148,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
 
     /// Sets the constant colour of [`Shading::Flat`] (RGB565; default white).
     pub fn with_flat_color(mut self, c: Rgb565) -> Self {
-        self.flat = embedded_graphics_core::pixelcolor::raw::RawU16::from(c).into_inner();
+        self.flat = embedded_graphics_core::pixelcolor::IntoStorage::into_storage(c);
         self
     }
 
@@ -139,7 +156,9 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     /// `1..=6`).
     pub fn with_subdivision(mut self, log2_n: u8) -> Result<Self, Error> {
         if !(1..=6).contains(&log2_n) {
-            return Err(Error::BadMode("subdivision log2_n must be in 1..=6 (N = 2..64)"));
+            return Err(Error::BadMode(
+                "subdivision log2_n must be in 1..=6 (N = 2..64)",
+            ));
         }
         if let Projection::Subdivided { .. } = self.mode.projection {
             self.mode.projection = Projection::Subdivided { log2_n };
@@ -157,12 +176,21 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         &self.viewport
     }
 
-    /// Draws triangles given in clip space. Triangles behind the camera, outside the view
-    /// volume, culled or of zero area are skipped; the rest are clipped.
-    pub fn clip_triangles<T: RenderTarget<Color = C>>(&self, tris: &[[ClipVertex; 3]], target: &mut T) {
+    /// Draws triangles given in clip space and returns the number of pixels written (with a
+    /// depth test: that passed it). Triangles behind the camera, outside the view volume,
+    /// culled or of zero area are skipped; the rest are clipped.
+    pub fn clip_triangles<T: RenderTarget<Color = C>>(
+        &self,
+        tris: &[[ClipVertex; 3]],
+        target: &mut T,
+    ) -> u32 {
+        let mut pixels = 0u32;
         for tri in tris {
-            clip_and_project(tri, &self.viewport, self.mode.cull, &mut |s| (self.raster)(self, s, target));
+            clip_and_project(tri, &self.viewport, self.mode.cull, &mut |s| {
+                pixels = pixels.wrapping_add((self.raster)(self, s, target));
+            });
         }
+        pixels
     }
 
     /// Clips, projects and culls one clip-space triangle, handing each resulting screen
@@ -171,27 +199,38 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         clip_and_project(tri, &self.viewport, self.mode.cull, emit);
     }
 
-    /// Draws one screen triangle (already clipped, projected and culled).
-    pub fn screen_triangle(&self, tri: &ScreenTriangle, target: &mut dyn RenderTarget<Color = C>) {
-        (self.raster)(self, tri, target);
+    /// Draws one screen triangle (already clipped, projected and culled); returns the pixels
+    /// written.
+    pub fn screen_triangle(
+        &self,
+        tri: &ScreenTriangle,
+        target: &mut dyn RenderTarget<Color = C>,
+    ) -> u32 {
+        (self.raster)(self, tri, target)
     }
 }
 
 struct Writer<'c, 't, M: Stages, C> {
     ctx: SpanCtx<'c, M>,
     target: &'t mut dyn RenderTarget<Color = C>,
+    pixels: u32,
 }
 
 impl<M: Stages, C: TargetColor> SpanSink for Writer<'_, '_, M, C> {
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
         if let Some((row, depth)) = self.target.row_mut(y) {
-            span::<M, C>(&self.ctx, y, x0, x1, row, depth);
+            let n = span::<M, C>(&self.ctx, y, x0, x1, row, depth);
+            self.pixels = self.pixels.wrapping_add(n);
         }
     }
 }
 
-fn raster_triangle<'a, M, C>(draw: &Draw<'a, C>, tri: &ScreenTriangle, target: &mut dyn RenderTarget<Color = C>)
+fn raster_triangle<'a, M, C>(
+    draw: &Draw<'a, C>,
+    tri: &ScreenTriangle,
+    target: &mut dyn RenderTarget<Color = C>,
+) -> u32
 where
     M: Stages,
     M::WU: FromWrap,
@@ -200,16 +239,23 @@ where
 {
     let vp = draw.viewport.rect();
     let (r0, r1) = target.row_range();
-    let clip = Rect { x0: vp.x0.max(0), x1: vp.x1.min(target.width() as i32), ..vp }.rows(r0, r1);
+    let clip = Rect {
+        x0: vp.x0.max(0),
+        x1: vp.x1.min(target.width() as i32),
+        ..vp
+    }
+    .rows(r0, r1);
     if clip.is_empty() {
-        return;
+        return 0;
     }
     let mode = &draw.mode;
     let log2 = (draw.texture.log2_width(), draw.texture.log2_height());
     let Some(setup) = setup(tri, vp, M::P::KIND, M::S::KIND, M::D::TEST, log2, mode.wrap) else {
-        return;
+        return 0;
     };
-    let periodic = mode.wrap.map(|w| matches!(w, Wrap::Repeat | Wrap::MirroredRepeat));
+    let periodic = mode
+        .wrap
+        .map(|w| matches!(w, Wrap::Repeat | Wrap::MirroredRepeat));
     let log2_n = match mode.projection {
         Projection::Subdivided { log2_n } => u32::from(log2_n),
         _ => 4,
@@ -223,8 +269,21 @@ where
         flat: draw.flat,
         periodic,
     };
-    let mut w = Writer { ctx, target };
-    rasterize([(tri[0].x, tri[0].y), (tri[1].x, tri[1].y), (tri[2].x, tri[2].y)], clip, &mut w);
+    let mut w = Writer {
+        ctx,
+        target,
+        pixels: 0,
+    };
+    rasterize(
+        [
+            (tri[0].x, tri[0].y),
+            (tri[1].x, tri[1].y),
+            (tri[2].x, tri[2].y),
+        ],
+        clip,
+        &mut w,
+    );
+    w.pixels
 }
 
 /// The run-time dispatch table: one instance per (projection, filter, shading, depth).
@@ -232,8 +291,14 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
     macro_rules! by_depth {
         ($p:ty, $f:ty, $s:ty) => {
             match mode.depth {
-                DepthTest::Off => raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, NoDepth>, C>,
-                DepthTest::Less => raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, DepthLess>, C>,
+                DepthTest::Off => {
+                    raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, NoDepth>, C>
+                        as RasterFn<'a, C>
+                }
+                DepthTest::Less => {
+                    raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, DepthLess>, C>
+                        as RasterFn<'a, C>
+                }
             }
         };
     }

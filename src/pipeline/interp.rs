@@ -52,9 +52,17 @@ impl Interp for AffineInterp {
             f: Frag {
                 u: at(&s.u, s, x, y),
                 v: at(&s.v, s, x, y),
-                c: [at(&s.c[0], s, x, y), at(&s.c[1], s, x, y), at(&s.c[2], s, x, y)],
+                c: [
+                    at(&s.c[0], s, x, y),
+                    at(&s.c[1], s, x, y),
+                    at(&s.c[2], s, x, y),
+                ],
             },
-            d: Frag { u: s.u.dx, v: s.v.dx, c: [s.c[0].dx, s.c[1].dx, s.c[2].dx] },
+            d: Frag {
+                u: s.u.dx,
+                v: s.v.dx,
+                c: [s.c[0].dx, s.c[1].dx, s.c[2].dx],
+            },
         }
     }
     #[inline(always)]
@@ -87,12 +95,21 @@ impl Hyper {
             s: at(&s.u, s, x, y),
             t: at(&s.v, s, x, y),
             q: at(&s.q, s, x, y),
-            c: [at(&s.c[0], s, x, y), at(&s.c[1], s, x, y), at(&s.c[2], s, x, y)],
+            c: [
+                at(&s.c[0], s, x, y),
+                at(&s.c[1], s, x, y),
+                at(&s.c[2], s, x, y),
+            ],
         }
     }
     #[inline(always)]
     fn dx(s: &TriSetup) -> Self {
-        Hyper { s: s.u.dx, t: s.v.dx, q: s.q.dx, c: [s.c[0].dx, s.c[1].dx, s.c[2].dx] }
+        Hyper {
+            s: s.u.dx,
+            t: s.v.dx,
+            q: s.q.dx,
+            c: [s.c[0].dx, s.c[1].dx, s.c[2].dx],
+        }
     }
     #[inline(always)]
     fn add_scaled(&mut self, d: &Hyper, n: i32) {
@@ -117,7 +134,11 @@ impl Hyper {
     fn resolve(&self) -> Frag {
         let r = i64::from(recip_q30(self.q));
         let m = |a: i32| ((i64::from(a) * r) >> 16) as i32;
-        Frag { u: m(self.s), v: m(self.t), c: [m(self.c[0]), m(self.c[1]), m(self.c[2])] }
+        Frag {
+            u: m(self.s),
+            v: m(self.t),
+            c: [m(self.c[0]), m(self.c[1]), m(self.c[2])],
+        }
     }
 }
 
@@ -131,7 +152,10 @@ pub(crate) struct ExactInterp {
 impl Interp for ExactInterp {
     #[inline(always)]
     fn start(s: &TriSetup, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
-        ExactInterp { h: Hyper::at(s, x, y), d: Hyper::dx(s) }
+        ExactInterp {
+            h: Hyper::at(s, x, y),
+            d: Hyper::dx(s),
+        }
     }
     #[inline(always)]
     fn frag(&self) -> Frag {

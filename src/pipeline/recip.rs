@@ -41,7 +41,7 @@ pub fn recip_q30(q: i32) -> u32 {
     let a = RECIP_TABLE[idx & 0xFF];
     let b = RECIP_TABLE[(idx & 0xFF) + 1];
     let y = a - (((a - b) * frac) >> 9); // ~ 2^62 / m
-    // 2^46 / q = 2^(46 + n) / m = y / 2^(16 - n).
+                                         // 2^46 / q = 2^(46 + n) / m = y / 2^(16 - n).
     y >> (16 - n)
 }
 

@@ -22,8 +22,8 @@ use super::recip::{Q_FLOOR, Q_ONE};
 use super::stages::{ProjKind, Shading};
 use crate::geometry::ScreenTriangle;
 use crate::geometry::COLOR_ONE;
-use crate::raster::{Plane, Rect};
 use crate::raster::gradient::PlaneSetup;
+use crate::raster::{Plane, Rect};
 use crate::texture::Wrap;
 
 /// Everything the span loop needs for one triangle.
@@ -73,8 +73,19 @@ pub(crate) fn setup(
     tex_log2: (u32, u32),
     wrap: [Wrap; 2],
 ) -> Option<TriSetup> {
-    let ps = PlaneSetup::new([(tri[0].x, tri[0].y), (tri[1].x, tri[1].y), (tri[2].x, tri[2].y)], viewport)?;
-    let mut s = TriSetup { px_ref: ps.px_ref, py_ref: ps.py_ref, ..TriSetup::default() };
+    let ps = PlaneSetup::new(
+        [
+            (tri[0].x, tri[0].y),
+            (tri[1].x, tri[1].y),
+            (tri[2].x, tri[2].y),
+        ],
+        viewport,
+    )?;
+    let mut s = TriSetup {
+        px_ref: ps.px_ref,
+        py_ref: ps.py_ref,
+        ..TriSetup::default()
+    };
     if depth {
         s.z = ps.plane([tri[0].z, tri[1].z, tri[2].z]);
     }
@@ -99,9 +110,22 @@ pub(crate) fn setup(
         }
     };
     if shading.textured() {
-        let u = texel_coords([tri[0].uv[0], tri[1].uv[0], tri[2].uv[0]], tex_log2.0, wrap[0]);
-        let v = texel_coords([tri[0].uv[1], tri[1].uv[1], tri[2].uv[1]], tex_log2.1, wrap[1]);
-        let max = u.iter().chain(v.iter()).map(|x| x.unsigned_abs()).max().unwrap_or(0);
+        let u = texel_coords(
+            [tri[0].uv[0], tri[1].uv[0], tri[2].uv[0]],
+            tex_log2.0,
+            wrap[0],
+        );
+        let v = texel_coords(
+            [tri[0].uv[1], tri[1].uv[1], tri[2].uv[1]],
+            tex_log2.1,
+            wrap[1],
+        );
+        let max = u
+            .iter()
+            .chain(v.iter())
+            .map(|x| x.unsigned_abs())
+            .max()
+            .unwrap_or(0);
         let shift = (64 - max.leading_zeros()).saturating_sub(30);
         s.uv_shift = shift;
         s.u = ps.plane(times_q(u.map(|x| x >> shift)));

@@ -72,30 +72,35 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
     y: i32,
     out: &mut [C],
     zrow: &mut [u16],
-) {
+) -> u32 {
     let s = &ctx.setup;
     let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
     if Z {
         let mut z = s.z.at((s.px_ref, s.py_ref), x, y);
+        let mut written = 0u32;
         for (px, zb) in out.iter_mut().zip(zrow.iter_mut()) {
             let d = (z >> 14).clamp(0, 0xFFFF) as u16;
             if d < *zb {
                 *zb = d;
                 *px = C::from_rgb565(shade(ctx, it.frag()));
+                written += 1;
             }
             z = z.wrapping_add(s.z.dx);
             it.step();
         }
+        written
     } else {
         for px in out.iter_mut() {
             *px = C::from_rgb565(shade(ctx, it.frag()));
             it.step();
         }
+        out.len() as u32
     }
 }
 
 /// Draws pixels `x0..x1` of row `y` into `row` (and `depth`), for a span the rasterizer
-/// emitted. Out-of-range spans are ignored (they cannot happen; this keeps it panic-free).
+/// emitted, and returns the pixels written. Out-of-range spans are ignored (they cannot
+/// happen; this keeps it panic-free).
 #[inline(never)]
 pub(crate) fn span<M: Stages, C: TargetColor>(
     ctx: &SpanCtx<'_, M>,
@@ -104,10 +109,18 @@ pub(crate) fn span<M: Stages, C: TargetColor>(
     x1: i32,
     row: &mut [C],
     depth: Option<&mut [u16]>,
-) {
-    let (Ok(a), Ok(b)) = (usize::try_from(x0), usize::try_from(x1)) else { return };
-    let Some(out) = row.get_mut(a..b) else { return };
-    let zrow = if M::D::TEST { depth.and_then(|d| d.get_mut(a..b)) } else { None };
+) -> u32 {
+    let (Ok(a), Ok(b)) = (usize::try_from(x0), usize::try_from(x1)) else {
+        return 0;
+    };
+    let Some(out) = row.get_mut(a..b) else {
+        return 0;
+    };
+    let zrow = if M::D::TEST {
+        depth.and_then(|d| d.get_mut(a..b))
+    } else {
+        None
+    };
     match (M::P::KIND, zrow) {
         (ProjKind::Affine, Some(z)) => run::<M, C, AffineInterp, true>(ctx, x0, y, out, z),
         (ProjKind::Affine, None) => run::<M, C, AffineInterp, false>(ctx, x0, y, out, &mut []),

@@ -46,7 +46,10 @@ pub enum Shading {
 impl Shading {
     /// True when this shading reads a texture.
     pub const fn textured(self) -> bool {
-        matches!(self, Shading::Replace | Shading::Modulate | Shading::ModulateIntensity)
+        matches!(
+            self,
+            Shading::Replace | Shading::Modulate | Shading::ModulateIntensity
+        )
     }
 }
 
