@@ -11,7 +11,7 @@
 //! returns `None`/`Err`, as documented on it.
 
 mod acc;
-//pub mod mat;
+pub mod mat;
 pub mod recip;
 pub mod trig;
 pub mod vec;
@@ -19,7 +19,7 @@ pub mod vec;
 /// The geometry scalar: I16F16 fixed point (±32768, resolution 2^-16).
 pub type Fx = fixed::types::I16F16;
 
-//pub use mat::Mat4;
+pub use mat::Mat4;
 pub use recip::{div_fx, isqrt_u32, isqrt_u64, recip_fx, reciprocal_u32};
 pub use trig::{sin_cos, Angle};
 pub use vec::{Vec3, Vec4};
