@@ -32,7 +32,7 @@ static RECIP_TABLE: [u32; 257] = table();
 /// `[Q_FLOOR, Q_ONE]`.
 #[inline(always)]
 pub fn recip_q30(q: i32) -> u32 {
-    let q = (q as u32).clamp(Q_FLOOR, Q_ONE);
+    let q = q.clamp(Q_FLOOR as i32, Q_ONE as i32) as u32;
     let n = q.leading_zeros(); // 1..=16
     let m = q << n; // [2^31, 2^32)
     let f = m - (1 << 31);
