@@ -166,7 +166,8 @@ mod tests {
     #[test]
     fn plane_matches_exact_inside_the_viewport() {
         let vp = Rect::of_size(320, 240);
-        let cases: [([(i32, i32); 3], [i32; 3]); 3] = [
+        type Case = ([(i32, i32); 3], [i32; 3]);
+        let cases: [Case; 3] = [
             (
                 [(100, 50), (3000, 400), (900, 3500)],
                 [0, 1 << 20, -(1 << 22)],

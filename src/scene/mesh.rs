@@ -1,0 +1,136 @@
+//! Indexed triangle meshes and their transformation to clip space.
+
+use crate::color::TargetColor;
+use crate::geometry::{ClipVertex, COLOR_ONE};
+use crate::math::{Fx, Mat4, Vec3};
+use crate::pipeline::Draw;
+use crate::target::RenderTarget;
+use crate::Error;
+
+use super::{Camera, DirectionalLight};
+
+/// An indexed triangle mesh borrowed from slices (flash or RAM).
+///
+/// Positions and normals are I16F16 model-space vectors; `uvs` are normalized texture
+/// coordinates (1.0 = one texture); each index triple is one triangle, counter-clockwise
+/// seen from its front.
+#[derive(Clone, Copy, Debug)]
+pub struct Mesh<'a> {
+    positions: &'a [Vec3],
+    normals: Option<&'a [Vec3]>,
+    uvs: &'a [[Fx; 2]],
+    indices: &'a [[u16; 3]],
+}
+
+impl<'a> Mesh<'a> {
+    /// Validates and wraps the slices: `normals` (if any) and `uvs` must have one entry per
+    /// position, and every index must be in range.
+    pub fn new(
+        positions: &'a [Vec3],
+        normals: Option<&'a [Vec3]>,
+        uvs: &'a [[Fx; 2]],
+        indices: &'a [[u16; 3]],
+    ) -> Result<Self, Error> {
+        let n = positions.len();
+        if let Some(nm) = normals {
+            if nm.len() != n {
+                return Err(Error::WrongLength {
+                    expected: n,
+                    actual: nm.len(),
+                });
+            }
+        }
+        if uvs.len() != n {
+            return Err(Error::WrongLength {
+                expected: n,
+                actual: uvs.len(),
+            });
+        }
+        for (t, tri) in indices.iter().enumerate() {
+            for (k, &i) in tri.iter().enumerate() {
+                if usize::from(i) >= n {
+                    return Err(Error::IndexOutOfRange {
+                        at: t * 3 + k,
+                        index: i,
+                        vertices: n,
+                    });
+                }
+            }
+        }
+        Ok(Mesh {
+            positions,
+            normals,
+            uvs,
+            indices,
+        })
+    }
+
+    /// Number of triangles.
+    pub fn triangles(&self) -> usize {
+        self.indices.len()
+    }
+}
+
+/// One vertex to clip space, lit if there is a light and a normal. `None` on overflow.
+fn vertex(
+    mesh: &Mesh<'_>,
+    i: u16,
+    model_view: &Mat4,
+    mvp: &Mat4,
+    light: Option<&DirectionalLight>,
+) -> Option<ClipVertex> {
+    let i = usize::from(i);
+    let p = mvp.transform_point(*mesh.positions.get(i)?)?;
+    let uv = *mesh.uvs.get(i)?;
+    let intensity = match (light, mesh.normals) {
+        (Some(l), Some(nm)) => {
+            let n = model_view
+                .transform_vector(*nm.get(i)?)?
+                .normalize()
+                .unwrap_or(Vec3::ZERO);
+            l.intensity(n)
+        }
+        _ => COLOR_ONE,
+    };
+    Some(ClipVertex {
+        position: [p.x, p.y, p.z, p.w],
+        uv,
+        color: [intensity; 3],
+    })
+}
+
+/// Calls `emit` with each triangle of `mesh` in clip space (model, then camera), lit per
+/// vertex by `light` when given and the mesh has normals. Triangles with a vertex that
+/// overflows the fixed-point range are skipped.
+pub fn mesh_triangles(
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    mut emit: impl FnMut(&[ClipVertex; 3]),
+) {
+    let model_view = camera.view.mul(model);
+    let mvp = camera.projection.mul(&model_view);
+    for tri in mesh.indices {
+        let v = |k: usize| vertex(mesh, tri[k], &model_view, &mvp, light);
+        if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+            emit(&[a, b, c]);
+        }
+    }
+}
+
+/// Draws `mesh` with `draw` into `target`; returns the pixels written.
+pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    target: &mut T,
+) -> u32 {
+    let mut pixels = 0u32;
+    mesh_triangles(mesh, model, camera, light, |t| {
+        pixels = pixels.wrapping_add(draw.clip_triangles(core::slice::from_ref(t), target));
+    });
+    pixels
+}

@@ -1,0 +1,38 @@
+//! The scene level: meshes with model matrices, a camera and a directional light, turned
+//! into clip-space triangles for a [`Draw`](crate::pipeline::Draw).
+//!
+//! Conventions: right-handed, column vectors (`p' = M p`), camera looking down `-z` with `+y`
+//! up (OpenGL), angles as [`Angle`](crate::math::Angle) (65536 = one turn), lighting in view
+//! space. Normals are transformed by the model-view matrix and renormalised, which is exact
+//! for rotations, translations and uniform scales (the scenes fixel targets); a non-uniform
+//! scale would need the inverse transpose, which is out of scope.
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::scene::{draw_mesh, Camera, DirectionalLight, Mesh};
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//!
+//! // One white-lit triangle, untextured Gouraud, into a 32 x 24 frame.
+//! let positions = [Vec3::from_num(-1, -1, -3), Vec3::from_num(1, -1, -3), Vec3::from_num(0, 1, -3)];
+//! let normals = [Vec3::from_num(0, 0, 1); 3];
+//! let uvs = [[Fx::ZERO; 2]; 3];
+//! let indices = [[0u16, 1, 2]];
+//! let mesh = Mesh::new(&positions, Some(&normals), &uvs, &indices).unwrap();
+//! let camera = Camera::perspective(Angle::from_degrees(Fx::from_num(45)), Fx::from_num(4) / 3,
+//!                                  Fx::from_num(0.5), Fx::from_num(20)).unwrap();
+//! let light = DirectionalLight::default();
+//! let mode = DrawMode { shading: Shading::Gouraud, ..DrawMode::default() };
+//! let draw = Draw::dynamic(mode, None, Viewport::new(0, 0, 32, 24).unwrap()).unwrap();
+//! let mut pixels = [Rgb565::default(); 32 * 24];
+//! let mut frame = Frame::new(&mut pixels, 32, 24).unwrap();
+//! let written = draw_mesh(&draw, &mesh, &Mat4::IDENTITY, &camera, Some(&light), &mut frame);
+//! assert!(written > 50);
+//! ```
+
+mod camera;
+mod light;
+mod mesh;
+
+pub use camera::Camera;
+pub use light::DirectionalLight;
+pub use mesh::{draw_mesh, mesh_triangles, Mesh};
