@@ -13,11 +13,12 @@ use fixel::demo;
 use fixel::pipeline::{Affine, DepthLess, Exact, ModulateIntensity, Pipeline, Replace};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight};
-use fixel::texture::{Bilinear, Nearest, Repeat};
+use fixel::texture::{generate_mips, mip, Bilinear, MipTexture, Nearest, Repeat, Trilinear};
 
 type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 type FloorNearest = Pipeline<Exact, Nearest, Repeat, Repeat, Replace, DepthLess>;
 type FloorBilinear = Pipeline<Exact, Bilinear, Repeat, Repeat, Replace, DepthLess>;
+type FloorTrilinear = Pipeline<Exact, Trilinear, Repeat, Repeat, Replace, DepthLess>;
 #[allow(dead_code)]
 type Cheapest = Pipeline<Affine, Nearest, Repeat, Repeat, Replace, DepthLess>;
 
@@ -95,6 +96,23 @@ fn main() -> Result<(), Error> {
     render(
         "floor-bilinear",
         &Draw::new::<FloorBilinear>(Some(tex), vp, Cull::Back)?,
+        &floor.mesh()?,
+        &Mat4::IDENTITY,
+        200,
+        false,
+    );
+
+    // The floor with a full mip chain (64 x 64 down to 1 x 1, 4/3 of the base) and trilinear
+    // filtering.
+    let levels = mip::full_levels(64, 64);
+    let mut chain = vec![Rgb565::new(0, 0, 0); mip::chain_len(64, 64, levels)];
+    chain[..64 * 64].copy_from_slice(&t64);
+    generate_mips(&mut chain, 64, 64, levels)?;
+    let mips = MipTexture::new(&chain, 64, 64, levels)?;
+    let draw = Draw::new_mip::<FloorTrilinear>(Some(mips), vp, Cull::Back)?;
+    render(
+        "floor-trilinear",
+        &draw,
         &floor.mesh()?,
         &Mat4::IDENTITY,
         200,

@@ -97,6 +97,7 @@ fn main() -> Result<(), Error> {
                 shading: Shading::Replace,
                 depth: DepthTest::Less,
                 cull: Cull::None,
+                ..DrawMode::default()
             };
             Draw::dynamic(mode, Some(tex), vp)
         })

@@ -65,6 +65,8 @@ pub fn draw_mode(m: &RefMode, projection: Option<Projection>, intensity: bool) -
         RefWrap::ClampToBorder => Wrap::ClampToBorder,
     };
     DrawMode {
+        mip: fixel::texture::MipFilter::None,
+        lod: fixel::texture::Lod::default(),
         projection: projection.unwrap_or(match m.projection {
             RefProjection::Affine => Projection::Affine,
             RefProjection::Perspective => Projection::Exact,

@@ -20,7 +20,8 @@ use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewpo
 use crate::raster::{rasterize, Rect, SpanSink};
 use crate::target::RenderTarget;
 use crate::texture::{
-    Bilinear, ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Nearest, Repeat, Texture, Wrap,
+    Bilinear, ClampToBorder, ClampToEdge, DynMip, DynWrap, Lod, LodGranularity, MipFilter,
+    MipTexture, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Texture, Wrap,
     WrapMode,
 };
 use crate::Error;
@@ -48,6 +49,36 @@ impl FromWrap for DynWrap {
     }
 }
 
+/// Builds a sampler value from the draw's mode (markers ignore it).
+pub trait FromMode: TexSampler {
+    /// The sampler for `mode`.
+    fn from_mode(mode: &DrawMode) -> Self;
+}
+impl FromMode for Nearest {
+    fn from_mode(_: &DrawMode) -> Self {
+        Nearest
+    }
+}
+impl FromMode for Bilinear {
+    fn from_mode(_: &DrawMode) -> Self {
+        Bilinear
+    }
+}
+impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {
+    fn from_mode(_: &DrawMode) -> Self {
+        Mipmapped::default()
+    }
+}
+impl FromMode for DynMip {
+    fn from_mode(mode: &DrawMode) -> Self {
+        DynMip {
+            min: mode.filter,
+            mag: mode.filter,
+            between: mode.mip,
+        }
+    }
+}
+
 /// A 1x1 black texture for untextured draws (so the span loop never branches on "is there
 /// a texture").
 static NO_TEXELS: [Rgb565; 1] = [Rgb565::new(0, 0, 0)];
@@ -57,7 +88,7 @@ type RasterFn<'a, C> = fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<C
 /// A ready-to-use draw: mode, texture, viewport and the span loop chosen for them.
 pub struct Draw<'a, C: TargetColor> {
     mode: DrawMode,
-    texture: Texture<'a>,
+    texture: MipTexture<'a>,
     viewport: Viewport,
     flat: u16,
     raster: RasterFn<'a, C>,
@@ -72,7 +103,7 @@ impl<C: TargetColor> core::fmt::Debug for Draw<'_, C> {
     }
 }
 
-fn check(mode: &DrawMode, texture: &Option<Texture<'_>>) -> Result<(), Error> {
+fn check(mode: &DrawMode, texture: &Option<MipTexture<'_>>) -> Result<(), Error> {
     if mode.shading.textured() && texture.is_none() {
         return Err(Error::BadMode("textured shading needs a texture"));
     }
@@ -101,6 +132,23 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         M: Stages + 'a,
         M::WU: FromWrap,
         M::WV: FromWrap,
+        M::F: FromMode,
+    {
+        Self::new_mip::<M>(texture.map(MipTexture::single), viewport, cull)
+    }
+
+    /// Like [`Draw::new`] with a mip chain, for the mipmapped samplers (for example
+    /// [`Trilinear`](crate::texture::Trilinear)).
+    pub fn new_mip<M>(
+        texture: Option<MipTexture<'a>>,
+        viewport: Viewport,
+        cull: Cull,
+    ) -> Result<Self, Error>
+    where
+        M: Stages + 'a,
+        M::WU: FromWrap,
+        M::WV: FromWrap,
+        M::F: FromMode,
     {
         let projection = match <M::P as ProjectionStage>::KIND {
             ProjKind::Affine => Projection::Affine,
@@ -109,7 +157,13 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         };
         let mode = DrawMode {
             projection,
-            filter: <M::F as crate::texture::Sampler>::FILTER,
+            filter: <M::F as TexSampler>::FILTER,
+            mip: if <M::F as TexSampler>::LOD {
+                MipFilter::Linear
+            } else {
+                MipFilter::None
+            },
+            lod: Lod::default(),
             wrap: [<M::WU as WrapMode>::MODE, <M::WV as WrapMode>::MODE],
             shading: <M::S as ShadingStage>::KIND,
             depth: if <M::D as DepthStage>::TEST {
@@ -122,7 +176,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         check(&mode, &texture)?;
         Ok(Draw {
             mode,
-            texture: texture.unwrap_or(Texture::from_static(&NO_TEXELS, 1, 1)),
+            texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),
             viewport,
             flat: 0xFFFF,
             raster: raster_triangle::<M, C>,
@@ -136,10 +190,19 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         texture: Option<Texture<'a>>,
         viewport: Viewport,
     ) -> Result<Self, Error> {
+        Self::dynamic_mip(mode, texture.map(MipTexture::single), viewport)
+    }
+
+    /// Like [`Draw::dynamic`] with a mip chain (`mode.mip` selects mipmapping).
+    pub fn dynamic_mip(
+        mode: DrawMode,
+        texture: Option<MipTexture<'a>>,
+        viewport: Viewport,
+    ) -> Result<Self, Error> {
         check(&mode, &texture)?;
         Ok(Draw {
             mode,
-            texture: texture.unwrap_or(Texture::from_static(&NO_TEXELS, 1, 1)),
+            texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),
             viewport,
             flat: 0xFFFF,
             raster: select::<C>(&mode),
@@ -164,6 +227,12 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             self.mode.projection = Projection::Subdivided { log2_n };
         }
         Ok(self)
+    }
+
+    /// With level-of-detail bias, clamps and granularity (mipmapped draws).
+    pub fn with_lod(mut self, lod: Lod) -> Self {
+        self.mode.lod = lod;
+        self
     }
 
     /// The draw's mode.
@@ -235,6 +304,7 @@ where
     M: Stages,
     M::WU: FromWrap,
     M::WV: FromWrap,
+    M::F: FromMode,
     C: TargetColor,
 {
     let vp = draw.viewport.rect();
@@ -249,7 +319,10 @@ where
         return 0;
     }
     let mode = &draw.mode;
-    let log2 = (draw.texture.log2_width(), draw.texture.log2_height());
+    let log2 = (
+        draw.texture.base().log2_width(),
+        draw.texture.base().log2_height(),
+    );
     let Some(setup) = setup(tri, vp, M::P::KIND, M::S::KIND, M::D::TEST, log2, mode.wrap) else {
         return 0;
     };
@@ -260,9 +333,22 @@ where
         Projection::Subdivided { log2_n } => u32::from(log2_n),
         _ => 4,
     };
+    let tri_lambda =
+        if <M::F as TexSampler>::LOD && mode.lod.granularity == LodGranularity::Triangle {
+            let (cx, cy) = setup.centroid;
+            match M::P::KIND {
+                ProjKind::Affine => super::interp::affine_lambda(&setup),
+                _ => super::interp::hyper_lambda_at(&setup, cx, cy),
+            }
+        } else {
+            0
+        };
     let ctx = SpanCtx::<M> {
         setup,
-        tex: draw.texture,
+        tex: &draw.texture,
+        sampler: M::F::from_mode(mode),
+        lod: mode.lod,
+        tri_lambda,
         wu: M::WU::from_wrap(mode.wrap[0]),
         wv: M::WV::from_wrap(mode.wrap[1]),
         log2_n,
@@ -315,9 +401,10 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
     }
     macro_rules! by_filter {
         ($p:ty) => {
-            match mode.filter {
-                crate::texture::Filter::Nearest => by_shading!($p, Nearest),
-                crate::texture::Filter::Bilinear => by_shading!($p, Bilinear),
+            match (mode.mip, mode.filter) {
+                (MipFilter::None, crate::texture::Filter::Nearest) => by_shading!($p, Nearest),
+                (MipFilter::None, crate::texture::Filter::Bilinear) => by_shading!($p, Bilinear),
+                _ => by_shading!($p, DynMip),
             }
         };
     }

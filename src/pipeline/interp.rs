@@ -13,6 +13,7 @@
 
 use super::recip::recip_q30;
 use super::setup::TriSetup;
+use crate::texture::mip::lambda_q8;
 
 /// One fragment's interpolated values: texel coordinates (I16F16 bits, before `uv_shift`)
 /// and colour channels (Q8 with 16 fraction bits).
@@ -31,6 +32,35 @@ pub(crate) trait Interp {
     fn frag(&self) -> Frag;
     /// Moves one pixel right.
     fn step(&mut self);
+    /// Level of detail `lambda` (Q8.8, before bias) at the current pixel.
+    fn lambda(&self, s: &TriSetup) -> i32;
+}
+
+/// `lambda` of an affine mapping: constant derivatives, straight from the planes.
+#[inline(always)]
+pub(crate) fn affine_lambda(s: &TriSetup) -> i32 {
+    lambda_q8(s.u.dx, s.v.dx, s.u.dy, s.v.dy) + 256 * s.uv_shift as i32
+}
+
+/// `lambda` of a perspective mapping at a pixel with interpolants `h`: the derivative of
+/// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`).
+#[inline(always)]
+fn hyper_lambda(s: &TriSetup, h: &Hyper) -> i32 {
+    let r = i64::from(recip_q30(h.q));
+    let m = |a: i32| ((i64::from(a) * r) >> 16) as i32;
+    let (u, v) = (m(h.s), m(h.t));
+    let d = |sd: i32, qd: i32, a: i32| -> i32 {
+        let t = i64::from(sd) - ((i64::from(a) * i64::from(qd)) >> 30);
+        (t.saturating_mul(r) >> 16).clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+    };
+    let (ux, vx) = (d(s.u.dx, s.q.dx, u), d(s.v.dx, s.q.dx, v));
+    let (uy, vy) = (d(s.u.dy, s.q.dy, u), d(s.v.dy, s.q.dy, v));
+    lambda_q8(ux, vx, uy, vy) + 256 * s.uv_shift as i32
+}
+
+/// `lambda` at pixel `(x, y)` for a perspective set-up (per-triangle level of detail).
+pub(crate) fn hyper_lambda_at(s: &TriSetup, x: i32, y: i32) -> i32 {
+    hyper_lambda(s, &Hyper::at(s, x, y))
 }
 
 #[inline(always)]
@@ -68,6 +98,10 @@ impl Interp for AffineInterp {
     #[inline(always)]
     fn frag(&self) -> Frag {
         self.f
+    }
+    #[inline(always)]
+    fn lambda(&self, s: &TriSetup) -> i32 {
+        affine_lambda(s)
     }
     #[inline(always)]
     fn step(&mut self) {
@@ -165,6 +199,10 @@ impl Interp for ExactInterp {
     fn step(&mut self) {
         self.h.add(&self.d);
     }
+    #[inline(always)]
+    fn lambda(&self, s: &TriSetup) -> i32 {
+        hyper_lambda(s, &self.h)
+    }
 }
 
 /// `ceil(2^16 / n)` for `n` in `1..64`: slopes of short segments without a divide.
@@ -189,12 +227,15 @@ pub(crate) struct SubdivInterp {
     in_seg: u32,
     left: u32,
     log2_n: u32,
+    /// Interpolants at the current segment's first pixel (for the level of detail).
+    seg_start: Hyper,
 }
 
 impl SubdivInterp {
     /// Sets up the segment from the current values to the exact values `seg` pixels on.
     #[inline(always)]
     fn segment(&mut self, seg: u32) {
+        self.seg_start = self.next;
         self.next.add_scaled(&self.d, seg as i32);
         self.end = self.next.resolve();
         let k = seg.min(63);
@@ -234,6 +275,7 @@ impl Interp for SubdivInterp {
             in_seg: 0,
             left: len,
             log2_n,
+            seg_start: h,
         };
         let seg = len.min(1 << log2_n);
         it.segment(seg);
@@ -242,6 +284,10 @@ impl Interp for SubdivInterp {
     #[inline(always)]
     fn frag(&self) -> Frag {
         self.cur
+    }
+    #[inline(always)]
+    fn lambda(&self, s: &TriSetup) -> i32 {
+        hyper_lambda(s, &self.seg_start)
     }
     #[inline(always)]
     fn step(&mut self) {

@@ -42,6 +42,8 @@ pub(crate) struct TriSetup {
     pub c: [Plane; 3],
     /// Right shift applied to texel coordinates (see the module docs).
     pub uv_shift: u32,
+    /// The pixel nearest the centroid (where per-triangle level of detail is taken).
+    pub centroid: (i32, i32),
 }
 
 fn periodic(w: Wrap) -> bool {
@@ -81,9 +83,16 @@ pub(crate) fn setup(
         ],
         viewport,
     )?;
+    let cx = (i64::from(tri[0].x) + i64::from(tri[1].x) + i64::from(tri[2].x)) / 48;
+    let cy = (i64::from(tri[0].y) + i64::from(tri[1].y) + i64::from(tri[2].y)) / 48;
+    let centroid = (
+        (cx as i32).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
+        (cy as i32).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
+    );
     let mut s = TriSetup {
         px_ref: ps.px_ref,
         py_ref: ps.py_ref,
+        centroid,
         ..TriSetup::default()
     };
     if depth {

@@ -11,13 +11,17 @@ use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage, Shading, ShadingStage, Stages};
 use crate::color::{modulate_rgb, modulate_scalar, rgb565, TargetColor};
 use crate::geometry::COLOR_ONE;
-use crate::texture::{Sampler, Texture};
+use crate::texture::{Lod, LodGranularity, MipTexture, TexSampler};
 
 /// Per-draw, per-triangle state the span loop reads.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SpanCtx<'a, M: Stages> {
     pub setup: TriSetup,
-    pub tex: Texture<'a>,
+    pub tex: &'a MipTexture<'a>,
+    pub sampler: M::F,
+    pub lod: Lod,
+    /// Level of detail of the whole triangle (for [`LodGranularity::Triangle`]).
+    pub tri_lambda: i32,
     pub wu: M::WU,
     pub wv: M::WV,
     pub log2_n: u32,
@@ -46,12 +50,13 @@ fn q8(c: i32) -> u16 {
 }
 
 #[inline(always)]
-fn shade<M: Stages>(ctx: &SpanCtx<'_, M>, f: Frag) -> u16 {
+fn shade<M: Stages>(ctx: &SpanCtx<'_, M>, f: Frag, lambda: i32) -> u16 {
     let texel = || {
         let k = ctx.setup.uv_shift;
         let u = unshift(f.u, k, ctx.periodic[0]);
         let v = unshift(f.v, k, ctx.periodic[1]);
-        M::F::sample(&ctx.tex, ctx.wu, ctx.wv, u, v)
+        ctx.sampler
+            .sample_mip(ctx.tex, ctx.wu, ctx.wv, u, v, lambda)
     };
     match M::S::KIND {
         Shading::Replace => texel(),
@@ -75,6 +80,25 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
 ) -> u32 {
     let s = &ctx.setup;
     let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
+    let lod = ctx.lod;
+    let per_pixel = <M::F as TexSampler>::LOD && lod.granularity == LodGranularity::Pixel;
+    let fixed_lambda = if !<M::F as TexSampler>::LOD {
+        0
+    } else {
+        match lod.granularity {
+            LodGranularity::Triangle => ctx.tri_lambda,
+            _ => it.lambda(s),
+        }
+    };
+    let lambda = |it: &I| -> i32 {
+        let l = if per_pixel {
+            it.lambda(s)
+        } else {
+            fixed_lambda
+        };
+        l.saturating_add(lod.bias)
+            .clamp(lod.min, lod.max.max(lod.min))
+    };
     if Z {
         let mut z = s.z.at((s.px_ref, s.py_ref), x, y);
         let mut written = 0u32;
@@ -82,7 +106,7 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
             let d = (z >> 14).clamp(0, 0xFFFF) as u16;
             if d < *zb {
                 *zb = d;
-                *px = C::from_rgb565(shade(ctx, it.frag()));
+                *px = C::from_rgb565(shade(ctx, it.frag(), lambda(&it)));
                 written += 1;
             }
             z = z.wrapping_add(s.z.dx);
@@ -91,7 +115,7 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
         written
     } else {
         for px in out.iter_mut() {
-            *px = C::from_rgb565(shade(ctx, it.frag()));
+            *px = C::from_rgb565(shade(ctx, it.frag(), lambda(&it)));
             it.step();
         }
         out.len() as u32

@@ -9,7 +9,7 @@ use core::fmt::Debug;
 use core::marker::PhantomData;
 
 use crate::geometry::Cull;
-use crate::texture::{Filter, Sampler, Wrap, WrapMode};
+use crate::texture::{Filter, Lod, MipFilter, TexSampler, Wrap, WrapMode};
 
 /// How texture coordinates (and colours) are interpolated across a triangle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -68,8 +68,12 @@ pub enum DepthTest {
 pub struct DrawMode {
     /// Interpolation of texture coordinates and colours.
     pub projection: Projection,
-    /// Texture filter (magnification and minification alike).
+    /// Magnification filter, and the filter within a mip level.
     pub filter: Filter,
+    /// Filtering between mip levels (`None`: no mipmapping, level 0 only).
+    pub mip: MipFilter,
+    /// Level-of-detail bias, clamps and granularity (used when `mip` is not `None`).
+    pub lod: Lod,
     /// Wrap modes for s and t.
     pub wrap: [Wrap; 2],
     /// Pixel colour.
@@ -190,8 +194,8 @@ impl<P, F, WU, WV, S, D> Debug for Pipeline<P, F, WU, WV, S, D> {
 pub trait Stages {
     /// Projection stage.
     type P: ProjectionStage;
-    /// Texture filter.
-    type F: Sampler;
+    /// Texture sampler (plain or mipmapped).
+    type F: TexSampler;
     /// Wrap mode for s.
     type WU: WrapMode;
     /// Wrap mode for t.
@@ -205,7 +209,7 @@ pub trait Stages {
 impl<P, F, WU, WV, S, D> Stages for Pipeline<P, F, WU, WV, S, D>
 where
     P: ProjectionStage,
-    F: Sampler,
+    F: TexSampler,
     WU: WrapMode,
     WV: WrapMode,
     S: ShadingStage,
