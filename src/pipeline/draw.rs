@@ -154,6 +154,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             ProjKind::Affine => Projection::Affine,
             ProjKind::Exact => Projection::Exact,
             ProjKind::Subdivided => Projection::Subdivided { log2_n: 4 },
+            ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
         };
         let mode = DrawMode {
             projection,
@@ -227,6 +228,14 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             self.mode.projection = Projection::Subdivided { log2_n };
         }
         Ok(self)
+    }
+
+    /// With a different error budget for [`Projection::Adaptive`] (1/256 texel).
+    pub fn with_adaptive_budget(mut self, budget: u16) -> Self {
+        if let Projection::Adaptive { .. } = self.mode.projection {
+            self.mode.projection = Projection::Adaptive { budget };
+        }
+        self
     }
 
     /// With level-of-detail bias, clamps and granularity (mipmapped draws).
@@ -323,7 +332,21 @@ where
         draw.texture.base().log2_width(),
         draw.texture.base().log2_height(),
     );
-    let Some(setup) = setup(tri, vp, M::P::KIND, M::S::KIND, M::D::TEST, log2, mode.wrap) else {
+    let budget = match mode.projection {
+        // Q8 texels to the I16F16 texel units of the set-up.
+        Projection::Adaptive { budget } => i64::from(budget) << 8,
+        _ => 0,
+    };
+    let Some(setup) = setup(
+        tri,
+        vp,
+        M::P::KIND,
+        M::S::KIND,
+        M::D::TEST,
+        log2,
+        mode.wrap,
+        budget,
+    ) else {
         return 0;
     };
     let periodic = mode
@@ -336,9 +359,10 @@ where
     let tri_lambda =
         if <M::F as TexSampler>::LOD && mode.lod.granularity == LodGranularity::Triangle {
             let (cx, cy) = setup.centroid;
-            match M::P::KIND {
-                ProjKind::Affine => super::interp::affine_lambda(&setup),
-                _ => super::interp::hyper_lambda_at(&setup, cx, cy),
+            if setup.affine {
+                super::interp::affine_lambda(&setup)
+            } else {
+                super::interp::hyper_lambda_at(&setup, cx, cy)
             }
         } else {
             0
@@ -412,5 +436,6 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
         Projection::Affine => by_filter!(Affine),
         Projection::Subdivided { .. } => by_filter!(Subdivided),
         Projection::Exact => by_filter!(Exact),
+        Projection::Adaptive { .. } => by_filter!(Adaptive),
     }
 }

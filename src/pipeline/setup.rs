@@ -44,6 +44,24 @@ pub(crate) struct TriSetup {
     pub uv_shift: u32,
     /// The pixel nearest the centroid (where per-triangle level of detail is taken).
     pub centroid: (i32, i32),
+    /// True when the planes are affine (`u`, `v`, colour) rather than perspective (`s`, `t`,
+    /// `q`): always for [`ProjKind::Affine`], per triangle for [`ProjKind::Adaptive`].
+    pub affine: bool,
+}
+
+/// Upper bound, in the units of `extent`, of the difference between affine and
+/// perspective-correct interpolation over a triangle whose normalized `1/w` values range
+/// over `[q_min, 1]` (Q30) and whose attribute spans `extent`.
+///
+/// With barycentrics `b` and perspective ones `b' = b q / sum(b q)`, the difference is
+/// `sum((b - b') a)`, at most `extent` times the positive part of `b - b'`, which is largest
+/// for two groups of vertices at `q = 1` and `q = rho`: `(1 - sqrt(rho)) / (1 + sqrt(rho))`.
+/// Since `sqrt(rho) >= rho` this is below `(1 - rho) / (1 + rho)`, used here (no square root).
+pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
+    let one = i64::from(Q_ONE);
+    let q = q_min.clamp(0, one);
+    // extent < 2^33, (one - q) <= 2^30: the product fits i64.
+    extent.saturating_mul(one - q) / (one + q)
 }
 
 fn periodic(w: Wrap) -> bool {
@@ -74,6 +92,7 @@ pub(crate) fn setup(
     depth: bool,
     tex_log2: (u32, u32),
     wrap: [Wrap; 2],
+    adaptive_budget: i64,
 ) -> Option<TriSetup> {
     let ps = PlaneSetup::new(
         [
@@ -98,27 +117,18 @@ pub(crate) fn setup(
     if depth {
         s.z = ps.plane([tri[0].z, tri[1].z, tri[2].z]);
     }
-    let perspective = proj != ProjKind::Affine;
     // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain.
-    let q = if perspective {
+    let q = if proj != ProjKind::Affine {
         let wmin = i64::from(tri[0].w.min(tri[1].w).min(tri[2].w).max(1));
-        let qv = tri.map(|v| {
+        tri.map(|v| {
             let w = i64::from(v.w.max(1));
             ((wmin << 30) / w).clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
-        });
-        s.q = ps.plane([qv[0] as i32, qv[1] as i32, qv[2] as i32]);
-        qv
+        })
     } else {
         [i64::from(Q_ONE); 3]
     };
-    let times_q = |a: [i64; 3]| -> [i32; 3] {
-        if perspective {
-            [0, 1, 2].map(|k| ((a[k] * q[k]) >> 30) as i32)
-        } else {
-            a.map(|x| x as i32)
-        }
-    };
-    if shading.textured() {
+    let textured = shading.textured();
+    let uv = if textured {
         let u = texel_coords(
             [tri[0].uv[0], tri[1].uv[0], tri[2].uv[0]],
             tex_log2.0,
@@ -129,6 +139,39 @@ pub(crate) fn setup(
             tex_log2.1,
             wrap[1],
         );
+        Some((u, v))
+    } else {
+        None
+    };
+    let perspective = match proj {
+        ProjKind::Affine => false,
+        ProjKind::Exact | ProjKind::Subdivided => true,
+        ProjKind::Adaptive => {
+            let span = |a: [i64; 3]| a.iter().max().unwrap_or(&0) - a.iter().min().unwrap_or(&0);
+            let q_min = q[0].min(q[1]).min(q[2]);
+            match uv {
+                Some((u, v)) => affine_error_bound(span(u).max(span(v)), q_min) > adaptive_budget,
+                // Untextured: colour error against one RGB565 step (1/32 of full scale).
+                None => {
+                    let c =
+                        |k: usize| span(tri.map(|v| i64::from(v.color[k].min(COLOR_ONE)) << 16));
+                    affine_error_bound(c(0).max(c(1)).max(c(2)), q_min) > (1 << 19)
+                }
+            }
+        }
+    };
+    s.affine = !perspective;
+    if perspective {
+        s.q = ps.plane([q[0] as i32, q[1] as i32, q[2] as i32]);
+    }
+    let times_q = |a: [i64; 3]| -> [i32; 3] {
+        if perspective {
+            [0, 1, 2].map(|k| ((a[k] * q[k]) >> 30) as i32)
+        } else {
+            a.map(|x| x as i32)
+        }
+    };
+    if let Some((u, v)) = uv {
         let max = u
             .iter()
             .chain(v.iter())

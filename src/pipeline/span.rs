@@ -152,5 +152,13 @@ pub(crate) fn span<M: Stages, C: TargetColor>(
         (ProjKind::Exact, None) => run::<M, C, ExactInterp, false>(ctx, x0, y, out, &mut []),
         (ProjKind::Subdivided, Some(z)) => run::<M, C, SubdivInterp, true>(ctx, x0, y, out, z),
         (ProjKind::Subdivided, None) => run::<M, C, SubdivInterp, false>(ctx, x0, y, out, &mut []),
+        (ProjKind::Adaptive, Some(z)) if ctx.setup.affine => {
+            run::<M, C, AffineInterp, true>(ctx, x0, y, out, z)
+        }
+        (ProjKind::Adaptive, None) if ctx.setup.affine => {
+            run::<M, C, AffineInterp, false>(ctx, x0, y, out, &mut [])
+        }
+        (ProjKind::Adaptive, Some(z)) => run::<M, C, ExactInterp, true>(ctx, x0, y, out, z),
+        (ProjKind::Adaptive, None) => run::<M, C, ExactInterp, false>(ctx, x0, y, out, &mut []),
     }
 }

@@ -24,6 +24,13 @@ pub enum Projection {
     /// Perspective-correct at every pixel (hyperbolic interpolation of `u/w, v/w, 1/w`).
     #[default]
     Exact,
+    /// Chosen per triangle: affine when a bound on the affine error (see
+    /// `affine_error_bound` in the set-up) is within `budget` (texels, Q8: 256 = one texel),
+    /// exact otherwise. Small or nearly screen-parallel triangles then cost no reciprocal.
+    Adaptive {
+        /// Largest accepted affine error, 1/256 texel.
+        budget: u16,
+    },
 }
 
 /// What colour a covered pixel gets.
@@ -98,6 +105,8 @@ pub enum ProjKind {
     Subdivided,
     /// See [`Projection::Exact`].
     Exact,
+    /// See [`Projection::Adaptive`].
+    Adaptive,
 }
 /// Marker for the shading stage.
 pub trait ShadingStage: Copy + Default + Debug {
@@ -121,6 +130,13 @@ impl ProjectionStage for Affine {
 pub struct Subdivided;
 impl ProjectionStage for Subdivided {
     const KIND: ProjKind = ProjKind::Subdivided;
+}
+/// Adaptive projection marker (affine or exact per triangle; budget from the draw,
+/// default 1/4 texel).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Adaptive;
+impl ProjectionStage for Adaptive {
+    const KIND: ProjKind = ProjKind::Adaptive;
 }
 /// Exact perspective marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
