@@ -172,7 +172,7 @@ static INV_SMALL: [u32; 64] = {
     let mut t = [0u32; 64];
     let mut n = 1;
     while n < 64 {
-        t[n] = (65536 + n as u32 - 1) / n as u32;
+        t[n] = 65536u32.div_ceil(n as u32);
         n += 1;
     }
     t

@@ -166,6 +166,7 @@ mod tests {
     #[test]
     fn plane_matches_exact_inside_the_viewport() {
         let vp = Rect::of_size(320, 240);
+        #[allow(clippy::type_complexity)]
         let cases: [([(i32, i32); 3], [i32; 3]); 3] = [
             (
                 [(100, 50), (3000, 400), (900, 3500)],

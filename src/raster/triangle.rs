@@ -260,6 +260,6 @@ mod tests {
             );
         }
         assert_eq!(whole.hits, parts.hits);
-        assert!(whole.hits.iter().any(|&c| c == 1));
+        assert!(whole.hits.contains(&1));
     }
 }
