@@ -91,13 +91,22 @@ impl Viewport {
         let cx = i64::from(self.rect.x0) * one + hw;
         let cy = i64::from(self.rect.y0) * one + hh;
         let lim = i64::from(GUARD_BAND_PX) * one;
-        let sx = (cx + div_round(i64::from(x) * hw, w)).clamp(-lim, lim);
-        let sy = (cy - div_round(i64::from(y) * hh, w)).clamp(-lim, lim);
+        // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
+        // of the window coordinate: rounding them away from the viewport centre instead
+        // would snap a mesh moved by whole pixels to a different shape.
+        let sx = (cx + round_half_up(i64::from(x) * hw, w)).clamp(-lim, lim);
+        let sy = (cy + round_half_up(-(i64::from(y) * hh), w)).clamp(-lim, lim);
         // depth = (z/w + 1)/2 * 65535, 14 fraction bits: 65535 * 2^13 * (z/w + 1).
         let k = 65535i64 << 13;
         let d = (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14);
         (sx as i32, sy as i32, d as i32)
     }
+}
+
+/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`.
+#[inline]
+fn round_half_up(n: i64, d: i64) -> i64 {
+    (2 * n + d).div_euclid(2 * d)
 }
 
 /// `n / d` rounded to nearest, ties away from zero; `d > 0`.
@@ -128,6 +137,20 @@ mod tests {
             vp.project(0, 0, 0, 2 * one),
             (160 * 16, 120 * 16, 65535 << 13)
         );
+    }
+
+    #[test]
+    fn ties_round_the_same_way_everywhere() {
+        // 64 x 64: 512 sub-pixels per NDC unit. NDC 0.6337890625 is 324.5 sub-pixels from
+        // the centre: window y 187.5 sub-pixels rounds down the screen to 188 (and the
+        // mirrored x tie rounds right), exactly as the tie 1/32 px further on does.
+        let vp = Viewport::new(0, 0, 64, 64).unwrap();
+        let t = 41536; // 0.6337890625 in I16F16
+        let one = 1 << 16;
+        assert_eq!(vp.project(t, t, 0, one).0, 512 + 325);
+        assert_eq!(vp.project(t, t, 0, one).1, 512 - 324);
+        assert_eq!(vp.project(-t, -t, 0, one).0, 512 - 324);
+        assert_eq!(vp.project(-t, -t, 0, one).1, 512 + 325);
     }
 
     #[test]
