@@ -2,7 +2,7 @@
 //! independent f64 reference renderer ([`reference`]), the benchmark scenes
 //! built in f64 ([`scenes`]), error metrics against the reference
 //! ([`metrics`]), RGB565 PNG I/O ([`png_io`]) and golden-image checks
-//! ([`golden`]).
+//! ([`golden`]), plus small synthetic scenes ([`synthetic`]).
 
 pub mod adapter;
 pub mod golden;
@@ -10,3 +10,4 @@ pub mod metrics;
 pub mod png_io;
 pub mod reference;
 pub mod scenes;
+pub mod synthetic;
