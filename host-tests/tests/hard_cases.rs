@@ -604,6 +604,7 @@ fn coordinates_at_the_fixed_point_limits() {
                 shading,
                 depth: DepthTest::Less,
                 cull: Cull::None,
+                ..DrawMode::default()
             };
             let (_g, n) = draw_guarded(&clip, t, mode, W, H);
             println!("limits {projection:?} {shading:?}: {n} pixels");
@@ -1042,6 +1043,7 @@ fn degenerate_triangles_draw_nothing_in_any_mode() {
                         shading,
                         depth,
                         cull: Cull::None,
+                        ..DrawMode::default()
                     };
                     let (g, n) = draw_guarded(&clip, t, mode, W, H);
                     assert_eq!(n, 0, "{mode:?}");

@@ -122,6 +122,7 @@ fn any_mode() -> impl Strategy<Value = DrawMode> {
                 shading,
                 depth,
                 cull,
+                ..DrawMode::default()
             },
         )
 }
