@@ -733,7 +733,6 @@ fn summary(rows: &[Row]) -> String {
 /// leave its range and wrap with Repeat, and for steep triangles the
 /// hyperbola is far from its chord there).
 #[test]
-#[ignore = "core bug: Subdivided extrapolates its last segment end one pixel past the span (src/pipeline/interp.rs SubdivInterp::start/segment)"]
 fn subdivided_never_worse_than_its_endpoints() {
     let mut bad = Vec::new();
     for sc in [

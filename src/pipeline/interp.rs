@@ -236,12 +236,20 @@ impl SubdivInterp {
     #[inline(always)]
     fn segment(&mut self, seg: u32) {
         self.seg_start = self.next;
-        self.next.add_scaled(&self.d, seg as i32);
+        // The span's last segment ends exactly on its last pixel (never outside the
+        // triangle, where the hyperbola can be far from its chord); the others end on the
+        // first pixel of the next segment.
+        let reach = if self.left == seg && seg > 1 {
+            seg - 1
+        } else {
+            seg
+        };
+        self.next.add_scaled(&self.d, reach as i32);
         self.end = self.next.resolve();
-        let k = seg.min(63);
+        let k = reach.min(63);
         let slope = |a: i32, b: i32| -> i32 {
             let diff = b.wrapping_sub(a);
-            if seg == 1 << self.log2_n {
+            if reach == 1 << self.log2_n {
                 diff >> self.log2_n
             } else {
                 ((i64::from(diff) * i64::from(INV_SMALL[k as usize])) >> 16) as i32
