@@ -7,7 +7,7 @@
 //!                                    # baseline (texture, mesh and draw set-up only)
 //! ```
 //!
-//! Prints `pixels <drawn pixels summed over the frames>` on stdout. Modes are
+//! Prints `frames <N>` and `pixels <drawn pixels summed over the frames>` on stdout. Modes are
 //! `{lit|unlit}-{nearest|bilinear|bilinearfast}-{affine|exact|subN}`, for example
 //! `cube/lit-bilinear-exact` or `floor/unlit-nearest-sub16`.
 
@@ -44,6 +44,7 @@ fn main() -> ExitCode {
         h.rotate_left(5)
             ^ u32::from(embedded_graphics_core::pixelcolor::IntoStorage::into_storage(*p))
     });
+    println!("frames {frames}");
     println!("pixels {pixels}");
     println!("checksum {checksum:08x}");
     ExitCode::SUCCESS
