@@ -59,6 +59,11 @@ impl FromMode for Nearest {
         Nearest
     }
 }
+impl FromMode for crate::texture::BilinearFast {
+    fn from_mode(_: &DrawMode) -> Self {
+        crate::texture::BilinearFast
+    }
+}
 impl FromMode for Bilinear {
     fn from_mode(_: &DrawMode) -> Self {
         Bilinear

@@ -49,15 +49,20 @@ fn q8(c: i32) -> u16 {
     (c >> 16).clamp(0, i32::from(COLOR_ONE)) as u16
 }
 
+/// The filtered texel at `f`. A function, not a closure in `shade`: LLVM did not inline
+/// the closure (a call, register saves and reloads of the texture fields per pixel).
+#[inline(always)]
+fn texel<M: Stages>(ctx: &SpanCtx<'_, M>, f: &Frag, lambda: i32) -> u16 {
+    let k = ctx.setup.uv_shift;
+    let u = unshift(f.u, k, ctx.periodic[0]);
+    let v = unshift(f.v, k, ctx.periodic[1]);
+    ctx.sampler
+        .sample_mip(ctx.tex, ctx.wu, ctx.wv, u, v, lambda)
+}
+
 #[inline(always)]
 fn shade<M: Stages>(ctx: &SpanCtx<'_, M>, f: Frag, lambda: i32) -> u16 {
-    let texel = || {
-        let k = ctx.setup.uv_shift;
-        let u = unshift(f.u, k, ctx.periodic[0]);
-        let v = unshift(f.v, k, ctx.periodic[1]);
-        ctx.sampler
-            .sample_mip(ctx.tex, ctx.wu, ctx.wv, u, v, lambda)
-    };
+    let texel = || texel(ctx, &f, lambda);
     match M::S::KIND {
         Shading::Replace => texel(),
         Shading::ModulateIntensity => modulate_scalar(texel(), q8(f.c[0])),

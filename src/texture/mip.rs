@@ -27,7 +27,7 @@
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 
-use super::sample::{Bilinear, Filter, Nearest, Sampler};
+use super::sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 use super::texture::{Texture, MAX_LOG2_SIZE};
 use super::wrap::WrapMode;
 use crate::Error;
@@ -296,6 +296,23 @@ impl TexSampler for Bilinear {
         _: i32,
     ) -> u16 {
         Bilinear::sample(t.base(), wu, wv, u, v)
+    }
+}
+
+impl TexSampler for BilinearFast {
+    const LOD: bool = false;
+    const FILTER: Filter = Filter::Bilinear;
+    #[inline(always)]
+    fn sample_mip<WU: WrapMode, WV: WrapMode>(
+        self,
+        t: &MipTexture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        _: i32,
+    ) -> u16 {
+        BilinearFast::sample(t.base(), wu, wv, u, v)
     }
 }
 
