@@ -394,7 +394,7 @@ fn main() {
          pixels | ns/pixel | x86 instr/pixel |\n|---|---|---|---|",
         std::env::consts::ARCH
     );
-    for i in 0..CONFIGS.len() {
+    for (i, cfg) in CONFIGS.iter().enumerate() {
         bench.run(i, 5);
         let (wr, times) = bench.run(i, 41);
         let ns = median(times) / f64::from(wr);
@@ -406,8 +406,8 @@ fn main() {
         } else {
             "-".into()
         };
-        eprintln!("{}: {ns:.2} ns/px, {ir} instr/px", CONFIGS[i].0);
-        let _ = writeln!(md, "| {} | {wr} | {ns:.2} | {ir} |", CONFIGS[i].0);
+        eprintln!("{}: {ns:.2} ns/px, {ir} instr/px", cfg.0);
+        let _ = writeln!(md, "| {} | {wr} | {ns:.2} | {ir} |", cfg.0);
     }
 
     // (c) temporal
