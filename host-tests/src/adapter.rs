@@ -9,10 +9,14 @@ use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::target::Frame;
-use fixel::texture::{Filter, Texture, Wrap};
+use fixel::texture::mip::{chain_len, full_levels};
+use fixel::texture::{
+    generate_mips, Filter, Lod, LodGranularity, MipFilter, MipTexture, Texture, Wrap,
+};
 
 use crate::reference::{
-    RefCull, RefFilter, RefMode, RefProjection, RefShading, RefTexture, RefTriangle, RefWrap,
+    RefCull, RefFilter, RefLod, RefMip, RefMode, RefProjection, RefShading, RefTexture,
+    RefTriangle, RefWrap,
 };
 
 /// A frame rendered by fixel, with which pixels it covered.
@@ -55,8 +59,30 @@ pub fn texels(t: &RefTexture) -> Vec<Rgb565> {
         .collect()
 }
 
+/// fixel's level-of-detail controls for the reference's (Q8.8, rounded; infinite clamps
+/// become fixel's defaults), at granularity `g`.
+pub fn lod(l: &RefLod, g: LodGranularity) -> Lod {
+    let d = Lod::default();
+    let q = |x: f64, inf: i32| {
+        if x.is_finite() {
+            (x * 256.0).round() as i32
+        } else {
+            inf
+        }
+    };
+    Lod {
+        bias: q(l.bias, 0),
+        min: q(l.min, d.min),
+        max: q(l.max, d.max),
+        granularity: g,
+    }
+}
+
 /// fixel's mode for a reference mode. `intensity` picks the one-interpolant
 /// [`Shading::ModulateIntensity`] for `Modulate` (valid when vertex colours are grey).
+/// The LOD is computed per pixel. fixel's [`DrawMode`] has one filter for magnification and
+/// within levels: a separate `m.mag` is ignored here (the typed
+/// [`Mipmapped`](fixel::texture::Mipmapped) samplers choose it separately).
 pub fn draw_mode(m: &RefMode, projection: Option<Projection>, intensity: bool) -> DrawMode {
     let wrap = |w: RefWrap| match w {
         RefWrap::Repeat => Wrap::Repeat,
@@ -65,8 +91,12 @@ pub fn draw_mode(m: &RefMode, projection: Option<Projection>, intensity: bool) -
         RefWrap::ClampToBorder => Wrap::ClampToBorder,
     };
     DrawMode {
-        mip: fixel::texture::MipFilter::None,
-        lod: fixel::texture::Lod::default(),
+        mip: match m.mip {
+            RefMip::None => MipFilter::None,
+            RefMip::Nearest => MipFilter::Nearest,
+            RefMip::Linear => MipFilter::Linear,
+        },
+        lod: lod(&m.lod, LodGranularity::Pixel),
         projection: projection.unwrap_or(match m.projection {
             RefProjection::Affine => Projection::Affine,
             RefProjection::Perspective => Projection::Exact,
@@ -105,7 +135,6 @@ pub fn render(
     width: u32,
     height: u32,
 ) -> FixelImage {
-    let n = (width * height) as usize;
     let texels_vec = texture.map(texels);
     let tex = match (&texels_vec, texture) {
         (Some(t), Some(rt)) => Some(
@@ -115,6 +144,48 @@ pub fn render(
         ),
         _ => None,
     };
+    render_tex(tris, tex.map(MipTexture::single), mode, width, height)
+}
+
+/// fixel's run-time mip chain of `levels` levels (`None`: full) for a reference texture:
+/// level 0 copied, the rest filled by [`generate_mips`]. Returns the contiguous chain.
+pub fn mip_chain(t: &RefTexture, levels: Option<u32>) -> Vec<Rgb565> {
+    let levels = levels.unwrap_or_else(|| full_levels(t.width, t.height));
+    let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(t.width, t.height, levels)];
+    chain[..t.texels.len()].copy_from_slice(&texels(t));
+    generate_mips(&mut chain, t.width, t.height, levels).expect("valid chain");
+    chain
+}
+
+/// Like [`render`], with a mip chain of `levels` levels (`None`: full) built by fixel's
+/// [`generate_mips`]; `mode.mip` and `mode.lod` select the filtering.
+pub fn render_mip(
+    tris: &[[ClipVertex; 3]],
+    texture: Option<&RefTexture>,
+    levels: Option<u32>,
+    mode: DrawMode,
+    width: u32,
+    height: u32,
+) -> FixelImage {
+    let chain = texture.map(|t| (mip_chain(t, levels), t));
+    let tex = chain.as_ref().map(|(c, t)| {
+        let l = levels.unwrap_or_else(|| full_levels(t.width, t.height));
+        MipTexture::new(c, t.width, t.height, l)
+            .expect("valid chain")
+            .with_border(Rgb565::from(RawU16::new(t.border)))
+    });
+    render_tex(tris, tex, mode, width, height)
+}
+
+/// Like [`render`] with fixel's texture (plain or mipmapped) given directly.
+pub fn render_tex(
+    tris: &[[ClipVertex; 3]],
+    tex: Option<MipTexture<'_>>,
+    mode: DrawMode,
+    width: u32,
+    height: u32,
+) -> FixelImage {
+    let n = (width * height) as usize;
     let vp = Viewport::new(0, 0, width, height).expect("viewport");
     let mut color = vec![Rgb565::new(0, 0, 0); n];
     let mut depth = vec![0u16; n];
@@ -123,7 +194,7 @@ pub fn render(
         .with_depth(&mut depth)
         .unwrap();
     frame.clear(Rgb565::new(0, 0, 0));
-    let draw = Draw::dynamic(mode, tex, vp).expect("draw mode");
+    let draw = Draw::dynamic_mip(mode, tex, vp).expect("draw mode");
     let written = draw.clip_triangles(tris, &mut frame);
     let pixels: Vec<u16> = color
         .iter()

@@ -1,7 +1,10 @@
 //! `cargo xtask`: repository chores for fixel (CI, golden blessing, demo renders).
 //!
-//! Deliberately dependency-free so it builds in a second: argument parsing is
-//! done by hand and every tool is driven through `std::process::Command`.
+//! Nearly dependency-free so it builds in seconds: argument parsing is done by
+//! hand and every tool is driven through `std::process::Command`; the one
+//! dependency is the `png` decoder for `bake`.
+
+mod bake;
 
 use std::env;
 use std::ffi::OsString;
@@ -54,7 +57,14 @@ COMMANDS:
     mcu         Build/flash the MCU demo            [not implemented yet, issue 5]
     size        Report code/RAM size per target     [not implemented yet, issue 5]
     report      Generate the quality/perf report    [not implemented yet, issue 6]
-    bake        Bake textures/meshes into Rust data [not implemented yet, issue 4]
+    bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]
+                Bake a power-of-two PNG into a Rust source file: RGB565 texels
+                (rounded to nearest) and their mip chain (2x2 box filter, the
+                same as fixel's generate_mips) as `pub static NAME_TEXELS`,
+                with NAME_WIDTH, NAME_HEIGHT, NAME_LEVELS. NAME defaults to the
+                file stem in upper case; --levels defaults to full (down to
+                1x1); --rgb565 is the path of the colour type in the output
+                (default embedded_graphics_core::pixelcolor::Rgb565)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -85,7 +95,13 @@ fn main() -> ExitCode {
         "count" => count(rest),
         "mcu" | "size" => stub(cmd, 5),
         "report" => stub(cmd, 6),
-        "bake" => stub(cmd, 4),
+        "bake" => match bake::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cargo xtask bake: {e}");
+                ExitCode::from(1)
+            }
+        },
         other => usage_error(&format!("unknown command `{other}`")),
     }
 }

@@ -51,13 +51,47 @@ pub enum RefProjection {
     Perspective,
 }
 
-/// Texture filter (magnification and minification alike; no mipmaps).
+/// Texture filter within one level (GL_NEAREST / GL_LINEAR).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RefFilter {
     /// GL_NEAREST.
     Nearest,
     /// GL_LINEAR.
     Bilinear,
+}
+
+/// Filtering between mip levels (GL ES 3.0 §3.8.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RefMip {
+    /// No mipmapping: the minification filter samples level 0.
+    None,
+    /// `*_MIPMAP_NEAREST`: the nearest level.
+    Nearest,
+    /// `*_MIPMAP_LINEAR`: the two nearest levels blended by `frac(lambda)`.
+    Linear,
+}
+
+/// Level-of-detail bias and clamps, in levels (f64):
+/// `lambda' = clamp(log2(rho) + bias, min, max)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RefLod {
+    /// Added to `lambda`.
+    pub bias: f64,
+    /// Smallest `lambda'`.
+    pub min: f64,
+    /// Largest `lambda'`.
+    pub max: f64,
+}
+
+impl Default for RefLod {
+    /// No bias, no clamp.
+    fn default() -> Self {
+        RefLod {
+            bias: 0.0,
+            min: f64::NEG_INFINITY,
+            max: f64::INFINITY,
+        }
+    }
 }
 
 /// Texture wrap mode, applied to integer texel indices (GL ES 3.0 §3.8.10).
@@ -102,8 +136,15 @@ pub enum RefCull {
 pub struct RefMode {
     /// Attribute interpolation.
     pub projection: RefProjection,
-    /// Texture filter.
+    /// Texture filter: the minification filter within a mip level, and the
+    /// magnification filter unless `mag` says otherwise.
     pub filter: RefFilter,
+    /// Magnification filter when it differs from `filter` (`None`: `filter`).
+    pub mag: Option<RefFilter>,
+    /// Filtering between mip levels (`RefMip::None`: level 0 only).
+    pub mip: RefMip,
+    /// Level-of-detail bias and clamps (mipmapped or with a separate `mag`).
+    pub lod: RefLod,
     /// Wrap along s.
     pub wrap_u: RefWrap,
     /// Wrap along t.
@@ -123,6 +164,9 @@ impl Default for RefMode {
         RefMode {
             projection: RefProjection::Perspective,
             filter: RefFilter::Bilinear,
+            mag: None,
+            mip: RefMip::None,
+            lod: RefLod::default(),
             wrap_u: RefWrap::Repeat,
             wrap_v: RefWrap::Repeat,
             depth_test: true,

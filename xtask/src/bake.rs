@@ -1,0 +1,294 @@
+//! `cargo xtask bake`: a PNG to a Rust source file of `static` RGB565 texels with their
+//! mip chain, ready to live in flash.
+//!
+//! * Pixels: 8-bit RGB after expanding palettes and grey and stripping 16-bit samples;
+//!   alpha is ignored. RGB565 by rounding to nearest, `(c * max + 127) / 255` (max 31, 63,
+//!   31): the shared conversion of the benchmark textures.
+//! * Chain: fixel's layout (level `k` is `max(1, w >> k) x max(1, h >> k)`, contiguous,
+//!   level 0 first) and fixel's `generate_mips` rule: per channel `(a + b + c + d + 2) >> 2`
+//!   over the 2 x 2 block, `(a + b + 1) >> 1` where a side is already 1.
+//! * Sides must be powers of two up to 4096.
+
+use std::fmt::Write as _;
+use std::fs::File;
+use std::io::BufReader;
+use std::path::Path;
+
+/// Options of one bake.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BakeOpts {
+    /// Prefix of the generated items (`NAME_TEXELS`, ...), upper case.
+    pub name: String,
+    /// Number of levels (`None`: down to 1 x 1).
+    pub levels: Option<u32>,
+    /// Path of the RGB565 type in the generated code.
+    pub rgb565: String,
+}
+
+/// Default item prefix for an input file: its stem in upper case, other characters `_`.
+pub fn default_name(input: &Path) -> String {
+    let stem = input
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let mut n: String = stem
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_uppercase()
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if n.is_empty() || n.starts_with(|c: char| c.is_ascii_digit()) {
+        n.insert_str(0, "TEX_");
+    }
+    n
+}
+
+/// Reads a PNG as `(width, height, RGB8 pixels)`.
+pub fn read_rgb8(path: &Path) -> Result<(u32, u32, Vec<[u8; 3]>), String> {
+    let file = File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut dec = png::Decoder::new(BufReader::new(file));
+    dec.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = dec
+        .read_info()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| format!("{}: too large", path.display()))?;
+    let mut buf = vec![0; size];
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let stride = match info.color_type {
+        png::ColorType::Rgb => 3,
+        png::ColorType::Rgba => 4,
+        png::ColorType::Grayscale => 1,
+        png::ColorType::GrayscaleAlpha => 2,
+        png::ColorType::Indexed => return Err(format!("{}: unexpanded palette", path.display())),
+    };
+    let (w, h) = (info.width, info.height);
+    let mut px = Vec::with_capacity((w * h) as usize);
+    for row in buf[..info.buffer_size()]
+        .chunks(info.line_size)
+        .take(h as usize)
+    {
+        for p in row[..stride * w as usize].chunks(stride) {
+            px.push(if stride >= 3 {
+                [p[0], p[1], p[2]]
+            } else {
+                [p[0]; 3]
+            });
+        }
+    }
+    Ok((w, h, px))
+}
+
+/// 8-bit RGB to RGB565 channels `[r5, g6, b5]`, rounded to nearest.
+pub fn to_565(c: [u8; 3]) -> [u8; 3] {
+    let q = |v: u8, max: u32| ((u32::from(v) * max + 127) / 255) as u8;
+    [q(c[0], 31), q(c[1], 63), q(c[2], 31)]
+}
+
+/// Levels of a full chain: `log2(max(w, h)) + 1`.
+pub fn full_levels(w: u32, h: u32) -> u32 {
+    32 - w.max(h).leading_zeros()
+}
+
+/// The mip chain of `levels` levels from level 0 (`[r5, g6, b5]` texels), contiguous.
+pub fn chain(base: &[[u8; 3]], w: u32, h: u32, levels: u32) -> Vec<[u8; 3]> {
+    let mut out = base.to_vec();
+    let (mut sw, mut sh, mut off) = (w, h, 0usize);
+    for _ in 1..levels {
+        let (dw, dh) = ((sw / 2).max(1), (sh / 2).max(1));
+        for j in 0..dh {
+            for i in 0..dw {
+                let xs: &[u32] = if sw > 1 { &[2 * i, 2 * i + 1] } else { &[0] };
+                let ys: &[u32] = if sh > 1 { &[2 * j, 2 * j + 1] } else { &[0] };
+                let n = (xs.len() * ys.len()) as u32;
+                let mut sum = [0u32; 3];
+                for &y in ys {
+                    for &x in xs {
+                        let t = out[off + (y * sw + x) as usize];
+                        for c in 0..3 {
+                            sum[c] += u32::from(t[c]);
+                        }
+                    }
+                }
+                out.push(sum.map(|s| ((s + n / 2) / n) as u8));
+            }
+        }
+        off += (sw * sh) as usize;
+        (sw, sh) = (dw, dh);
+    }
+    out
+}
+
+/// The generated Rust source for a `w x h` image (`[r5, g6, b5]` texels).
+pub fn source(base: &[[u8; 3]], w: u32, h: u32, input: &str, o: &BakeOpts) -> String {
+    let levels = o.levels.unwrap_or_else(|| full_levels(w, h));
+    let texels = chain(base, w, h, levels);
+    let n = &o.name;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "// Generated by `cargo xtask bake {input}` (fixel issue 4). Do not edit.\n\
+         //\n\
+         // {w} x {h} RGB565 texture with {levels} mip levels ({} texels), contiguous, level 0\n\
+         // first; level k is max(1, w >> k) x max(1, h >> k), made with a 2 x 2 box filter.\n\
+         // View it with `fixel::texture::MipTexture::new(&{n}_TEXELS, {n}_WIDTH, {n}_HEIGHT,\n\
+         // {n}_LEVELS)`.\n",
+        texels.len()
+    );
+    let _ = writeln!(s, "/// Width of level 0 of `{n}_TEXELS`, in texels.");
+    let _ = writeln!(s, "pub const {n}_WIDTH: u32 = {w};");
+    let _ = writeln!(s, "/// Height of level 0 of `{n}_TEXELS`, in texels.");
+    let _ = writeln!(s, "pub const {n}_HEIGHT: u32 = {h};");
+    let _ = writeln!(s, "/// Number of mip levels in `{n}_TEXELS`.");
+    let _ = writeln!(s, "pub const {n}_LEVELS: u32 = {levels};");
+    let _ = writeln!(
+        s,
+        "/// The texels of `{input}` and its mip chain ({w} x {h}, {levels} levels), RGB565."
+    );
+    let _ = writeln!(
+        s,
+        "pub static {n}_TEXELS: [{t}; {len}] = [",
+        t = o.rgb565,
+        len = texels.len()
+    );
+    for t in &texels {
+        let _ = writeln!(s, "    {}::new({}, {}, {}),", o.rgb565, t[0], t[1], t[2]);
+    }
+    s.push_str("];\n");
+    s
+}
+
+/// Parses `bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]`
+/// and bakes.
+pub fn run(args: &[String]) -> Result<(), String> {
+    let mut pos = vec![];
+    let mut name = None;
+    let mut levels = None;
+    let mut rgb565 = "embedded_graphics_core::pixelcolor::Rgb565".to_string();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut val = |flag: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| format!("{flag} needs a value"))
+        };
+        match a.as_str() {
+            "--name" => name = Some(val("--name")?),
+            "--levels" => {
+                let v = val("--levels")?;
+                levels = match v.as_str() {
+                    "full" => None,
+                    n => Some(
+                        n.parse::<u32>()
+                            .map_err(|_| format!("--levels: `{n}` is not a number or `full`"))?,
+                    ),
+                };
+            }
+            "--rgb565" => rgb565 = val("--rgb565")?,
+            f if f.starts_with("--") => return Err(format!("unknown flag `{f}`")),
+            p => pos.push(p.to_string()),
+        }
+    }
+    let [input, output] = pos.as_slice() else {
+        return Err(
+            "usage: cargo xtask bake <input.png> <output.rs> [--name NAME] \
+                    [--levels N|full] [--rgb565 PATH]"
+                .into(),
+        );
+    };
+    let (inp, outp) = (Path::new(input), Path::new(output));
+    let (w, h, px) = read_rgb8(inp)?;
+    let pow2 = |s: u32| s.is_power_of_two() && s <= 4096;
+    if !pow2(w) || !pow2(h) {
+        return Err(format!(
+            "{input}: {w} x {h}: sides must be powers of two up to 4096"
+        ));
+    }
+    let full = full_levels(w, h);
+    if let Some(l) = levels {
+        if l == 0 || l > full {
+            return Err(format!("--levels {l}: a {w} x {h} chain has 1..={full}"));
+        }
+    }
+    let name = name.unwrap_or_else(|| default_name(inp));
+    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(format!("--name `{name}`: use letters, digits and `_`"));
+    }
+    let o = BakeOpts {
+        name,
+        levels,
+        rgb565,
+    };
+    let base: Vec<[u8; 3]> = px.into_iter().map(to_565).collect();
+    let shown = inp
+        .file_name()
+        .map_or(input.clone(), |f| f.to_string_lossy().into_owned());
+    let src = source(&base, w, h, &shown, &o);
+    if let Some(dir) = outp.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    }
+    std::fs::write(outp, src).map_err(|e| format!("{output}: {e}"))?;
+    let levels = o.levels.unwrap_or(full);
+    println!(
+        "baked {input} ({w} x {h}, {levels} levels) into {output} as {}_TEXELS",
+        o.name
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding_and_box_filter() {
+        assert_eq!(to_565([255, 255, 255]), [31, 63, 31]);
+        assert_eq!(to_565([0, 0, 0]), [0, 0, 0]);
+        assert_eq!(to_565([128, 128, 128]), [16, 32, 16]); // 128*31+127 = 4095 -> 16
+        assert_eq!(full_levels(64, 64), 7);
+        assert_eq!(full_levels(256, 128), 9);
+        assert_eq!(full_levels(1, 8), 4);
+        // 4 x 2 -> 2 x 1 -> 1 x 1 (as in fixel's own unit test).
+        let base = [
+            [4, 0, 0],
+            [8, 0, 0],
+            [0, 4, 0],
+            [0, 8, 0],
+            [4, 0, 0],
+            [8, 0, 1],
+            [0, 4, 0],
+            [0, 8, 3],
+        ];
+        let c = chain(&base, 4, 2, 3);
+        assert_eq!(&c[8..], &[[6, 0, 0], [0, 6, 1], [3, 3, 1]]);
+        assert_eq!(default_name(Path::new("a/brick-wall.png")), "BRICK_WALL");
+        assert_eq!(default_name(Path::new("8x8.png")), "TEX_8X8");
+    }
+
+    /// The committed example bake is what `bake` produces today.
+    #[test]
+    fn committed_bake_is_current() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../host-tests/tests/baked");
+        let (w, h, px) = read_rgb8(&root.join("checker.png")).unwrap();
+        let base: Vec<[u8; 3]> = px.into_iter().map(to_565).collect();
+        let o = BakeOpts {
+            name: "CHECKER".into(),
+            levels: None,
+            rgb565: "embedded_graphics_core::pixelcolor::Rgb565".into(),
+        };
+        let want = source(&base, w, h, "checker.png", &o);
+        let got = std::fs::read_to_string(root.join("checker.rs")).unwrap();
+        assert!(
+            got == want,
+            "host-tests/tests/baked/checker.rs is stale: run `cargo xtask bake \
+             host-tests/tests/baked/checker.png host-tests/tests/baked/checker.rs --name CHECKER`"
+        );
+    }
+}
