@@ -80,9 +80,8 @@ pub fn lod(l: &RefLod, g: LodGranularity) -> Lod {
 
 /// fixel's mode for a reference mode. `intensity` picks the one-interpolant
 /// [`Shading::ModulateIntensity`] for `Modulate` (valid when vertex colours are grey).
-/// The LOD is computed per pixel. fixel's [`DrawMode`] has one filter for magnification and
-/// within levels: a separate `m.mag` is ignored here (the typed
-/// [`Mipmapped`](fixel::texture::Mipmapped) samplers choose it separately).
+/// The LOD is computed per pixel; a separate magnification filter `m.mag` maps to
+/// [`DrawMode::mag_filter`].
 pub fn draw_mode(m: &RefMode, projection: Option<Projection>, intensity: bool) -> DrawMode {
     let wrap = |w: RefWrap| match w {
         RefWrap::Repeat => Wrap::Repeat,
@@ -90,7 +89,12 @@ pub fn draw_mode(m: &RefMode, projection: Option<Projection>, intensity: bool) -
         RefWrap::ClampToEdge => Wrap::ClampToEdge,
         RefWrap::ClampToBorder => Wrap::ClampToBorder,
     };
+    let filter = |f: RefFilter| match f {
+        RefFilter::Nearest => Filter::Nearest,
+        RefFilter::Bilinear => Filter::Bilinear,
+    };
     DrawMode {
+        mag_filter: m.mag.map(filter),
         mip: match m.mip {
             RefMip::None => MipFilter::None,
             RefMip::Nearest => MipFilter::Nearest,

@@ -32,6 +32,7 @@ fn flat_mode() -> RefMode {
         depth_test: false,
         shading: RefShading::Flat([1.0; 3]),
         cull: RefCull::None,
+        ..RefMode::default()
     }
 }
 
@@ -655,6 +656,7 @@ fn tex_mode(p: RefProjection, f: RefFilter, wrap: RefWrap) -> RefMode {
         depth_test: false,
         shading: RefShading::Replace,
         cull: RefCull::None,
+        ..RefMode::default()
     }
 }
 

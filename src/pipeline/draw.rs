@@ -78,7 +78,7 @@ impl FromMode for DynMip {
     fn from_mode(mode: &DrawMode) -> Self {
         DynMip {
             min: mode.filter,
-            mag: mode.filter,
+            mag: mode.mag_filter.unwrap_or(mode.filter),
             between: mode.mip,
         }
     }
@@ -164,6 +164,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         let mode = DrawMode {
             projection,
             filter: <M::F as TexSampler>::FILTER,
+            mag_filter: None,
             mip: if <M::F as TexSampler>::LOD {
                 MipFilter::Linear
             } else {
@@ -428,11 +429,18 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
             }
         };
     }
+    // A magnification filter other than the minification one needs the level of detail,
+    // so it goes through the mipmapping sampler even without mip levels.
+    let same_mag = mode.mag_filter.is_none_or(|m| m == mode.filter);
     macro_rules! by_filter {
         ($p:ty) => {
             match (mode.mip, mode.filter) {
-                (MipFilter::None, crate::texture::Filter::Nearest) => by_shading!($p, Nearest),
-                (MipFilter::None, crate::texture::Filter::Bilinear) => by_shading!($p, Bilinear),
+                (MipFilter::None, crate::texture::Filter::Nearest) if same_mag => {
+                    by_shading!($p, Nearest)
+                }
+                (MipFilter::None, crate::texture::Filter::Bilinear) if same_mag => {
+                    by_shading!($p, Bilinear)
+                }
                 _ => by_shading!($p, DynMip),
             }
         };

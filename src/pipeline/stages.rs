@@ -75,8 +75,11 @@ pub enum DepthTest {
 pub struct DrawMode {
     /// Interpolation of texture coordinates and colours.
     pub projection: Projection,
-    /// Magnification filter, and the filter within a mip level.
+    /// Minification filter within a mip level (and the magnification filter unless
+    /// `mag_filter` says otherwise).
     pub filter: Filter,
+    /// Magnification filter when it differs from `filter` (GL sets the two separately).
+    pub mag_filter: Option<Filter>,
     /// Filtering between mip levels (`None`: no mipmapping, level 0 only).
     pub mip: MipFilter,
     /// Level-of-detail bias, clamps and granularity (used when `mip` is not `None`).
