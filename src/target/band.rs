@@ -1,0 +1,264 @@
+//! Band rendering: a frame drawn as horizontal bands through one small colour (+ depth)
+//! buffer, for parts whose RAM cannot hold a whole frame (320 x 240 RGB565 is 150 KiB).
+//!
+//! Triangles are clipped, projected and *binned once* per frame: [`BandRenderer::render`]
+//! runs the scene's geometry a single time, storing each screen triangle with the index of
+//! its draw and its row range in caller-provided storage; then each band draws only the
+//! binned triangles that overlap it and flushes. The per-triangle raster set-up is redone in
+//! each band a triangle touches (a few `i64` divisions), the geometry is not.
+//!
+//! When the bin storage is too small for the frame, the renderer falls back to running the
+//! geometry once per band (same pixels, more time) and says so in [`BandStats`].
+//!
+//! A band is a [`Frame`] that holds rows `y0..y0 + rows`, and the raster set-up depends only
+//! on the viewport, never on the band, so a frame drawn in bands is bit-identical to the
+//! frame drawn whole (tested).
+
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::geometry::{Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
+
+use super::{Frame, RenderTarget};
+use crate::color::TargetColor;
+use crate::geometry::ScreenTriangle;
+use crate::pipeline::Draw;
+use crate::raster::triangle::first_row_at_or_below;
+use crate::Error;
+
+/// One binned triangle: screen vertices, the draw it belongs to, and its pixel rows.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Binned {
+    tri: ScreenTriangle,
+    draw: u8,
+    rows: (i16, i16),
+}
+
+/// What a frame cost, for reports.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BandStats {
+    /// Bands drawn.
+    pub bands: u32,
+    /// Screen triangles binned (after clipping and culling).
+    pub triangles: u32,
+    /// True when the bins overflowed and the geometry ran once per band instead.
+    pub rewalked: bool,
+    /// Pixels written (with a depth test: that passed it).
+    pub pixels: u32,
+}
+
+/// Receives screen triangles from the scene's geometry pass.
+#[derive(Debug)]
+pub struct TriangleSink<'s, 'f, 'a, C: TargetColor> {
+    mode: SinkMode<'s, 'f, 'a, C>,
+}
+
+#[derive(Debug)]
+enum SinkMode<'s, 'f, 'a, C: TargetColor> {
+    Bin {
+        bins: &'s mut [Binned],
+        len: usize,
+        overflow: bool,
+    },
+    Immediate {
+        draws: &'s [&'s Draw<'a, C>],
+        band: &'s mut Frame<'f, C>,
+        pixels: u32,
+    },
+}
+
+impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
+    /// Hands over one screen triangle of draw number `draw` (an index into the draws given
+    /// to [`BandRenderer::render`]).
+    pub fn push(&mut self, draw: u8, tri: &ScreenTriangle) {
+        match &mut self.mode {
+            SinkMode::Bin {
+                bins,
+                len,
+                overflow,
+            } => {
+                if let Some(slot) = bins.get_mut(*len) {
+                    let top = tri[0].y.min(tri[1].y).min(tri[2].y);
+                    let bot = tri[0].y.max(tri[1].y).max(tri[2].y);
+                    let r0 = first_row_at_or_below(top).clamp(i16::MIN.into(), i16::MAX.into());
+                    let r1 = first_row_at_or_below(bot).clamp(i16::MIN.into(), i16::MAX.into());
+                    *slot = Binned {
+                        tri: *tri,
+                        draw,
+                        rows: (r0 as i16, r1 as i16),
+                    };
+                    *len += 1;
+                } else {
+                    *overflow = true;
+                }
+            }
+            SinkMode::Immediate {
+                draws,
+                band,
+                pixels,
+            } => {
+                if let Some(d) = draws.get(usize::from(draw)) {
+                    *pixels += d.screen_triangle(tri, *band);
+                }
+            }
+        }
+    }
+}
+
+/// Draws frames band by band through a small buffer.
+#[derive(Debug)]
+pub struct BandRenderer<'b, C> {
+    color: &'b mut [C],
+    depth: Option<&'b mut [u16]>,
+    width: u32,
+    rows: u32,
+    height: u32,
+}
+
+impl<'b, C: TargetColor> BandRenderer<'b, C> {
+    /// Bands of `rows` rows of a `width` x `height` frame, through `color` (at least
+    /// `width * rows` long).
+    ///
+    /// ```
+    /// use fixel::target::BandRenderer;
+    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// let mut buf = [Rgb565::default(); 320 * 16];
+    /// assert!(BandRenderer::new(&mut buf, 320, 16, 240).is_ok());
+    /// let mut buf = [Rgb565::default(); 320 * 16];
+    /// assert!(BandRenderer::new(&mut buf, 320, 17, 240).is_err()); // band taller than buffer
+    /// ```
+    pub fn new(color: &'b mut [C], width: u32, rows: u32, height: u32) -> Result<Self, Error> {
+        if width == 0 || width > 4096 || height == 0 || height > 4096 {
+            return Err(Error::BadSize(if width == 0 || width > 4096 {
+                width
+            } else {
+                height
+            }));
+        }
+        let capacity = color.len() / width as usize;
+        if rows == 0 || rows as usize > capacity {
+            return Err(Error::BandTooTall {
+                rows: rows.min(u32::from(u16::MAX)) as u16,
+                capacity: capacity.min(usize::from(u16::MAX)) as u16,
+            });
+        }
+        Ok(BandRenderer {
+            color,
+            depth: None,
+            width,
+            rows: rows.min(height),
+            height,
+        })
+    }
+
+    /// Adds a depth band (at least `width * rows` long).
+    pub fn with_depth(mut self, depth: &'b mut [u16]) -> Result<Self, Error> {
+        let need = self.width as usize * self.rows as usize;
+        if depth.len() < need {
+            return Err(Error::WrongLength {
+                expected: need,
+                actual: depth.len(),
+            });
+        }
+        self.depth = Some(depth);
+        Ok(self)
+    }
+
+    /// Draws one frame. `geometry` is called with a [`TriangleSink`] and must push every
+    /// screen triangle of the frame (usually via [`Draw::project`]), tagged with the index of
+    /// its draw in `draws`. Each band is cleared to `clear`, drawn and passed to `flush`; the
+    /// first flush error stops the frame and is returned.
+    pub fn render<E>(
+        &mut self,
+        draws: &[&Draw<'_, C>],
+        bins: &mut [Binned],
+        clear: C,
+        mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+        mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+    ) -> Result<BandStats, E> {
+        let mut sink = TriangleSink {
+            mode: SinkMode::Bin {
+                bins,
+                len: 0,
+                overflow: false,
+            },
+        };
+        geometry(&mut sink);
+        let (bins, len, overflow) = match sink.mode {
+            SinkMode::Bin {
+                bins,
+                len,
+                overflow,
+            } => (bins, len, overflow),
+            SinkMode::Immediate { .. } => (&mut [][..], 0, true),
+        };
+        let mut stats = BandStats {
+            rewalked: overflow,
+            triangles: len as u32,
+            ..BandStats::default()
+        };
+        let need = self.width as usize * self.rows as usize;
+        let mut y0 = 0;
+        while y0 < self.height {
+            let rows = self.rows.min(self.height - y0);
+            let n = self.width as usize * rows as usize;
+            let color = &mut self.color[..n.min(need)];
+            let Ok(mut band) = Frame::new(color, self.width, rows) else {
+                break;
+            };
+            if let Some(d) = self.depth.as_deref_mut() {
+                match band.with_depth(&mut d[..n.min(need)]) {
+                    Ok(b) => band = b,
+                    Err(_) => break,
+                }
+            }
+            let mut band = band.at_row(y0);
+            band.clear(clear);
+            if overflow {
+                let mut s = TriangleSink {
+                    mode: SinkMode::Immediate {
+                        draws,
+                        band: &mut band,
+                        pixels: 0,
+                    },
+                };
+                geometry(&mut s);
+                if let SinkMode::Immediate { pixels, .. } = s.mode {
+                    stats.pixels += pixels;
+                }
+            } else {
+                let (r0, r1) = band.row_range();
+                for b in bins[..len].iter() {
+                    if i32::from(b.rows.1) < r0 || i32::from(b.rows.0) > r1 {
+                        continue;
+                    }
+                    if let Some(d) = draws.get(usize::from(b.draw)) {
+                        stats.pixels += d.screen_triangle(&b.tri, &mut band);
+                    }
+                }
+            }
+            flush(&band)?;
+            stats.bands += 1;
+            y0 += rows;
+        }
+        Ok(stats)
+    }
+}
+
+/// Flushes bands to an embedded-graphics [`DrawTarget`] through `fill_contiguous`, so a
+/// display driver can stream a whole band in one transaction.
+#[derive(Debug)]
+pub struct DrawTargetFlush<'d, D>(pub &'d mut D);
+
+impl<D: DrawTarget> DrawTargetFlush<'_, D>
+where
+    D::Color: TargetColor,
+{
+    /// Writes `band` at its rows.
+    pub fn flush(&mut self, band: &Frame<'_, D::Color>) -> Result<(), D::Error> {
+        let area = Rectangle::new(
+            Point::new(0, band.first_row()),
+            Size::new(band.width(), band.height()),
+        );
+        self.0.fill_contiguous(&area, band.pixels().iter().copied())
+    }
+}

@@ -1,0 +1,132 @@
+//! A framebuffer (or band of one) over borrowed slices: colour and optional 16-bit depth.
+
+use super::RenderTarget;
+use crate::color::TargetColor;
+use crate::Error;
+
+/// Value a depth buffer is cleared to: the far plane (depth 1.0 = 65535).
+pub const DEPTH_CLEAR: u16 = u16::MAX;
+
+/// Rows `y0..y0 + height` of a `width`-pixel-wide frame, stored row-major in borrowed
+/// slices. Depth is optional: a scene that does not depth-test needs no depth memory.
+///
+/// ```
+/// use fixel::target::Frame;
+/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// let mut colour = [Rgb565::default(); 320 * 240];
+/// let mut depth = [0u16; 320 * 240];
+/// let frame = Frame::new(&mut colour, 320, 240).unwrap().with_depth(&mut depth).unwrap();
+/// assert_eq!(frame.height(), 240);
+/// // A slice of the wrong length is refused with an error that says so.
+/// let mut short = [Rgb565::default(); 10];
+/// assert!(Frame::new(&mut short, 320, 240).is_err());
+/// ```
+#[derive(Debug)]
+pub struct Frame<'a, C> {
+    color: &'a mut [C],
+    depth: Option<&'a mut [u16]>,
+    width: u32,
+    height: u32,
+    y0: i32,
+}
+
+impl<'a, C: TargetColor> Frame<'a, C> {
+    /// A `width` x `height` frame over `color` (exactly `width * height` long).
+    pub fn new(color: &'a mut [C], width: u32, height: u32) -> Result<Self, Error> {
+        if width == 0 || height == 0 || width > 4096 || height > 4096 {
+            return Err(Error::BadSize(if width == 0 || width > 4096 {
+                width
+            } else {
+                height
+            }));
+        }
+        let expected = width as usize * height as usize;
+        if color.len() != expected {
+            return Err(Error::WrongLength {
+                expected,
+                actual: color.len(),
+            });
+        }
+        Ok(Frame {
+            color,
+            depth: None,
+            width,
+            height,
+            y0: 0,
+        })
+    }
+
+    /// Adds a depth buffer (same size as the colour buffer).
+    pub fn with_depth(mut self, depth: &'a mut [u16]) -> Result<Self, Error> {
+        if depth.len() != self.color.len() {
+            return Err(Error::WrongLength {
+                expected: self.color.len(),
+                actual: depth.len(),
+            });
+        }
+        self.depth = Some(depth);
+        Ok(self)
+    }
+
+    /// Makes this buffer hold frame rows `y0..y0 + height` instead of `0..height`.
+    pub fn at_row(mut self, y0: u32) -> Self {
+        self.y0 = y0.min(i32::MAX as u32 / 2) as i32;
+        self
+    }
+
+    /// Height in rows.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// First frame row held.
+    pub fn first_row(&self) -> i32 {
+        self.y0
+    }
+
+    /// Fills colour with `c` and depth (if any) with [`DEPTH_CLEAR`].
+    pub fn clear(&mut self, c: C) {
+        self.color.fill(c);
+        if let Some(d) = self.depth.as_deref_mut() {
+            d.fill(DEPTH_CLEAR);
+        }
+    }
+
+    /// The colour pixels, row-major.
+    pub fn pixels(&self) -> &[C] {
+        self.color
+    }
+
+    /// The depth values, row-major, if there is a depth buffer.
+    pub fn depth(&self) -> Option<&[u16]> {
+        self.depth.as_deref()
+    }
+}
+
+impl<C: TargetColor> RenderTarget for Frame<'_, C> {
+    type Color = C;
+
+    fn width(&self) -> u32 {
+        self.width
+    }
+
+    fn row_range(&self) -> (i32, i32) {
+        (self.y0, self.y0 + self.height as i32)
+    }
+
+    #[inline]
+    fn row_mut(&mut self, y: i32) -> Option<super::Row<'_, C>> {
+        let r = y.checked_sub(self.y0)?;
+        if r < 0 || r as u32 >= self.height {
+            return None;
+        }
+        let w = self.width as usize;
+        let start = r as usize * w;
+        let color = self.color.get_mut(start..start + w)?;
+        let depth = match self.depth.as_deref_mut() {
+            Some(d) => Some(d.get_mut(start..start + w)?),
+            None => None,
+        };
+        Some((color, depth))
+    }
+}

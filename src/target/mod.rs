@@ -1,0 +1,35 @@
+//! Targets: where spans of finished pixels go.
+//!
+//! The span writer needs rows, not pixels: [`RenderTarget::row_mut`] hands out one colour
+//! row slice (and its depth row, when the target has a depth buffer) per span, so the
+//! per-pixel loop is a plain slice walk with no call per pixel.
+//!
+//! * [`Frame`]: a colour slice (`&mut [C]`) plus an optional 16-bit depth slice, covering
+//!   rows `y0..y0 + height` of a frame. With `y0 = 0` and the full height it is an ordinary
+//!   framebuffer; with fewer rows it is a *band* (see [`band`]).
+//! * [`band`]: draws a frame as horizontal bands through a small buffer and flushes each to
+//!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
+
+pub mod band;
+pub mod frame;
+
+pub use band::{BandRenderer, DrawTargetFlush};
+pub use frame::{Frame, DEPTH_CLEAR};
+
+use crate::color::TargetColor;
+
+/// One row of a target: its colour pixels and, if the target has one, its depth values.
+pub type Row<'r, C> = (&'r mut [C], Option<&'r mut [u16]>);
+
+/// Something the span writer can fill row by row.
+pub trait RenderTarget {
+    /// Pixel colour type.
+    type Color: TargetColor;
+    /// Width in pixels.
+    fn width(&self) -> u32;
+    /// Frame rows this target holds: `first..end` (a band holds a sub-range).
+    fn row_range(&self) -> (i32, i32);
+    /// The colour row `y` (frame coordinates) and its depth row, if the target has a depth
+    /// buffer. `None` when `y` is outside [`row_range`](Self::row_range).
+    fn row_mut(&mut self, y: i32) -> Option<Row<'_, Self::Color>>;
+}
