@@ -8,6 +8,7 @@
 
 pub mod data;
 pub mod scenes;
+pub mod size;
 
 #[cfg(target_arch = "arm")]
 #[doc(hidden)]
