@@ -3,6 +3,8 @@
 //! Deliberately dependency-free so it builds in a second: argument parsing is
 //! done by hand and every tool is driven through `std::process::Command`.
 
+mod mcu;
+
 use std::env;
 use std::ffi::OsString;
 use std::fmt::Write as _;
@@ -41,8 +43,18 @@ COMMANDS:
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
     render      Render the demo scenes (examples `showcase` and `scenes`, release)
-    mcu         Build/flash the MCU demo            [not implemented yet, issue 5]
-    size        Report code/RAM size per target     [not implemented yet, issue 5]
+    mcu [--runs N] [--profile] [--opt-s] [--no-install]
+                Build the firmware examples (examples/firmware) for Cortex-M4F,
+                Cortex-M0+ and RV32IMC, run each scene under QEMU with an
+                instruction-counting plugin (N runs, default 2, must agree),
+                check each frame checksum against the host's, and print
+                instructions/pixel, estimated cycles/pixel, flash and RAM.
+                Installs missing rust targets, llvm-tools and (apt-get)
+                qemu-system-arm/qemu-system-misc/gcc/python3.
+                  --profile  where the instructions go, per function
+                  --opt-s    also report flash at opt-level s
+    size [--opt-s] [--no-install]
+                Flash and RAM of a minimal firmware per feature set
     report      Generate the quality/perf report    [not implemented yet, issue 6]
     bake        Bake textures/meshes into Rust data [not implemented yet, issue 4]
     help        Print this help
@@ -72,7 +84,8 @@ fn main() -> ExitCode {
         "ci" => ci(rest),
         "bless" => no_flags("bless", rest).map_or_else(|e| e, |()| bless()),
         "render" => no_flags("render", rest).map_or_else(|e| e, |()| render()),
-        "mcu" | "size" => stub(cmd, 5),
+        "mcu" => mcu::mcu(rest),
+        "size" => mcu::size(rest),
         "report" => stub(cmd, 6),
         "bake" => stub(cmd, 4),
         other => usage_error(&format!("unknown command `{other}`")),

@@ -49,8 +49,12 @@ fn frame(draw: &Draw<'_, Rgb565>, lit: bool, depth: bool) -> Option<(u32, u32)> 
     let mut bins = [Binned::default(); 4];
     let mesh = Mesh::new(&POSITIONS, Some(&NORMALS), &UVS, &INDICES).ok()?;
     let camera = demo::camera(20);
-    let light = DirectionalLight::default();
-    let light = if lit { Some(&light) } else { None };
+    let light = if lit {
+        Some(DirectionalLight::default())
+    } else {
+        None
+    };
+    let light = light.as_ref();
     let mut bands = BandRenderer::new(&mut color, W, ROWS, H).ok()?;
     if depth {
         bands = bands.with_depth(&mut zbuf).ok()?;
