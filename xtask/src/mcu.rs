@@ -585,6 +585,18 @@ pub fn mcu(rest: &[String]) -> ExitCode {
     if let Err(e) = build_firmware(&[], None) {
         return fail(e);
     }
+    // The real-display example (ST7789 via mipidsi): compile check only.
+    if let Err(e) = run_visible(
+        Command::new("cargo")
+            .current_dir(root().join("examples").join("display"))
+            .args(["build", "--release", "--target", "thumbv7em-none-eabihf"])
+            .env_remove("RUSTFLAGS")
+            .env_remove("CARGO_ENCODED_RUSTFLAGS")
+            .env_remove("CARGO_TARGET_DIR"),
+        "(cd examples/display && cargo build --release --target thumbv7em-none-eabihf)",
+    ) {
+        return fail(e);
+    }
     let expected = match host_expected() {
         Ok(x) => x,
         Err(e) => return fail(e),
