@@ -6,6 +6,8 @@
 
 mod bake;
 
+mod mcu;
+
 use std::env;
 use std::ffi::OsString;
 use std::fmt::Write as _;
@@ -54,8 +56,18 @@ COMMANDS:
                 `callgrind_annotate --auto=yes`).
                   --frames N  frames per case (default: the scene's N)
                   FILTER      only cases whose `scene/mode` id contains it
-    mcu         Build/flash the MCU demo            [not implemented yet, issue 5]
-    size        Report code/RAM size per target     [not implemented yet, issue 5]
+    mcu [--runs N] [--profile] [--opt-s] [--no-install]
+                Build the firmware examples (examples/firmware) for Cortex-M4F,
+                Cortex-M0+ and RV32IMC, run each scene under QEMU with an
+                instruction-counting plugin (N runs, default 2, must agree),
+                check each frame checksum against the host's, and print
+                instructions/pixel, estimated cycles/pixel, flash and RAM.
+                Installs missing rust targets, llvm-tools and (apt-get)
+                qemu-system-arm/qemu-system-misc/gcc/python3.
+                  --profile  where the instructions go, per function
+                  --opt-s    also report flash at opt-level s
+    size [--opt-s] [--no-install]
+                Flash and RAM of a minimal firmware per feature set
     report      Generate the quality/perf report    [not implemented yet, issue 6]
     bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]
                 Bake a power-of-two PNG into a Rust source file: RGB565 texels
@@ -93,7 +105,8 @@ fn main() -> ExitCode {
         "bless" => no_flags("bless", rest).map_or_else(|e| e, |()| bless()),
         "render" => no_flags("render", rest).map_or_else(|e| e, |()| render()),
         "count" => count(rest),
-        "mcu" | "size" => stub(cmd, 5),
+        "mcu" => mcu::mcu(rest),
+        "size" => mcu::size(rest),
         "report" => stub(cmd, 6),
         "bake" => match bake::run(rest) {
             Ok(()) => ExitCode::SUCCESS,

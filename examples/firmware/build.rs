@@ -1,0 +1,66 @@
+//! Link scripts per architecture, and the flash tables generated with fixel's own code:
+//! the procedural textures `T(w, h)` (raw RGB565, little-endian) and the benchmark sphere.
+use std::fmt::Write as _;
+use std::{env, fs, path::PathBuf};
+
+use embedded_graphics_core::pixelcolor::IntoStorage;
+use embedded_graphics_core::pixelcolor::Rgb565;
+
+fn main() {
+    let out = PathBuf::from(env::var_os("OUT_DIR").unwrap());
+    let dir = env::var("CARGO_MANIFEST_DIR").unwrap();
+    match env::var("CARGO_CFG_TARGET_ARCH").as_deref() {
+        Ok("arm") => {
+            fs::write(out.join("memory.x"), include_bytes!("memory.x")).unwrap();
+            println!("cargo:rustc-link-search={}", out.display());
+            println!("cargo:rustc-link-arg=-Tlink.x");
+        }
+        Ok("riscv32") => println!("cargo:rustc-link-arg=-T{dir}/link.ld"),
+        _ => {}
+    }
+    println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=link.ld");
+    println!("cargo:rerun-if-changed=build.rs");
+
+    for (w, h) in [(8, 8), (64, 64), (128, 128), (256, 128)] {
+        let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+        fixel::demo::checker_texture(w, h, &mut t).unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join(format!("t{w}x{h}.bin")), bytes).unwrap();
+    }
+
+    let s = fixel::demo::sphere();
+    let mut src = String::from("MeshData {\n positions: [");
+    for p in &s.positions {
+        let _ = write!(
+            src,
+            "v({},{},{}),",
+            p.x.to_bits(),
+            p.y.to_bits(),
+            p.z.to_bits()
+        );
+    }
+    src.push_str("],\n normals: [");
+    for p in &s.normals {
+        let _ = write!(
+            src,
+            "v({},{},{}),",
+            p.x.to_bits(),
+            p.y.to_bits(),
+            p.z.to_bits()
+        );
+    }
+    src.push_str("],\n uvs: [");
+    for [u, v] in &s.uvs {
+        let _ = write!(src, "uv({},{}),", u.to_bits(), v.to_bits());
+    }
+    src.push_str("],\n indices: [");
+    for [a, b, c] in &s.indices {
+        let _ = write!(src, "[{a},{b},{c}],");
+    }
+    src.push_str("],\n}\n");
+    fs::write(out.join("sphere.rs"), src).unwrap();
+}

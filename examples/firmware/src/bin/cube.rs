@@ -1,0 +1,15 @@
+//! Scene `cube`, frame 0: lit, bilinear, perspective-correct, depth-tested, 320x240 in bands.
+#![no_std]
+#![no_main]
+
+use fixel_firmware::{data, report, scenes};
+
+fn run() -> bool {
+    let mut buf = scenes::Buffers::new();
+    let frame = core::hint::black_box(0);
+    report("cube", |pause, resume| {
+        scenes::cube(&mut buf, data::T128, frame, pause, resume)
+    })
+}
+
+fixel_firmware::entry!(run);

@@ -1,0 +1,19 @@
+//! Scene `floor`, nearest filtering, unlit, depth-tested: the fill-rate scene.
+#![no_std]
+#![no_main]
+
+use fixel_firmware::{data, report, scenes};
+
+fn run() -> bool {
+    let mut buf = scenes::Buffers::new();
+    report("floor", |pause, resume| {
+        scenes::floor::<scenes::FloorNearest>(
+            &mut buf,
+            core::hint::black_box(data::T64),
+            pause,
+            resume,
+        )
+    })
+}
+
+fixel_firmware::entry!(run);

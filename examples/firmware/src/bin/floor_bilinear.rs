@@ -1,0 +1,19 @@
+//! Scene `floor`, bilinear filtering, unlit, depth-tested.
+#![no_std]
+#![no_main]
+
+use fixel_firmware::{data, report, scenes};
+
+fn run() -> bool {
+    let mut buf = scenes::Buffers::new();
+    report("floor_bilinear", |pause, resume| {
+        scenes::floor::<scenes::FloorBilinear>(
+            &mut buf,
+            core::hint::black_box(data::T64),
+            pause,
+            resume,
+        )
+    })
+}
+
+fixel_firmware::entry!(run);

@@ -1,0 +1,19 @@
+//! Scene `sphere`, frame 0: 2208 triangles (mesh in flash), lit, bilinear, perspective-correct,
+//! depth-tested. The bins overflow, so the geometry runs once per band.
+#![no_std]
+#![no_main]
+
+use fixel_firmware::{data, report, scenes};
+
+fn run() -> bool {
+    let mut buf = scenes::Buffers::new();
+    let frame = core::hint::black_box(0);
+    let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
+        return false;
+    };
+    report("sphere", |pause, resume| {
+        scenes::sphere(&mut buf, data::T256X128, &mesh, frame, pause, resume)
+    })
+}
+
+fixel_firmware::entry!(run);

@@ -1,0 +1,132 @@
+//! The `size_*` firmwares of `cargo xtask size`: one textured triangle through the scene
+//! path (mesh -> camera -> clip -> bands), each with a different set of stages, so the flash
+//! of "a firmware that uses one mode" can be compared in bytes. `size_base` is the same
+//! harness without fixel (its flash is subtracted to get fixel's share).
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::math::{Fx, Mat4, Vec3};
+use fixel::pipeline::{Draw, DrawMode, FromWrap, Stages};
+use fixel::prelude::{BandRenderer, Cull, Viewport};
+use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
+use fixel::target::band::Binned;
+
+use crate::data;
+use crate::scenes::{Fnv1a, H, ROWS, W};
+
+const BAND: usize = (W * ROWS) as usize;
+
+static POSITIONS: [Vec3; 3] = [
+    Vec3::new(
+        Fx::from_bits(-65536),
+        Fx::from_bits(-65536),
+        Fx::from_bits(-3 << 16),
+    ),
+    Vec3::new(
+        Fx::from_bits(65536),
+        Fx::from_bits(-65536),
+        Fx::from_bits(-3 << 16),
+    ),
+    Vec3::new(
+        Fx::from_bits(0),
+        Fx::from_bits(65536),
+        Fx::from_bits(-4 << 16),
+    ),
+];
+static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
+static UVS: [[Fx; 2]; 3] = [
+    [Fx::ZERO, Fx::ZERO],
+    [Fx::from_bits(2 << 16), Fx::ZERO],
+    [Fx::ONE, Fx::from_bits(2 << 16)],
+];
+static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
+
+/// Draws the triangle with `draw` in bands (depth band only when `depth`), lit when `lit`;
+/// returns (checksum, pixels).
+fn frame(draw: &Draw<'_, Rgb565>, lit: bool, depth: bool) -> Option<(u32, u32)> {
+    let mut color = [Rgb565::new(0, 0, 0); BAND];
+    let mut zbuf = [0u16; BAND];
+    let mut bins = [Binned::default(); 4];
+    let mesh = Mesh::new(&POSITIONS, Some(&NORMALS), &UVS, &INDICES).ok()?;
+    let camera = demo::camera(20);
+    let light = if lit {
+        Some(DirectionalLight::default())
+    } else {
+        None
+    };
+    let light = light.as_ref();
+    let mut bands = BandRenderer::new(&mut color, W, ROWS, H).ok()?;
+    if depth {
+        bands = bands.with_depth(&mut zbuf).ok()?;
+    }
+    let mut sum = Fnv1a::default();
+    let stats = bands
+        .render(
+            &[draw],
+            &mut bins,
+            Rgb565::new(0, 0, 0),
+            |sink| {
+                mesh_triangles(&mesh, &Mat4::IDENTITY, &camera, light, |t| {
+                    draw.project(t, &mut |s| sink.push(0, s))
+                })
+            },
+            |band| {
+                sum.pixels(band.pixels());
+                Ok::<(), ()>(())
+            },
+        )
+        .ok()?;
+    Some((sum.0, stats.pixels))
+}
+
+fn print(r: Option<(u32, u32)>) -> bool {
+    match r {
+        Some((c, p)) => {
+            crate::outln!("checksum=0x{:08x} pixels={}", c, p);
+            true
+        }
+        None => false,
+    }
+}
+
+/// One draw with stages `M` (types: only that span loop is linked).
+pub fn typed<M>(lit: bool, depth: bool) -> bool
+where
+    M: Stages + 'static,
+    M::WU: FromWrap,
+    M::WV: FromWrap,
+{
+    let Ok(vp) = Viewport::new(0, 0, W, H) else {
+        return false;
+    };
+    let Ok(draw) = Draw::new::<M>(Some(core::hint::black_box(data::T8)), vp, Cull::Back) else {
+        return false;
+    };
+    print(frame(&draw, lit, depth))
+}
+
+/// One draw whose mode is chosen at run time: every span loop is linked ("everything").
+pub fn dynamic(mode: DrawMode, lit: bool) -> bool {
+    let Ok(vp) = Viewport::new(0, 0, W, H) else {
+        return false;
+    };
+    let mode = core::hint::black_box(mode);
+    let Ok(draw) = Draw::dynamic(mode, Some(core::hint::black_box(data::T8)), vp) else {
+        return false;
+    };
+    print(frame(&draw, core::hint::black_box(lit), true))
+}
+
+/// The harness alone: the same buffers, checksum and output, no fixel.
+pub fn base() -> bool {
+    let mut color = [Rgb565::new(0, 0, 0); BAND];
+    let mut sum = Fnv1a::default();
+    let color = core::hint::black_box(&mut color);
+    let mut pixels = 0u32;
+    for _ in 0..H / ROWS {
+        color[0] = data::T8_TEXELS[core::hint::black_box(3)];
+        sum.pixels(color);
+        pixels += 1;
+    }
+    print(Some((sum.0, pixels)))
+}

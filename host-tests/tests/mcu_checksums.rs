@@ -1,0 +1,113 @@
+//! The frames the MCU firmware renders (`examples/firmware`), rendered on the host through
+//! the very same code (`examples/firmware/src/scenes.rs`, band by band), and their checksums.
+//!
+//! `cargo xtask mcu` runs this test with `--nocapture` and compares the `mcu-expected` lines
+//! it prints with what each firmware prints under QEMU: any difference fails the command.
+//! The test itself checks that the band path gives the same frame as one whole-frame draw.
+
+#[path = "../../examples/firmware/src/scenes.rs"]
+#[allow(dead_code)]
+mod scenes;
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::prelude::*;
+use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
+use scenes::{Buffers, Fnv1a, FrameResult};
+
+fn texture(w: u32, h: u32) -> Vec<Rgb565> {
+    let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+    demo::checker_texture(w, h, &mut t).unwrap();
+    t
+}
+
+/// The same frame drawn whole (one 320x240 frame, no bands), hashed the same way.
+fn whole<M>(tex: Texture<'_>, mesh: &Mesh<'_>, model: &Mat4, far: i32, lit: bool) -> (u32, u32)
+where
+    M: fixel::pipeline::Stages + 'static,
+    M::WU: fixel::pipeline::FromWrap,
+    M::WV: fixel::pipeline::FromWrap,
+{
+    let (w, h) = (scenes::W, scenes::H);
+    let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+    let mut depth = vec![0u16; (w * h) as usize];
+    let mut frame = Frame::new(&mut color, w, h)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    frame.clear(Rgb565::new(0, 0, 0));
+    let draw = Draw::new::<M>(Some(tex), Viewport::new(0, 0, w, h).unwrap(), Cull::Back).unwrap();
+    let light = DirectionalLight::default();
+    let px = draw_mesh(
+        &draw,
+        mesh,
+        model,
+        &demo::camera(far),
+        lit.then_some(&light),
+        &mut frame,
+    );
+    let mut f = Fnv1a::default();
+    f.pixels(frame.pixels());
+    (f.0, px)
+}
+
+fn print(scene: &str, r: &FrameResult) {
+    println!(
+        "mcu-expected scene={scene} checksum=0x{:08x} pixels={}",
+        r.checksum, r.stats.pixels
+    );
+}
+
+#[test]
+fn mcu_frames() {
+    let mut buf = Box::new(Buffers::new());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+
+    let t128 = texture(128, 128);
+    let tex = Texture::new(&t128, 128, 128).unwrap();
+    let r = scenes::cube(&mut buf, tex, 0, &mut nop1, &mut nop2).unwrap();
+    print("cube", &r);
+    assert!(!r.stats.rewalked);
+    let cube = demo::cube();
+    let w = whole::<scenes::Lit>(tex, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "cube: bands differ from the whole frame"
+    );
+
+    let t256 = texture(256, 128);
+    let tex = Texture::new(&t256, 256, 128).unwrap();
+    let sphere = Box::new(demo::sphere());
+    let mesh = sphere.mesh().unwrap();
+    let r = scenes::sphere(&mut buf, tex, &mesh, 0, &mut nop1, &mut nop2).unwrap();
+    print("sphere", &r);
+    let w = whole::<scenes::Lit>(tex, &mesh, &demo::sphere_model(0), 20, true);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "sphere: bands differ from the whole frame"
+    );
+
+    let t64 = texture(64, 64);
+    let tex = Texture::new(&t64, 64, 64).unwrap();
+    let floor = demo::floor();
+    let fm = floor.mesh().unwrap();
+    let r = scenes::floor::<scenes::FloorNearest>(&mut buf, tex, &mut nop1, &mut nop2).unwrap();
+    print("floor", &r);
+    let w = whole::<scenes::FloorNearest>(tex, &fm, &Mat4::IDENTITY, 200, false);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "floor: bands differ from the whole frame"
+    );
+
+    let r = scenes::floor::<scenes::FloorBilinear>(&mut buf, tex, &mut nop1, &mut nop2).unwrap();
+    print("floor_bilinear", &r);
+    let w = whole::<scenes::FloorBilinear>(tex, &fm, &Mat4::IDENTITY, 200, false);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "floor_bilinear: bands differ from the whole frame"
+    );
+}
