@@ -27,6 +27,7 @@ where
     M: fixel::pipeline::Stages + 'static,
     M::WU: fixel::pipeline::FromWrap,
     M::WV: fixel::pipeline::FromWrap,
+    M::F: fixel::pipeline::FromMode,
 {
     let (w, h) = (scenes::W, scenes::H);
     let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];

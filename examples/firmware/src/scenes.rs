@@ -110,6 +110,7 @@ where
     M: fixel::pipeline::Stages + 'static,
     M::WU: fixel::pipeline::FromWrap,
     M::WV: fixel::pipeline::FromWrap,
+    M::F: fixel::pipeline::FromMode,
 {
     let vp = Viewport::new(0, 0, W, H)?;
     let draw = Draw::new::<M>(Some(texture), vp, Cull::Back)?;
@@ -195,6 +196,7 @@ where
     M: fixel::pipeline::Stages + 'static,
     M::WU: fixel::pipeline::FromWrap,
     M::WV: fixel::pipeline::FromWrap,
+    M::F: fixel::pipeline::FromMode,
 {
     let m = demo::floor();
     render::<M>(
