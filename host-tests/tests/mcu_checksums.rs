@@ -25,9 +25,6 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 fn whole<M>(tex: Texture<'_>, mesh: &Mesh<'_>, model: &Mat4, far: i32, lit: bool) -> (u32, u32)
 where
     M: fixel::pipeline::Stages + 'static,
-    M::WU: fixel::pipeline::FromWrap,
-    M::WV: fixel::pipeline::FromWrap,
-    M::F: fixel::pipeline::FromMode,
 {
     let (w, h) = (scenes::W, scenes::H);
     let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];

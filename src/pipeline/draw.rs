@@ -20,69 +20,10 @@ use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewpo
 use crate::raster::{rasterize, Rect, SpanSink};
 use crate::target::RenderTarget;
 use crate::texture::{
-    Bilinear, ClampToBorder, ClampToEdge, DynMip, DynWrap, Lod, LodGranularity, MipFilter,
-    MipTexture, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Texture, Wrap,
-    WrapMode,
+    Bilinear, DynMip, DynWrap, Lod, LodGranularity, MipFilter, MipTexture, Nearest, TexSampler,
+    Texture, Wrap, WrapMode,
 };
 use crate::Error;
-
-/// Builds a wrap-mode value from the draw's run-time wrap (markers ignore it).
-pub trait FromWrap: WrapMode {
-    /// The wrap-mode value for `w`.
-    fn from_wrap(w: Wrap) -> Self;
-}
-macro_rules! from_wrap_marker {
-    ($($t:ty),*) => {$(
-        impl FromWrap for $t {
-            #[inline(always)]
-            fn from_wrap(_: Wrap) -> Self {
-                <$t>::default()
-            }
-        }
-    )*};
-}
-from_wrap_marker!(Repeat, MirroredRepeat, ClampToEdge, ClampToBorder);
-impl FromWrap for DynWrap {
-    #[inline(always)]
-    fn from_wrap(w: Wrap) -> Self {
-        DynWrap(w)
-    }
-}
-
-/// Builds a sampler value from the draw's mode (markers ignore it).
-pub trait FromMode: TexSampler {
-    /// The sampler for `mode`.
-    fn from_mode(mode: &DrawMode) -> Self;
-}
-impl FromMode for Nearest {
-    fn from_mode(_: &DrawMode) -> Self {
-        Nearest
-    }
-}
-impl FromMode for crate::texture::BilinearFast {
-    fn from_mode(_: &DrawMode) -> Self {
-        crate::texture::BilinearFast
-    }
-}
-impl FromMode for Bilinear {
-    fn from_mode(_: &DrawMode) -> Self {
-        Bilinear
-    }
-}
-impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {
-    fn from_mode(_: &DrawMode) -> Self {
-        Mipmapped::default()
-    }
-}
-impl FromMode for DynMip {
-    fn from_mode(mode: &DrawMode) -> Self {
-        DynMip {
-            min: mode.filter,
-            mag: mode.mag_filter.unwrap_or(mode.filter),
-            between: mode.mip,
-        }
-    }
-}
 
 /// A 1x1 black texture for untextured draws (so the span loop never branches on "is there
 /// a texture").

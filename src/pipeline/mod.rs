@@ -11,5 +11,5 @@ mod setup;
 mod span;
 pub mod stages;
 
-pub use draw::{Draw, FromMode, FromWrap};
+pub use draw::Draw;
 pub use stages::*;

@@ -9,7 +9,10 @@ use core::fmt::Debug;
 use core::marker::PhantomData;
 
 use crate::geometry::Cull;
-use crate::texture::{Filter, Lod, MipFilter, TexSampler, Wrap, WrapMode};
+use crate::texture::{
+    Bilinear, BilinearFast, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter, Lod, MipFilter,
+    Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap, WrapMode,
+};
 
 /// How texture coordinates (and colours) are interpolated across a triangle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -214,11 +217,11 @@ pub trait Stages {
     /// Projection stage.
     type P: ProjectionStage;
     /// Texture sampler (plain or mipmapped).
-    type F: TexSampler;
+    type F: TexSampler + FromMode;
     /// Wrap mode for s.
-    type WU: WrapMode;
+    type WU: WrapMode + FromWrap;
     /// Wrap mode for t.
-    type WV: WrapMode;
+    type WV: WrapMode + FromWrap;
     /// Shading.
     type S: ShadingStage;
     /// Depth test.
@@ -228,9 +231,9 @@ pub trait Stages {
 impl<P, F, WU, WV, S, D> Stages for Pipeline<P, F, WU, WV, S, D>
 where
     P: ProjectionStage,
-    F: TexSampler,
-    WU: WrapMode,
-    WV: WrapMode,
+    F: TexSampler + FromMode,
+    WU: WrapMode + FromWrap,
+    WV: WrapMode + FromWrap,
     S: ShadingStage,
     D: DepthStage,
 {
@@ -240,4 +243,62 @@ where
     type WV = WV;
     type S = S;
     type D = D;
+}
+
+/// Builds a wrap-mode value from the draw's run-time wrap (markers ignore it).
+pub trait FromWrap: WrapMode {
+    /// The wrap-mode value for `w`.
+    fn from_wrap(w: Wrap) -> Self;
+}
+macro_rules! from_wrap_marker {
+    ($($t:ty),*) => {$(
+        impl FromWrap for $t {
+            #[inline(always)]
+            fn from_wrap(_: Wrap) -> Self {
+                <$t>::default()
+            }
+        }
+    )*};
+}
+from_wrap_marker!(Repeat, MirroredRepeat, ClampToEdge, ClampToBorder);
+impl FromWrap for DynWrap {
+    #[inline(always)]
+    fn from_wrap(w: Wrap) -> Self {
+        DynWrap(w)
+    }
+}
+
+/// Builds a sampler value from the draw's mode (markers ignore it).
+pub trait FromMode: TexSampler {
+    /// The sampler for `mode`.
+    fn from_mode(mode: &DrawMode) -> Self;
+}
+impl FromMode for Nearest {
+    fn from_mode(_: &DrawMode) -> Self {
+        Nearest
+    }
+}
+impl FromMode for BilinearFast {
+    fn from_mode(_: &DrawMode) -> Self {
+        BilinearFast
+    }
+}
+impl FromMode for Bilinear {
+    fn from_mode(_: &DrawMode) -> Self {
+        Bilinear
+    }
+}
+impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {
+    fn from_mode(_: &DrawMode) -> Self {
+        Mipmapped::default()
+    }
+}
+impl FromMode for DynMip {
+    fn from_mode(mode: &DrawMode) -> Self {
+        DynMip {
+            min: mode.filter,
+            mag: mode.mag_filter.unwrap_or(mode.filter),
+            between: mode.mip,
+        }
+    }
 }

@@ -108,9 +108,6 @@ pub fn render<M>(
 ) -> Result<FrameResult, Error>
 where
     M: fixel::pipeline::Stages + 'static,
-    M::WU: fixel::pipeline::FromWrap,
-    M::WV: fixel::pipeline::FromWrap,
-    M::F: fixel::pipeline::FromMode,
 {
     let vp = Viewport::new(0, 0, W, H)?;
     let draw = Draw::new::<M>(Some(texture), vp, Cull::Back)?;
@@ -194,9 +191,6 @@ pub fn floor<M>(
 ) -> Result<FrameResult, Error>
 where
     M: fixel::pipeline::Stages + 'static,
-    M::WU: fixel::pipeline::FromWrap,
-    M::WV: fixel::pipeline::FromWrap,
-    M::F: fixel::pipeline::FromMode,
 {
     let m = demo::floor();
     render::<M>(

@@ -6,7 +6,7 @@
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::math::{Fx, Mat4, Vec3};
-use fixel::pipeline::{Draw, DrawMode, FromWrap, Stages};
+use fixel::pipeline::{Draw, DrawMode, Stages};
 use fixel::prelude::{BandRenderer, Cull, Viewport};
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
 use fixel::target::band::Binned;
@@ -93,8 +93,6 @@ fn print(r: Option<(u32, u32)>) -> bool {
 pub fn typed<M>(lit: bool, depth: bool) -> bool
 where
     M: Stages + 'static,
-    M::WU: FromWrap,
-    M::WV: FromWrap,
 {
     let Ok(vp) = Viewport::new(0, 0, W, H) else {
         return false;
