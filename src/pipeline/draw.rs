@@ -325,12 +325,16 @@ where
         log2_n,
         flat: draw.flat,
         periodic,
+        depth_on: mode.depth == DepthTest::Less,
     };
     let mut w = Writer {
         ctx,
         target,
         pixels: 0,
     };
+    // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
+    // per span, nothing per pixel).
+    let sink: &mut dyn SpanSink = &mut w;
     rasterize(
         [
             (tri[0].x, tri[0].y),
@@ -338,25 +342,19 @@ where
             (tri[2].x, tri[2].y),
         ],
         clip,
-        &mut w,
+        sink,
     );
     w.pixels
 }
 
 /// The run-time dispatch table: one instance per (projection, filter, shading, depth).
 fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
+    // One depth-testing loop per combination; `SpanCtx::depth_on` switches the test off at
+    // run time (a span loop costs flash, a predictable branch per span costs nothing).
     macro_rules! by_depth {
         ($p:ty, $f:ty, $s:ty) => {
-            match mode.depth {
-                DepthTest::Off => {
-                    raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, NoDepth>, C>
-                        as RasterFn<'a, C>
-                }
-                DepthTest::Less => {
-                    raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, DepthLess>, C>
-                        as RasterFn<'a, C>
-                }
-            }
+            raster_triangle::<Pipeline<$p, $f, DynWrap, DynWrap, $s, DepthLess>, C>
+                as RasterFn<'a, C>
         };
     }
     macro_rules! by_shading {

@@ -83,6 +83,10 @@ fn texel_coords(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> [i64; 3] {
 }
 
 /// Builds the set-up, or `None` for a zero-area triangle.
+///
+/// Not inlined: it runs once per triangle, and one shared copy keeps every span loop a
+/// firmware links from carrying its own (about 3 KB each on Cortex-M).
+#[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn setup(
     tri: &ScreenTriangle,

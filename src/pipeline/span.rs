@@ -28,6 +28,9 @@ pub(crate) struct SpanCtx<'a, M: Stages> {
     pub flat: u16,
     /// Per axis: true for the periodic wrap modes (see `setup` on `uv_shift`).
     pub periodic: [bool; 2],
+    /// The draw's run-time depth switch (for the typed path it is always on and the stage's
+    /// type decides; the run-time path links one depth-testing loop and turns it off here).
+    pub depth_on: bool,
 }
 
 /// Undoes the per-triangle texel-coordinate shift (rare: only huge uv extents).
@@ -145,7 +148,7 @@ pub(crate) fn span<M: Stages, C: TargetColor>(
     let Some(out) = row.get_mut(a..b) else {
         return 0;
     };
-    let zrow = if M::D::TEST {
+    let zrow = if M::D::TEST && ctx.depth_on {
         depth.and_then(|d| d.get_mut(a..b))
     } else {
         None
