@@ -11,7 +11,7 @@
 //! All three are inlined into the span loop, which is monomorphised per projection mode, so
 //! a draw pays only for the one it uses.
 
-use super::recip::recip_q30;
+use super::recip::{mul_q16, recip_q30};
 use super::setup::TriSetup;
 use crate::texture::mip::lambda_q8;
 
@@ -46,8 +46,9 @@ pub(crate) fn affine_lambda(s: &TriSetup) -> i32 {
 /// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`).
 #[inline(always)]
 fn hyper_lambda(s: &TriSetup, h: &Hyper) -> i32 {
-    let r = i64::from(recip_q30(h.q));
-    let m = |a: i32| ((i64::from(a) * r) >> 16) as i32;
+    let r32 = recip_q30(h.q);
+    let r = i64::from(r32);
+    let m = |a: i32| mul_q16(a, r32);
     let (u, v) = (m(h.s), m(h.t));
     let d = |sd: i32, qd: i32, a: i32| -> i32 {
         let t = i64::from(sd) - ((i64::from(a) * i64::from(qd)) >> 30);
@@ -166,8 +167,8 @@ impl Hyper {
     /// `(s, t, c) / q`.
     #[inline(always)]
     fn resolve(&self) -> Frag {
-        let r = i64::from(recip_q30(self.q));
-        let m = |a: i32| ((i64::from(a) * r) >> 16) as i32;
+        let r = recip_q30(self.q);
+        let m = |a: i32| mul_q16(a, r);
         Frag {
             u: m(self.s),
             v: m(self.t),

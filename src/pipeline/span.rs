@@ -11,7 +11,7 @@ use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage, Shading, ShadingStage, Stages};
 use crate::color::{modulate_rgb, modulate_scalar, rgb565, TargetColor};
 use crate::geometry::COLOR_ONE;
-use crate::texture::{Lod, LodGranularity, MipTexture, TexSampler};
+use crate::texture::{Lod, LodGranularity, MipTexture, TexSampler, Texture};
 
 /// Per-draw, per-triangle state the span loop reads.
 #[derive(Clone, Copy, Debug)]
@@ -55,17 +55,21 @@ fn q8(c: i32) -> u16 {
 /// The filtered texel at `f`. A function, not a closure in `shade`: LLVM did not inline
 /// the closure (a call, register saves and reloads of the texture fields per pixel).
 #[inline(always)]
-fn texel<M: Stages>(ctx: &SpanCtx<'_, M>, f: &Frag, lambda: i32) -> u16 {
+fn texel<M: Stages>(ctx: &SpanCtx<'_, M>, base: &Texture<'_>, f: &Frag, lambda: i32) -> u16 {
     let k = ctx.setup.uv_shift;
     let u = unshift(f.u, k, ctx.periodic[0]);
     let v = unshift(f.v, k, ctx.periodic[1]);
-    ctx.sampler
-        .sample_mip(ctx.tex, ctx.wu, ctx.wv, u, v, lambda)
+    if <M::F as TexSampler>::LOD {
+        ctx.sampler
+            .sample_mip(ctx.tex, ctx.wu, ctx.wv, u, v, lambda)
+    } else {
+        ctx.sampler.sample_base(base, ctx.wu, ctx.wv, u, v)
+    }
 }
 
 #[inline(always)]
-fn shade<M: Stages>(ctx: &SpanCtx<'_, M>, f: Frag, lambda: i32) -> u16 {
-    let texel = || texel(ctx, &f, lambda);
+fn shade<M: Stages>(ctx: &SpanCtx<'_, M>, base: &Texture<'_>, f: Frag, lambda: i32) -> u16 {
+    let texel = || texel(ctx, base, &f, lambda);
     match M::S::KIND {
         Shading::Replace => texel(),
         Shading::ModulateIntensity => modulate_scalar(texel(), q8(f.c[0])),
@@ -88,6 +92,8 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
 ) -> u32 {
     let s = &ctx.setup;
     let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
+    // Level 0 in a local: its pointer and sizes can live in registers through the loop.
+    let base = *ctx.tex.base();
     let lod = ctx.lod;
     let per_pixel = <M::F as TexSampler>::LOD && lod.granularity == LodGranularity::Pixel;
     let fixed_lambda = if !<M::F as TexSampler>::LOD {
@@ -114,7 +120,7 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
             let d = (z >> 14).clamp(0, 0xFFFF) as u16;
             if d < *zb {
                 *zb = d;
-                *px = C::from_rgb565(shade(ctx, it.frag(), lambda(&it)));
+                *px = C::from_rgb565(shade(ctx, &base, it.frag(), lambda(&it)));
                 written += 1;
             }
             z = z.wrapping_add(s.z.dx);
@@ -123,7 +129,7 @@ fn run<M: Stages, C: TargetColor, I: Interp, const Z: bool>(
         written
     } else {
         for px in out.iter_mut() {
-            *px = C::from_rgb565(shade(ctx, it.frag(), lambda(&it)));
+            *px = C::from_rgb565(shade(ctx, &base, it.frag(), lambda(&it)));
             it.step();
         }
         out.len() as u32

@@ -263,12 +263,33 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         v: i32,
         lambda: i32,
     ) -> u16;
+
+    /// Samples level 0 only (what the span loop calls when `LOD` is false, with the level
+    /// copied into a local so its fields stay in registers).
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16;
 }
 
 impl TexSampler for Nearest {
     const LOD: bool = false;
     const FILTER: Filter = Filter::Nearest;
     #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Nearest::sample(base, wu, wv, u, v)
+    }
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
@@ -286,6 +307,16 @@ impl TexSampler for Bilinear {
     const LOD: bool = false;
     const FILTER: Filter = Filter::Bilinear;
     #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Bilinear::sample(base, wu, wv, u, v)
+    }
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
@@ -303,6 +334,16 @@ impl TexSampler for BilinearFast {
     const LOD: bool = false;
     const FILTER: Filter = Filter::Bilinear;
     #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        BilinearFast::sample(base, wu, wv, u, v)
+    }
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
@@ -372,6 +413,16 @@ impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, M
     const LOD: bool = true;
     const FILTER: Filter = Mag::FILTER;
     #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Mag::sample(base, wu, wv, u, v)
+    }
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
@@ -438,6 +489,20 @@ pub struct DynMip {
 impl TexSampler for DynMip {
     const LOD: bool = true;
     const FILTER: Filter = Filter::Nearest;
+    #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        match self.mag {
+            Filter::Nearest => Nearest::sample(base, wu, wv, u, v),
+            Filter::Bilinear => Bilinear::sample(base, wu, wv, u, v),
+        }
+    }
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
