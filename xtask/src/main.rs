@@ -40,9 +40,10 @@ COMMANDS:
                   toolchain targets/components, fmt, clippy, test (debug),
                   test (release), docs (-D warnings), no_std cross builds for
                   thumbv6m-none-eabi, thumbv7em-none-eabihf,
-                  riscv32imc-unknown-none-elf.
+                  riscv32imc-unknown-none-elf, then `mcu` (firmware under QEMU:
+                  checksums must equal the host's; prints the report).
                   --quick     skip the release-mode test run
-                  --no-cross  skip the cross-target builds
+                  --no-cross  skip the cross-target builds and `mcu`
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
     render      Render the demo scenes (examples `showcase` and `scenes`, release)
@@ -296,6 +297,19 @@ fn ci(flags: &[String]) -> ExitCode {
             })
         });
     }
+
+    // Firmware under QEMU: checksums must equal the host's (and the report is printed).
+    steps.push(if no_cross {
+        skipped("mcu (QEMU)", "--no-cross")
+    } else {
+        step("mcu (QEMU)", || {
+            if mcu::mcu(&[]) == ExitCode::SUCCESS {
+                Ok(())
+            } else {
+                Err("cargo xtask mcu failed (see above)".to_string())
+            }
+        })
+    });
 
     let total = steps.len();
     let started = Instant::now();
