@@ -47,16 +47,20 @@ pub fn recip_q30(q: i32) -> i32 {
 
 /// `(q.leading_zeros(), q << q.leading_zeros())` for `q` in `[2^15, 2^31)`.
 ///
+/// ARMv6-M is recognised as an Arm target without compare-and-swap atomics
+/// (`not(target_has_atomic = "32")`): stable Rust exposes no Arm architecture-version
+/// `target_feature`, and ARMv6-M is the Arm profile that lacks both CAS and `clz`/`smull`.
+///
 /// ARMv6-M (Cortex-M0/M0+) has no count-leading-zeros instruction, and the library routine
 /// costs about 35 instructions per call; five compares do it in about 15, with the same
 /// result. Cores with `clz` use it.
 #[inline(always)]
 fn normalize(q: u32) -> (u32, u32) {
-    #[cfg(all(target_arch = "arm", not(target_feature = "v7")))]
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
     {
         normalize_no_clz(q)
     }
-    #[cfg(not(all(target_arch = "arm", not(target_feature = "v7"))))]
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
     {
         let n = q.leading_zeros();
         (n, q << n)
@@ -65,7 +69,7 @@ fn normalize(q: u32) -> (u32, u32) {
 
 /// [`normalize`] by five compares (compiled everywhere so every target tests it).
 #[cfg_attr(
-    not(all(target_arch = "arm", not(target_feature = "v7"))),
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
     allow(dead_code)
 )]
 #[inline(always)]
@@ -104,11 +108,11 @@ fn normalize_no_clz(q: u32) -> (u32, u32) {
 /// `floor(a r / 2^16) = ah rh 2^16 + ah rl + al rh + floor(al rl / 2^16)`, the same bits.
 #[inline(always)]
 pub fn mul_q16(a: i32, r: i32) -> i32 {
-    #[cfg(all(target_arch = "arm", not(target_feature = "v7")))]
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
     {
         mul_q16_split(a, r)
     }
-    #[cfg(not(all(target_arch = "arm", not(target_feature = "v7"))))]
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
     {
         ((i64::from(a) * i64::from(r)) >> 16) as i32
     }
@@ -116,7 +120,7 @@ pub fn mul_q16(a: i32, r: i32) -> i32 {
 
 /// The 32-bit-multiply form of [`mul_q16`] (compiled everywhere so every target tests it).
 #[cfg_attr(
-    not(all(target_arch = "arm", not(target_feature = "v7"))),
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
     allow(dead_code)
 )]
 #[inline(always)]
