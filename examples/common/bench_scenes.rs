@@ -15,7 +15,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::pipeline::{Affine, DepthLess, Exact, ModulateIntensity, Pipeline, Replace, Subdivided};
 use fixel::prelude::*;
-use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
+use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
 use fixel::texture::{Bilinear, BilinearFast, Nearest, Repeat};
 
 /// A benchmark scene.
@@ -327,6 +327,8 @@ impl Bench {
         .expect("mesh");
         let light = self.case.mode.lit.then_some(&self.light);
         let mut total = 0u64;
+        // One transform per vertex, not per triangle corner.
+        let mut cache = vec![None; demo::SPHERE_VERTICES];
         for i in 0..frames {
             let model = match self.case.scene {
                 Scene::Cube => demo::cube_model(i),
@@ -338,7 +340,15 @@ impl Bench {
                 .with_depth(&mut self.depth)
                 .expect("depth");
             frame.clear(Rgb565::new(0, 0, 0));
-            let n = draw_mesh(&draw, &mesh, &model, &self.camera, light, &mut frame);
+            let n = draw_mesh_cached(
+                &draw,
+                &mesh,
+                &model,
+                &self.camera,
+                light,
+                &mut cache,
+                &mut frame,
+            );
             total += u64::from(n);
         }
         total

@@ -84,10 +84,16 @@ fn vertex(
     let uv = *mesh.uvs.get(i)?;
     let intensity = match (light, mesh.normals) {
         (Some(l), Some(nm)) => {
-            let n = model_view
-                .transform_vector(*nm.get(i)?)?
-                .normalize()
-                .unwrap_or(Vec3::ZERO);
+            let n = model_view.transform_vector(*nm.get(i)?)?;
+            // A rotation keeps unit normals unit: renormalise (a square root and a
+            // reciprocal) only when the length is off by more than 2^-12, which changes
+            // the intensity by less than its Q8 step.
+            let off = (n.length_squared_bits() as i64 - (1i64 << 32)).unsigned_abs();
+            let n = if off < 1 << 20 {
+                n
+            } else {
+                n.normalize().unwrap_or(Vec3::ZERO)
+            };
             l.intensity(n)
         }
         _ => COLOR_ONE,
@@ -97,6 +103,38 @@ fn vertex(
         uv,
         color: [intensity; 3],
     })
+}
+
+/// Like [`mesh_triangles`], but transforms and lights each vertex once into `cache`
+/// (caller-provided scratch, at least one entry per vertex) instead of once per triangle
+/// corner: about 5x fewer transforms on a closed mesh such as the benchmark sphere
+/// (1225 vertices, 6624 corners). Falls back to [`mesh_triangles`] when `cache` is too
+/// short. Vertices that overflow the fixed-point range skip their triangles, as there.
+pub fn mesh_triangles_cached(
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [Option<ClipVertex>],
+    mut emit: impl FnMut(&[ClipVertex; 3]),
+) {
+    // Indices are u16: at most 65536 vertices can be referenced.
+    let n = mesh.positions.len().min(1 << 16);
+    let Some(cache) = cache.get_mut(..n) else {
+        mesh_triangles(mesh, model, camera, light, emit);
+        return;
+    };
+    let model_view = camera.view.mul(model);
+    let mvp = camera.projection.mul(&model_view);
+    for (i, slot) in cache.iter_mut().enumerate() {
+        *slot = vertex(mesh, i as u16, &model_view, &mvp, light);
+    }
+    for tri in mesh.indices {
+        let v = |k: usize| cache.get(usize::from(tri[k])).copied().flatten();
+        if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+            emit(&[a, b, c]);
+        }
+    }
 }
 
 /// Calls `emit` with each triangle of `mesh` in clip space (model, then camera), lit per
@@ -130,6 +168,23 @@ pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> u32 {
     let mut pixels = 0u32;
     mesh_triangles(mesh, model, camera, light, |t| {
+        pixels = pixels.wrapping_add(draw.clip_triangles(core::slice::from_ref(t), target));
+    });
+    pixels
+}
+
+/// Like [`draw_mesh`] with a vertex cache (see [`mesh_triangles_cached`]).
+pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [Option<ClipVertex>],
+    target: &mut T,
+) -> u32 {
+    let mut pixels = 0u32;
+    mesh_triangles_cached(mesh, model, camera, light, cache, |t| {
         pixels = pixels.wrapping_add(draw.clip_triangles(core::slice::from_ref(t), target));
     });
     pixels

@@ -35,4 +35,4 @@ mod mesh;
 
 pub use camera::Camera;
 pub use light::DirectionalLight;
-pub use mesh::{draw_mesh, mesh_triangles, Mesh};
+pub use mesh::{draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, Mesh};
