@@ -95,6 +95,7 @@ where
     M: Stages + 'static,
     M::WU: FromWrap,
     M::WV: FromWrap,
+    M::F: fixel::pipeline::FromMode,
 {
     let Ok(vp) = Viewport::new(0, 0, W, H) else {
         return false;
