@@ -17,6 +17,7 @@ fn run() -> bool {
             shading: Shading::ModulateIntensity,
             depth: DepthTest::Less,
             cull: fixel::geometry::Cull::Back,
+            ..DrawMode::default()
         },
         true,
     )
