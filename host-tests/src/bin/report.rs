@@ -134,6 +134,12 @@ impl Scene {
     }
 }
 
+/// A reference to render: error frame index, and (lighting, filter) or `None` for the
+/// supersampled one.
+type Job = (usize, Option<(bool, Filt)>);
+/// RGB565 pixels and coverage.
+type Image = (Vec<u16>, Vec<bool>);
+
 fn mode_name(m: &Mode) -> String {
     let mut s = String::new();
     m.write_name(&mut s).expect("name");
@@ -784,7 +790,7 @@ fn main() {
             &[false]
         };
         // Jobs: (frame, Some((lit, filter)) | None = supersampled).
-        let mut jobs: Vec<(usize, Option<(bool, Filt)>)> = Vec::new();
+        let mut jobs: Vec<Job> = Vec::new();
         for k in 0..frames.len() {
             for &l in lights {
                 for &f in filters {
@@ -796,35 +802,34 @@ fn main() {
             }
         }
         pb.set_message(format!("f64 references of {}", scene.name()));
-        let results: Vec<(usize, Option<(bool, Filt)>, (Vec<u16>, Vec<bool>))> =
-            std::thread::scope(|sc| {
-                let chunks: Vec<Vec<(usize, Option<(bool, Filt)>)>> = (0..2)
-                    .map(|t| jobs.iter().copied().skip(t).step_by(2).collect())
-                    .collect();
-                let handles: Vec<_> = chunks
-                    .into_iter()
-                    .map(|chunk| {
-                        let (frames, pb) = (&frames, &pb);
-                        sc.spawn(move || {
-                            chunk
-                                .into_iter()
-                                .map(|(k, j)| {
-                                    let img = match j {
-                                        Some((l, f)) => frames[k].reference(l, f),
-                                        None => frames[k].supersampled(),
-                                    };
-                                    pb.inc(1);
-                                    (k, j, img)
-                                })
-                                .collect::<Vec<_>>()
-                        })
+        let results: Vec<(usize, Option<(bool, Filt)>, Image)> = std::thread::scope(|sc| {
+            let chunks: Vec<Vec<Job>> = (0..2)
+                .map(|t| jobs.iter().copied().skip(t).step_by(2).collect())
+                .collect();
+            let handles: Vec<_> = chunks
+                .into_iter()
+                .map(|chunk| {
+                    let (frames, pb) = (&frames, &pb);
+                    sc.spawn(move || {
+                        chunk
+                            .into_iter()
+                            .map(|(k, j)| {
+                                let img = match j {
+                                    Some((l, f)) => frames[k].reference(l, f),
+                                    None => frames[k].supersampled(),
+                                };
+                                pb.inc(1);
+                                (k, j, img)
+                            })
+                            .collect::<Vec<_>>()
                     })
-                    .collect();
-                handles
-                    .into_iter()
-                    .flat_map(|h| h.join().expect("reference thread"))
-                    .collect()
-            });
+                })
+                .collect();
+            handles
+                .into_iter()
+                .flat_map(|h| h.join().expect("reference thread"))
+                .collect()
+        });
         let find = |k: usize, j: Option<(bool, Filt)>| {
             &results
                 .iter()
