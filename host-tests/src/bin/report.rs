@@ -802,7 +802,7 @@ fn main() {
             }
         }
         pb.set_message(format!("f64 references of {}", scene.name()));
-        let results: Vec<(usize, Option<(bool, Filt)>, Image)> = std::thread::scope(|sc| {
+        let results: Vec<(Job, Image)> = std::thread::scope(|sc| {
             let chunks: Vec<Vec<Job>> = (0..2)
                 .map(|t| jobs.iter().copied().skip(t).step_by(2).collect())
                 .collect();
@@ -819,7 +819,7 @@ fn main() {
                                     None => frames[k].supersampled(),
                                 };
                                 pb.inc(1);
-                                (k, j, img)
+                                ((k, j), img)
                             })
                             .collect::<Vec<_>>()
                     })
@@ -831,11 +831,7 @@ fn main() {
                 .collect()
         });
         let find = |k: usize, j: Option<(bool, Filt)>| {
-            &results
-                .iter()
-                .find(|r| r.0 == k && r.1 == j)
-                .expect("reference")
-                .2
+            &results.iter().find(|r| r.0 == (k, j)).expect("reference").1
         };
         for row in rows.get_mut(&scene).expect("rows") {
             pb.set_message(format!("errors {}/{}", scene.name(), row.name));
