@@ -11,14 +11,24 @@ fn main() {
     let dir = env::var("CARGO_MANIFEST_DIR").unwrap();
     match env::var("CARGO_CFG_TARGET_ARCH").as_deref() {
         Ok("arm") => {
-            fs::write(out.join("memory.x"), include_bytes!("memory.x")).unwrap();
+            // The report firmwares need a larger layout (see memory-report.x).
+            let memory: &[u8] = if env::var("FIXEL_FW_MEMORY").as_deref() == Ok("report") {
+                include_bytes!("memory-report.x")
+            } else {
+                include_bytes!("memory-default.x")
+            };
+            fs::write(out.join("memory.x"), memory).unwrap();
             println!("cargo:rustc-link-search={}", out.display());
             println!("cargo:rustc-link-arg=-Tlink.x");
         }
         Ok("riscv32") => println!("cargo:rustc-link-arg=-T{dir}/link.ld"),
         _ => {}
     }
-    println!("cargo:rerun-if-changed=memory.x");
+    // (Not named memory.x in the crate root: the linker would find that one first, in its
+    // working directory, whatever OUT_DIR holds.)
+    println!("cargo:rerun-if-changed=memory-default.x");
+    println!("cargo:rerun-if-changed=memory-report.x");
+    println!("cargo:rerun-if-env-changed=FIXEL_FW_MEMORY");
     println!("cargo:rerun-if-changed=link.ld");
     println!("cargo:rerun-if-changed=build.rs");
 
@@ -30,6 +40,20 @@ fn main() {
             .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
             .collect();
         fs::write(out.join(format!("t{w}x{h}.bin")), bytes).unwrap();
+    }
+
+    // `T(64, 64)` with its full mip chain (7 levels, fixel's own 2 x 2 box filter).
+    {
+        use fixel::texture::mip::{chain_len, full_levels};
+        let levels = full_levels(64, 64);
+        let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(64, 64, levels)];
+        fixel::demo::checker_texture(64, 64, &mut chain[..64 * 64]).unwrap();
+        fixel::texture::generate_mips(&mut chain, 64, 64, levels).unwrap();
+        let bytes: Vec<u8> = chain
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join("t64x64-mips.bin"), bytes).unwrap();
     }
 
     let s = fixel::demo::sphere();

@@ -8,6 +8,9 @@
  *                            counting only instructions inside the marker regions
  *                            (so the histogram sums to region_sum exactly)
  *   lo=0xADDR,hi=0xADDR      restrict the histogram to PCs in [lo,hi) (default: all)
+ *   mark=0xADDR              at each hit of this address print the running region sum
+ *                            and pair count to stderr (`icount: mark region_sum=S pairs=P`):
+ *                            multi-mode firmwares take per-mode counts as differences
  * Report goes to stderr at exit: total, pairs, region sum, first pair, min/max pair.
  *
  * (From ../shared/mcu/MEASURE.md, histogram restricted to the regions for fixel.)
@@ -22,7 +25,7 @@
 QEMU_PLUGIN_EXPORT int qemu_plugin_version = QEMU_PLUGIN_VERSION;
 
 static uint64_t total;                 /* all executed instructions */
-static uint64_t start_addr = UINT64_MAX, end_addr = UINT64_MAX;
+static uint64_t start_addr = UINT64_MAX, end_addr = UINT64_MAX, mark_addr = UINT64_MAX;
 static uint64_t snap, pairs, sum, first, minv = UINT64_MAX, maxv;
 static int open_pair;
 
@@ -64,6 +67,13 @@ static void on_end(unsigned int vcpu, void *u)
     open_pair = 0;
 }
 
+static void on_mark(unsigned int vcpu, void *u)
+{
+    (void)vcpu; (void)u;
+    fprintf(stderr, "icount: mark region_sum=%" PRIu64 " pairs=%" PRIu64 " first_pair=%" PRIu64 "\n",
+            sum, pairs, first);
+}
+
 /* Histogram entry += 1 when inside a marker region. A callback (not an inline add) because
  * inline ops cannot be conditional; still well under a second for ~10 M instructions. */
 static void on_hist(unsigned int vcpu, void *u)
@@ -85,6 +95,8 @@ static void tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
             qemu_plugin_register_vcpu_insn_exec_cb(insn, on_start, QEMU_PLUGIN_CB_NO_REGS, NULL);
         if (va == end_addr)
             qemu_plugin_register_vcpu_insn_exec_cb(insn, on_end, QEMU_PLUGIN_CB_NO_REGS, NULL);
+        if (va == mark_addr)
+            qemu_plugin_register_vcpu_insn_exec_cb(insn, on_mark, QEMU_PLUGIN_CB_NO_REGS, NULL);
         qemu_plugin_register_vcpu_insn_exec_inline(insn, QEMU_PLUGIN_INLINE_ADD_U64, &total, 1);
         if (hist_path && va >= lo && va < hi) {
             struct pcent *e = lookup(va);
@@ -133,6 +145,7 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
         const char *k = argv[i], *v = eq + 1;
         if (!strcmp(k, "start")) start_addr = strtoull(v, NULL, 0) & ~1ull; /* drop Thumb bit */
         else if (!strcmp(k, "end")) end_addr = strtoull(v, NULL, 0) & ~1ull;
+        else if (!strcmp(k, "mark")) mark_addr = strtoull(v, NULL, 0) & ~1ull;
         else if (!strcmp(k, "lo")) lo = strtoull(v, NULL, 0) & ~1ull;
         else if (!strcmp(k, "hi")) hi = strtoull(v, NULL, 0);
         else if (!strcmp(k, "hist")) hist_path = strdup(v);

@@ -69,7 +69,18 @@ COMMANDS:
                   --opt-s    also report flash at opt-level s
     size [--opt-s] [--no-install]
                 Flash and RAM of a minimal firmware per feature set
-    report      Generate the quality/perf report    [not implemented yet, issue 6]
+    report [--runs N] [--no-mcu] [--no-install] [--docs]
+                Speed against error for every benchmark scene and mode (issue 6):
+                builds and runs the report firmwares under QEMU (exact instructions
+                per pixel on Cortex-M0+ and Cortex-M4F, target/report/mcu.tsv), then
+                the host report (`host-tests` binary `report`, release): host ns per
+                pixel (median, min, max of N runs of the scene's frames, default 7),
+                errors against the f64 reference and the 8x8 supersampled reference,
+                Pareto fronts, recommendations. Writes target/report/report.md and one
+                PNG plot per scene and target (target/report/*.png).
+                  --no-mcu      host only (no QEMU columns)
+                  --no-install  do not install missing tools (see `mcu`)
+                  --docs        also copy report.md and the plots to docs/report/
     bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]
                 Bake a power-of-two PNG into a Rust source file: RGB565 texels
                 (rounded to nearest) and their mip chain (2x2 box filter, the
@@ -108,7 +119,7 @@ fn main() -> ExitCode {
         "count" => count(rest),
         "mcu" => mcu::mcu(rest),
         "size" => mcu::size(rest),
-        "report" => stub(cmd, 6),
+        "report" => report(rest),
         "bake" => match bake::run(rest) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
@@ -132,11 +143,6 @@ fn no_flags(cmd: &str, rest: &[String]) -> Result<(), ExitCode> {
             "`{cmd}` takes no arguments (got `{a}`)"
         ))),
     }
-}
-
-fn stub(cmd: &str, issue: u32) -> ExitCode {
-    eprintln!("cargo xtask {cmd}: not implemented yet (issue {issue})");
-    ExitCode::from(2)
 }
 
 // ---------------------------------------------------------------------------
@@ -750,4 +756,101 @@ fn count(flags: &[String]) -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+// ---------------------------------------------------------------------------
+// report
+// ---------------------------------------------------------------------------
+
+fn report(flags: &[String]) -> ExitCode {
+    let (mut runs, mut mcu_on, mut install, mut docs) = (7u32, true, true, false);
+    let mut it = flags.iter();
+    while let Some(f) = it.next() {
+        match f.as_str() {
+            "--runs" => match it.next().map(|n| n.parse::<u32>()) {
+                Some(Ok(n)) if n > 0 => runs = n,
+                _ => return usage_error("`--runs` needs a positive number"),
+            },
+            "--no-mcu" => mcu_on = false,
+            "--no-install" => install = false,
+            "--docs" => docs = true,
+            other => return usage_error(&format!("unknown flag for `report`: `{other}`")),
+        }
+    }
+    let t0 = Instant::now();
+    let out = target_dir().join("report");
+    if let Err(e) = std::fs::create_dir_all(&out) {
+        eprintln!("report: could not create {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    let tsv = out.join("mcu.tsv");
+    let _ = std::fs::remove_file(&tsv);
+    if mcu_on {
+        println!("==> report 1/2: microcontrollers (QEMU)");
+        let mut step = |s: &str| println!("==> {s} ({})", fmt_dur(t0.elapsed()));
+        match mcu::report_mcu(install, &tsv, &mut step) {
+            Ok(v) => println!(
+                "==> {} mode counts written to {} ({})",
+                v.len(),
+                tsv.display(),
+                fmt_dur(t0.elapsed())
+            ),
+            Err(e) => {
+                eprintln!("report: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    println!("==> report 2/2: host (timing, errors, plots)");
+    let out_s = out.to_string_lossy().into_owned();
+    let tsv_s = tsv.to_string_lossy().into_owned();
+    let runs_s = runs.to_string();
+    let mut args = vec![
+        "run",
+        "--release",
+        "-q",
+        "-p",
+        "host-tests",
+        "--bin",
+        "report",
+        "--",
+        "--out",
+        &out_s,
+        "--runs",
+        &runs_s,
+    ];
+    if mcu_on {
+        args.extend(["--mcu", &tsv_s]);
+    }
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    if docs {
+        let dst = root().join("docs").join("report");
+        let copied = std::fs::create_dir_all(&dst).and_then(|()| {
+            for e in std::fs::read_dir(&out)? {
+                let p = e?.path();
+                let ext = p.extension().and_then(|x| x.to_str());
+                if matches!(ext, Some("md" | "png")) {
+                    std::fs::copy(&p, dst.join(p.file_name().unwrap_or_default()))?;
+                }
+            }
+            Ok(())
+        });
+        match copied {
+            Ok(()) => println!("==> copied report.md and the plots to {}", dst.display()),
+            Err(e) => {
+                eprintln!("report: could not copy to {}: {e}", dst.display());
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    println!(
+        "==> report done in {}: {} and the plots {}/*.png",
+        fmt_dur(t0.elapsed()),
+        out.join("report.md").display(),
+        out.display()
+    );
+    ExitCode::SUCCESS
 }

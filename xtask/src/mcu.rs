@@ -842,3 +842,175 @@ pub fn size(rest: &[String]) -> ExitCode {
         ExitCode::FAILURE
     }
 }
+
+// ---------------------------------------------------------------------------
+// report (issue 6): per-mode instruction counts of the report firmwares
+// ---------------------------------------------------------------------------
+
+/// The report's microcontrollers. Both builds run on `mps2-an386` (4 MB of RAM: the
+/// report firmwares hold up to 20 span loops and exceed the microbit's 256 KB / 16 KB);
+/// instruction counts depend on the instruction stream only, and ARMv6-M code runs
+/// unchanged on the M4 model.
+const REPORT_MCUS: [Mcu; 2] = [
+    Mcu {
+        label: "Cortex-M0+",
+        triple: "thumbv6m-none-eabi",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m0plus",
+    },
+    Mcu {
+        label: "Cortex-M4F",
+        triple: "thumbv7em-none-eabihf",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m4",
+    },
+];
+
+/// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
+const REPORT_BINS: [&str; 4] = [
+    "report_cube",
+    "report_sphere",
+    "report_floor",
+    "report_floor_mip",
+];
+
+/// One mode of one report firmware on one MCU.
+pub struct ModeCount {
+    pub scene: String,
+    pub mode: String,
+    pub target: &'static str,
+    pub instructions: u64,
+    pub pixels: u64,
+    pub checksum: String,
+}
+
+/// Runs one report firmware once with the plugin's `mark=`; per-mode counts are the
+/// differences of the running region sum between marks, less the marker overhead.
+fn measure_modes(
+    llvm: &Path,
+    plugin: &Path,
+    m: &Mcu,
+    elf: &Path,
+) -> Result<Vec<ModeCount>, String> {
+    let nm = output(Command::new(llvm.join("llvm-nm")).arg(elf), "llvm-nm")?;
+    let sym = |s: &str| symbol(&nm, s).ok_or_else(|| format!("{}: no {s}", elf.display()));
+    let arg = format!(
+        "{},start={},end={},mark={}",
+        plugin.display(),
+        sym("bench_start")?,
+        sym("bench_end")?,
+        sym("bench_mark")?
+    );
+    let (ok, out, err) = qemu(m, elf, Some(arg))?;
+    if !ok {
+        return Err(format!(
+            "{} on {} failed:\n{out}{err}",
+            elf.display(),
+            m.label
+        ));
+    }
+    let marks: Vec<(u64, u64, u64)> = err
+        .lines()
+        .filter(|l| l.starts_with("icount: mark "))
+        .map(|l| {
+            (
+                num(l, "region_sum").unwrap_or(0),
+                num(l, "pairs").unwrap_or(0),
+                num(l, "first_pair").unwrap_or(0),
+            )
+        })
+        .collect();
+    let lines: Vec<&str> = out.lines().filter(|l| l.starts_with("mode ")).collect();
+    if marks.len() != lines.len() + 1 {
+        return Err(format!(
+            "{} on {}: {} marks for {} modes",
+            elf.display(),
+            m.label,
+            marks.len(),
+            lines.len()
+        ));
+    }
+    let mut v = Vec::new();
+    for (i, l) in lines.iter().enumerate() {
+        if kv(l, "error").is_some() {
+            return Err(format!("{} on {}: {l}", elf.display(), m.label));
+        }
+        let (a, b) = (marks[i], marks[i + 1]);
+        let overhead = (b.1 - a.1) * b.2;
+        v.push(ModeCount {
+            scene: kv(l, "scene").unwrap_or("?").to_string(),
+            mode: kv(l, "mode").unwrap_or("?").to_string(),
+            target: m.label,
+            instructions: (b.0 - a.0).saturating_sub(overhead),
+            pixels: num(l, "pixels").unwrap_or(0),
+            checksum: kv(l, "checksum").unwrap_or("?").to_string(),
+        });
+    }
+    Ok(v)
+}
+
+/// `cargo xtask report`, microcontroller part: builds the report firmwares for the
+/// Cortex-M0+ and Cortex-M4F, runs each once under QEMU and writes the per-mode counts to
+/// `tsv` (scene, mode, target, instructions, pixels, checksum). `progress` is told each step.
+pub fn report_mcu(
+    install: bool,
+    tsv: &Path,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Vec<ModeCount>, String> {
+    let llvm = ensure_tools(install)?;
+    let plugin = build_plugin()?;
+    let td = firmware_dir().join("target").join("report");
+    let mut cmd = Command::new("cargo");
+    cmd.current_dir(firmware_dir())
+        .args(["build", "--release"])
+        .arg("--target-dir")
+        .arg(&td)
+        .env("FIXEL_FW_MEMORY", "report")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("CARGO_TARGET_DIR");
+    for b in REPORT_BINS {
+        cmd.args(["--bin", b]);
+    }
+    for m in &REPORT_MCUS {
+        cmd.args(["--target", m.triple]);
+    }
+    progress("building the report firmwares (Cortex-M0+, Cortex-M4F)");
+    run_visible(
+        &mut cmd,
+        "(cd examples/firmware && FIXEL_FW_MEMORY=report cargo build --release \
+         --target-dir target/report --bin report_* --target <M0+, M4F>)",
+    )?;
+    let mut all = Vec::new();
+    let total = REPORT_BINS.len() * REPORT_MCUS.len();
+    let mut k = 0;
+    for bin in REPORT_BINS {
+        for m in &REPORT_MCUS {
+            k += 1;
+            progress(&format!("[{k}/{total}] QEMU: {bin} on {}", m.label));
+            let t0 = Instant::now();
+            let v = measure_modes(&llvm, &plugin, m, &elf(&td, m, bin))?;
+            eprintln!(
+                "xtask:   {} modes in {:.1} s",
+                v.len(),
+                t0.elapsed().as_secs_f64()
+            );
+            all.extend(v);
+        }
+    }
+    let mut s = String::from("scene\tmode\ttarget\tinstructions\tpixels\tchecksum\n");
+    for c in &all {
+        s.push_str(&format!(
+            "{}\t{}\t{}\t{}\t{}\t{}\n",
+            c.scene, c.mode, c.target, c.instructions, c.pixels, c.checksum
+        ));
+    }
+    if let Some(d) = tsv.parent() {
+        fs::create_dir_all(d).map_err(|e| e.to_string())?;
+    }
+    fs::write(tsv, s).map_err(|e| format!("{}: {e}", tsv.display()))?;
+    Ok(all)
+}

@@ -4,7 +4,7 @@
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
 use fixel::math::{Fx, Vec3};
-use fixel::texture::Texture;
+use fixel::texture::{MipTexture, Texture};
 
 /// Raw little-endian RGB565 bytes to colours, at compile time.
 const fn texels<const N: usize>(b: &[u8]) -> [Rgb565; N] {
@@ -33,6 +33,18 @@ texture!(T8_TEXELS, T8, 8, 8, "t8x8.bin");
 texture!(T64_TEXELS, T64, 64, 64, "t64x64.bin");
 texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
+
+/// Texels of `T(64, 64)` and its mip levels down to 1 x 1 (5461 texels, ~11 KB).
+pub static T64_MIP_TEXELS: [Rgb565; fixel::texture::mip::chain_len(64, 64, 7)] =
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/t64x64-mips.bin")));
+
+/// `T(64, 64)` with its full mip chain.
+pub fn t64_mips() -> MipTexture<'static> {
+    match MipTexture::new(&T64_MIP_TEXELS, 64, 64, 7) {
+        Ok(t) => t,
+        Err(e) => panic!("T64 mip chain: {e:?}"),
+    }
+}
 
 const fn v(x: i32, y: i32, z: i32) -> Vec3 {
     Vec3::new(Fx::from_bits(x), Fx::from_bits(y), Fx::from_bits(z))

@@ -7,6 +7,7 @@
 #![no_std]
 
 pub mod data;
+pub mod modes;
 pub mod scenes;
 pub mod size;
 
@@ -78,6 +79,15 @@ pub extern "C" fn bench_start() {
 pub extern "C" fn bench_end() {
     // SAFETY: as above.
     unsafe { core::ptr::write_volatile(core::ptr::addr_of_mut!(MARK), 2) }
+}
+
+/// Between the modes of a multi-mode firmware (`report_*`): the QEMU plugin prints its
+/// running region sum here (`mark=` argument), so each mode's count is a difference.
+#[inline(never)]
+#[no_mangle]
+pub extern "C" fn bench_mark() {
+    // SAFETY: as above.
+    unsafe { core::ptr::write_volatile(core::ptr::addr_of_mut!(MARK), 3) }
 }
 
 extern "C" {
@@ -218,4 +228,78 @@ pub fn report(
             false
         }
     }
+}
+
+/// Starts a multi-mode firmware (`report_*`, `cargo xtask report`): pair 0 (an empty
+/// region: the marker overhead, subtracted per pair by xtask) and the first [`bench_mark`].
+pub fn report_begin() {
+    bench_start();
+    bench_end();
+    bench_mark();
+}
+
+/// Runs one frame of `scene` in mode `m` with a counted region around the renderer (band
+/// checksums left out, as in [`report`]), then a [`bench_mark`], and prints
+/// `mode scene=… mode=… checksum=… pixels=… rewalked=…`. Returns success.
+///
+/// Call it with a constant mode (see `report_modes!`) so only that mode's span loop is
+/// linked: a run-time mode links all 50 and overflows the flash. Not inlined: each mode
+/// (a distinct closure type) gets its own function and stack frame, instead of one frame
+/// holding every mode's locals (which overflows the 16 KB of RAM).
+#[inline(never)]
+pub fn report_mode(
+    scene: &str,
+    m: &modes::Mode,
+    frame: impl FnOnce(&mut dyn FnMut(), &mut dyn FnMut()) -> Result<scenes::FrameResult, fixel::Error>,
+) -> bool {
+    bench_start();
+    let r = frame(&mut || bench_end(), &mut || bench_start());
+    bench_end();
+    bench_mark();
+    match r {
+        Ok(r) => {
+            outln!(
+                "mode scene={} mode={}-{}-{} checksum=0x{:08x} pixels={} rewalked={}",
+                scene,
+                m.lit_name(),
+                m.filter_name(),
+                m.proj_name(),
+                r.checksum,
+                r.stats.pixels,
+                r.stats.rewalked
+            );
+            true
+        }
+        Err(e) => {
+            outln!(
+                "mode scene={} mode={}-{}-{} error={:?}",
+                scene,
+                m.lit_name(),
+                m.filter_name(),
+                m.proj_name(),
+                e
+            );
+            false
+        }
+    }
+}
+
+/// `report_modes!(scene, LIST, [0 1 2 …], |m, pause, resume| frame)`: [`report_begin`],
+/// then [`report_mode`] for `LIST[i]` of each listed index, each with the mode as a
+/// constant (so only the listed span loops are linked). Evaluates to overall success.
+#[macro_export]
+macro_rules! report_modes {
+    ($scene:expr, $list:expr, [$($i:literal)*], |$m:ident, $pause:ident, $resume:ident| $frame:expr) => {{
+        const _: () = assert!($list.len() == [$($i),*].len());
+        $crate::report_begin();
+        let mut ok = true;
+        $({
+            const MODE: $crate::modes::Mode = $list[$i];
+            ok &= $crate::report_mode($scene, &MODE, |$pause, $resume| {
+                let $m = &MODE;
+                $frame
+            });
+        })*
+        ok
+    }};
 }

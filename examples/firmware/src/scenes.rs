@@ -109,8 +109,27 @@ pub fn render<M>(
 where
     M: fixel::pipeline::Stages + 'static,
 {
-    let vp = Viewport::new(0, 0, W, H)?;
-    let draw = Draw::new::<M>(Some(texture), vp, Cull::Back)?;
+    let draw = Draw::new::<M>(Some(texture), viewport()?, Cull::Back)?;
+    render_draw(buf, &draw, mesh, model, far, lit, pause, resume)
+}
+
+/// The full-frame viewport every scene uses.
+pub fn viewport() -> Result<Viewport, Error> {
+    Viewport::new(0, 0, W, H)
+}
+
+/// Like [`render`] with a ready draw (any mode: see `modes.rs`).
+#[allow(clippy::too_many_arguments)]
+pub fn render_draw(
+    buf: &mut Buffers,
+    draw: &Draw<'_, Rgb565>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    far: i32,
+    lit: bool,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
     let camera = demo::camera(far);
     let light = DirectionalLight::default();
     let light = if lit { Some(&light) } else { None };
@@ -118,7 +137,7 @@ where
     let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
     let stats = bands
         .render(
-            &[&draw],
+            &[draw],
             &mut buf.bins,
             Rgb565::new(0, 0, 0),
             |sink| {
@@ -196,6 +215,72 @@ where
     render::<M>(
         buf,
         texture,
+        &m.mesh()?,
+        &Mat4::IDENTITY,
+        200,
+        false,
+        pause,
+        resume,
+    )
+}
+
+/// Scene `cube`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(128, 128)`).
+pub fn cube_with(
+    buf: &mut Buffers,
+    draw: &Draw<'_, Rgb565>,
+    lit: bool,
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let m = demo::cube();
+    render_draw(
+        buf,
+        draw,
+        &m.mesh()?,
+        &demo::cube_model(i),
+        20,
+        lit,
+        pause,
+        resume,
+    )
+}
+
+/// Scene `sphere`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(256, 128)`).
+#[allow(clippy::too_many_arguments)]
+pub fn sphere_with(
+    buf: &mut Buffers,
+    draw: &Draw<'_, Rgb565>,
+    mesh: &Mesh<'_>,
+    lit: bool,
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    render_draw(
+        buf,
+        draw,
+        mesh,
+        &demo::sphere_model(i),
+        20,
+        lit,
+        pause,
+        resume,
+    )
+}
+
+/// Scene `floor` drawn with `draw` (unlit; texture `T(64, 64)`, with its mip chain for the
+/// mipmapped filters).
+pub fn floor_with(
+    buf: &mut Buffers,
+    draw: &Draw<'_, Rgb565>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let m = demo::floor();
+    render_draw(
+        buf,
+        draw,
         &m.mesh()?,
         &Mat4::IDENTITY,
         200,

@@ -1,0 +1,25 @@
+//! `cargo xtask report`: scene `floor`, once per mode of `modes::FLOOR_MODES` (`T(64, 64)`
+//! with its mip chain in flash). All 25 span loops do not fit in 256 KB of flash: this one
+//! has the unmipmapped filters, `report_floor_mip` the mipmapped ones.
+#![no_std]
+#![no_main]
+
+use fixel_firmware::{data, modes, scenes};
+
+fn run() -> bool {
+    let mut buf = scenes::Buffers::new();
+    let Ok(vp) = scenes::viewport() else {
+        return false;
+    };
+    fixel_firmware::report_modes!(
+        "floor",
+        modes::FLOOR_PLAIN_MODES,
+        [0 1 2 3 4 5 6 7 8 9],
+        |m, pause, resume| {
+            let draw = m.draw(core::hint::black_box(data::t64_mips()), vp)?;
+            scenes::floor_with(&mut buf, &draw, pause, resume)
+        }
+    )
+}
+
+fixel_firmware::entry!(run);

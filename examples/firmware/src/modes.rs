@@ -1,0 +1,248 @@
+//! The mode matrix of `cargo xtask report` (issue 6): every projection x filter x lighting
+//! combination measured on each benchmark scene, as typed pipelines (the way a firmware
+//! builds them: one monomorphised span loop per mode).
+//!
+//! Shared word for word by the report firmwares (`src/bin/report_*.rs`) and the host report
+//! (`host-tests/src/bin/report.rs`, included there with `#[path]`), so the mode a
+//! microcontroller counts and the mode the host times and measures are the same code.
+//! Only `fixel` and `core` are used here.
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::pipeline::{
+    Adaptive, Affine, DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Replace, Subdivided,
+};
+use fixel::prelude::{Cull, Error, Viewport};
+use fixel::texture::{
+    Bilinear, Lod, LodGranularity, MipTexture, Nearest, NearestMipmapNearest, Repeat, Trilinear,
+};
+
+/// Projection of a mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Proj {
+    /// Screen-linear (`Affine`).
+    Affine,
+    /// Exact every 8 pixels (`Subdivided`, `log2_n = 3`).
+    Sub8,
+    /// Exact every 16 pixels (`Subdivided`, `log2_n = 4`).
+    Sub16,
+    /// Exact at every pixel (`Exact`).
+    Exact,
+    /// Affine or exact per triangle from an error budget of 1/4 texel
+    /// (`Projection::Adaptive { budget: 64 }`, the default of the `Adaptive` marker).
+    Adaptive,
+}
+
+/// Texture filter of a mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filt {
+    /// `Nearest`, level 0.
+    Nearest,
+    /// `Bilinear`, level 0.
+    Bilinear,
+    /// `NearestMipmapNearest`, LOD per pixel.
+    NearestMip,
+    /// `Trilinear`, LOD per pixel.
+    Trilinear,
+    /// `Trilinear`, LOD once per span.
+    TrilinearSpan,
+}
+
+impl Filt {
+    /// True when the filter reads a mip chain.
+    pub const fn mipmapped(self) -> bool {
+        matches!(
+            self,
+            Filt::NearestMip | Filt::Trilinear | Filt::TrilinearSpan
+        )
+    }
+}
+
+/// How a scene is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mode {
+    /// Per-vertex light modulated into the texel (`ModulateIntensity`), else `Replace`.
+    pub lit: bool,
+    /// Texture filter.
+    pub filter: Filt,
+    /// Projection.
+    pub proj: Proj,
+}
+
+impl Mode {
+    /// Lighting part of the name: `lit` or `unlit`.
+    pub const fn lit_name(&self) -> &'static str {
+        if self.lit {
+            "lit"
+        } else {
+            "unlit"
+        }
+    }
+
+    /// Filter part of the name.
+    pub const fn filter_name(&self) -> &'static str {
+        match self.filter {
+            Filt::Nearest => "nearest",
+            Filt::Bilinear => "bilinear",
+            Filt::NearestMip => "nearest-mip-nearest",
+            Filt::Trilinear => "trilinear",
+            Filt::TrilinearSpan => "trilinear-span",
+        }
+    }
+
+    /// Projection part of the name.
+    pub const fn proj_name(&self) -> &'static str {
+        match self.proj {
+            Proj::Affine => "affine",
+            Proj::Sub8 => "sub8",
+            Proj::Sub16 => "sub16",
+            Proj::Exact => "exact",
+            Proj::Adaptive => "adaptive",
+        }
+    }
+
+    /// `lit-bilinear-exact`, `unlit-trilinear-span-sub16`, ...
+    pub fn write_name(&self, out: &mut impl core::fmt::Write) -> core::fmt::Result {
+        write!(
+            out,
+            "{}-{}-{}",
+            self.lit_name(),
+            self.filter_name(),
+            self.proj_name()
+        )
+    }
+
+    /// The typed draw of this mode (`Repeat` wrap, `DepthLess`, back faces culled).
+    /// `tex` must hold a full mip chain when the filter is mipmapped. Inlined so that a
+    /// constant mode links only its own span loop.
+    #[inline(always)]
+    pub fn draw<'a>(&self, tex: MipTexture<'a>, vp: Viewport) -> Result<Draw<'a, Rgb565>, Error> {
+        macro_rules! typed {
+            ($p:ty, $f:ty) => {
+                if self.lit {
+                    Draw::new_mip::<Pipeline<$p, $f, Repeat, Repeat, ModulateIntensity, DepthLess>>(
+                        Some(tex),
+                        vp,
+                        Cull::Back,
+                    )
+                } else {
+                    Draw::new_mip::<Pipeline<$p, $f, Repeat, Repeat, Replace, DepthLess>>(
+                        Some(tex),
+                        vp,
+                        Cull::Back,
+                    )
+                }
+            };
+        }
+        macro_rules! by_filter {
+            ($p:ty) => {
+                match self.filter {
+                    Filt::Nearest => typed!($p, Nearest),
+                    Filt::Bilinear => typed!($p, Bilinear),
+                    Filt::NearestMip => typed!($p, NearestMipmapNearest),
+                    Filt::Trilinear | Filt::TrilinearSpan => typed!($p, Trilinear),
+                }
+            };
+        }
+        let draw = match self.proj {
+            Proj::Affine => by_filter!(Affine)?,
+            Proj::Sub8 => by_filter!(Subdivided)?.with_subdivision(3)?,
+            Proj::Sub16 => by_filter!(Subdivided)?.with_subdivision(4)?,
+            Proj::Exact => by_filter!(Exact)?,
+            Proj::Adaptive => by_filter!(Adaptive)?.with_adaptive_budget(64),
+        };
+        Ok(if self.filter == Filt::TrilinearSpan {
+            draw.with_lod(Lod {
+                granularity: LodGranularity::Span,
+                ..Lod::default()
+            })
+        } else {
+            draw
+        })
+    }
+}
+
+const PROJS: [Proj; 5] = [
+    Proj::Affine,
+    Proj::Sub8,
+    Proj::Sub16,
+    Proj::Exact,
+    Proj::Adaptive,
+];
+
+/// `lit` x `filters` x every projection, lit first.
+const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] {
+    assert!(N == lights.len() * filters.len() * PROJS.len());
+    let mut out = [Mode {
+        lit: false,
+        filter: Filt::Nearest,
+        proj: Proj::Affine,
+    }; N];
+    let mut k = 0;
+    let mut l = 0;
+    while l < lights.len() {
+        let mut f = 0;
+        while f < filters.len() {
+            let mut p = 0;
+            while p < PROJS.len() {
+                out[k] = Mode {
+                    lit: lights[l],
+                    filter: filters[f],
+                    proj: PROJS[p],
+                };
+                k += 1;
+                p += 1;
+            }
+            f += 1;
+        }
+        l += 1;
+    }
+    out
+}
+
+/// Modes of the lit scenes (cube, sphere): lit and unlit, nearest and bilinear, every
+/// projection.
+pub const LIT_SCENE_MODES: [Mode; 20] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
+
+/// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
+/// projection.
+pub const FLOOR_MODES: [Mode; 25] = matrix(
+    &[false],
+    &[
+        Filt::Nearest,
+        Filt::Bilinear,
+        Filt::NearestMip,
+        Filt::Trilinear,
+        Filt::TrilinearSpan,
+    ],
+);
+
+/// The floor's unmipmapped modes (firmware `report_floor`).
+pub const FLOOR_PLAIN_MODES: [Mode; 10] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+
+/// The floor's mipmapped modes (firmware `report_floor_mip`).
+pub const FLOOR_MIP_MODES: [Mode; 15] = matrix(
+    &[false],
+    &[Filt::NearestMip, Filt::Trilinear, Filt::TrilinearSpan],
+);
+
+/// The sphere's modes on microcontrollers: its 2208 triangles overflow the bins, so the
+/// geometry runs once per band and dominates the cost (~16,000 instructions per pixel on
+/// the M4F against ~300 for the span loop); the projection and filter barely show, and
+/// each QEMU run is ~1.3 G instructions on the M0+. Three modes bracket it.
+pub const SPHERE_MCU_MODES: [Mode; 3] = [
+    Mode {
+        lit: false,
+        filter: Filt::Nearest,
+        proj: Proj::Affine,
+    },
+    Mode {
+        lit: true,
+        filter: Filt::Bilinear,
+        proj: Proj::Adaptive,
+    },
+    Mode {
+        lit: true,
+        filter: Filt::Bilinear,
+        proj: Proj::Exact,
+    },
+];
