@@ -67,8 +67,9 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     /// A draw whose stages are the types of `M` (see [`Pipeline`]); only that span loop is
     /// compiled in. `texture` is required when `M`'s shading samples one.
     ///
-    /// `projection` supplies the subdivision length when `M::P` is [`Subdivided`]; wrap modes
-    /// and the rest come from the types.
+    /// Everything comes from the types, except two lengths with defaults: [`Subdivided`]
+    /// uses N = 16 (change with [`Draw::with_subdivision`]) and [`Adaptive`] a budget of
+    /// 1/4 texel ([`Draw::with_adaptive_budget`]).
     pub fn new<M>(
         texture: Option<Texture<'a>>,
         viewport: Viewport,
@@ -76,9 +77,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     ) -> Result<Self, Error>
     where
         M: Stages + 'a,
-        M::WU: FromWrap,
-        M::WV: FromWrap,
-        M::F: FromMode,
     {
         Self::new_mip::<M>(texture.map(MipTexture::single), viewport, cull)
     }
@@ -92,9 +90,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     ) -> Result<Self, Error>
     where
         M: Stages + 'a,
-        M::WU: FromWrap,
-        M::WV: FromWrap,
-        M::F: FromMode,
     {
         let projection = match <M::P as ProjectionStage>::KIND {
             ProjKind::Affine => Projection::Affine,
@@ -258,9 +253,6 @@ fn raster_triangle<'a, M, C>(
 ) -> u32
 where
     M: Stages,
-    M::WU: FromWrap,
-    M::WV: FromWrap,
-    M::F: FromMode,
     C: TargetColor,
 {
     let vp = draw.viewport.rect();

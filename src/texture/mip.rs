@@ -276,86 +276,39 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     ) -> u16;
 }
 
-impl TexSampler for Nearest {
-    const LOD: bool = false;
-    const FILTER: Filter = Filter::Nearest;
-    #[inline(always)]
-    fn sample_base<WU: WrapMode, WV: WrapMode>(
-        self,
-        base: &Texture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-    ) -> u16 {
-        Nearest::sample(base, wu, wv, u, v)
-    }
-    fn sample_mip<WU: WrapMode, WV: WrapMode>(
-        self,
-        t: &MipTexture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-        _: i32,
-    ) -> u16 {
-        Nearest::sample(t.base(), wu, wv, u, v)
-    }
+/// The plain samplers: no level of detail, always level 0.
+macro_rules! plain_sampler {
+    ($($t:ident => $f:expr),* $(,)?) => {$(
+        impl TexSampler for $t {
+            const LOD: bool = false;
+            const FILTER: Filter = $f;
+            #[inline(always)]
+            fn sample_mip<WU: WrapMode, WV: WrapMode>(
+                self,
+                t: &MipTexture<'_>,
+                wu: WU,
+                wv: WV,
+                u: i32,
+                v: i32,
+                _: i32,
+            ) -> u16 {
+                $t::sample(t.base(), wu, wv, u, v)
+            }
+            #[inline(always)]
+            fn sample_base<WU: WrapMode, WV: WrapMode>(
+                self,
+                base: &Texture<'_>,
+                wu: WU,
+                wv: WV,
+                u: i32,
+                v: i32,
+            ) -> u16 {
+                $t::sample(base, wu, wv, u, v)
+            }
+        }
+    )*};
 }
-
-impl TexSampler for Bilinear {
-    const LOD: bool = false;
-    const FILTER: Filter = Filter::Bilinear;
-    #[inline(always)]
-    fn sample_base<WU: WrapMode, WV: WrapMode>(
-        self,
-        base: &Texture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-    ) -> u16 {
-        Bilinear::sample(base, wu, wv, u, v)
-    }
-    fn sample_mip<WU: WrapMode, WV: WrapMode>(
-        self,
-        t: &MipTexture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-        _: i32,
-    ) -> u16 {
-        Bilinear::sample(t.base(), wu, wv, u, v)
-    }
-}
-
-impl TexSampler for BilinearFast {
-    const LOD: bool = false;
-    const FILTER: Filter = Filter::Bilinear;
-    #[inline(always)]
-    fn sample_base<WU: WrapMode, WV: WrapMode>(
-        self,
-        base: &Texture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-    ) -> u16 {
-        BilinearFast::sample(base, wu, wv, u, v)
-    }
-    fn sample_mip<WU: WrapMode, WV: WrapMode>(
-        self,
-        t: &MipTexture<'_>,
-        wu: WU,
-        wv: WV,
-        u: i32,
-        v: i32,
-        _: i32,
-    ) -> u16 {
-        BilinearFast::sample(t.base(), wu, wv, u, v)
-    }
-}
+plain_sampler!(Nearest => Filter::Nearest, Bilinear => Filter::Bilinear, BilinearFast => Filter::Bilinear);
 
 /// Blends two RGB565 colours, `f` in `0..=256` (weight of `b`), per channel, rounded.
 #[inline(always)]
