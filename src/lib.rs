@@ -36,8 +36,8 @@
 //! | fixed-point math | [`math`] | `I16F16` ([`math::Fx`]) vectors and 4x4 matrices; angles in 1/65536 turn; table sin/cos; division-free reciprocal |
 //! | geometry | [`geometry`] | clip space `I16F16`; clipping in `i64`; screen coordinates with 4 sub-pixel bits; depth `0..=65535` with 14 fraction bits |
 //! | raster | [`raster`] | exact integer edge DDA (top-left rule) emitting spans to a sink; plane equations with wrapping `i32` stepping |
-//! | pipeline | [`pipeline`] | per-triangle set-up; `u, v` in texels as `I16F16` bits; `q = w_min / w` as Q30; colour Q8.16 |
-//! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear |
+//! | pipeline | [`pipeline`] | per-triangle set-up; `u, v` in texels as `I16F16` bits; `q = w_min / w` as Q30; colour Q8.16; affine, subdivided, exact or adaptive (per triangle) interpolation |
+//! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |
 //! | targets | [`target`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
 //! | scene | [`scene`] | meshes, camera, per-vertex directional light |
