@@ -141,7 +141,9 @@ impl<'a> Texture<'a> {
     pub fn texel_raw(&self, i: u32, j: u32) -> u16 {
         let i = i & (self.width() - 1);
         let j = j & (self.height() - 1);
-        let idx = ((j << self.log2_width) | i) as usize;
+        // texels.len() = width * height is a power of two (>= 1), so masking with len - 1
+        // keeps idx unchanged and lets the optimiser see idx < len.
+        let idx = ((j << self.log2_width) | i) as usize & self.texels.len().wrapping_sub(1);
         // i < width and j < height, so idx < width * height == texels.len() (checked by the
         // constructors; the fields are private). The compiler cannot see that invariant, so
         // `[idx]` would keep a (dead) panic path; `get` costs the same compare and leaves
