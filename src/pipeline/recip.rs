@@ -28,12 +28,14 @@ const fn table() -> [u32; 257] {
 
 static RECIP_TABLE: [u32; 257] = table();
 
-/// `2^46 / q` (that is, `1/q` for Q30 `q`, as Q16), for `q` clamped into
-/// `(Q_FLOOR, Q_ONE]`: the result is below 2^31, so it is a non-negative `i32` and
-/// [`mul_q16`] is one signed 32x32->64 multiply (`smull`) where the core has one.
+/// `2^46 / q` (that is, `1/q` for Q30 `q`, as Q16), for `q` clamped below to
+/// `Q_FLOOR + 1`: the result is below 2^31, so it is a non-negative `i32` and [`mul_q16`]
+/// is one signed 32x32->64 multiply (`smull`) where the core has one. Values above
+/// `Q_ONE` (rounding at the nearest vertex) need no clamp: the table covers every
+/// normalised mantissa, so they get their own, correct reciprocal.
 #[inline(always)]
 pub fn recip_q30(q: i32) -> i32 {
-    let q = q.clamp(Q_FLOOR as i32 + 1, Q_ONE as i32) as u32;
+    let q = q.max(Q_FLOOR as i32 + 1) as u32;
     let (n, m) = normalize(q); // n in 1..=16, m = q << n in [2^31, 2^32)
     let f = m - (1 << 31);
     let idx = (f >> 23) as usize; // 0..=255
@@ -209,9 +211,24 @@ mod tests {
     }
 
     #[test]
+    fn above_one_stays_a_reciprocal() {
+        // q slightly above Q_ONE happens by rounding at the nearest vertex; the result has
+        // 16 significant bits there.
+        let mut q = Q_ONE;
+        while q < 2 * Q_ONE - 1 {
+            let got = f64::from(recip_q30(q as i32));
+            let want = (1u64 << 46) as f64 / f64::from(q);
+            assert!(((got - want) / want).abs() < 1.0 / 16384.0, "{q}");
+            q += 4099;
+        }
+    }
+
+    #[test]
     fn clamps_out_of_range_input() {
         assert_eq!(recip_q30(0), recip_q30(Q_FLOOR as i32 + 1));
         assert_eq!(recip_q30(-5), recip_q30(Q_FLOOR as i32 + 1));
-        assert_eq!(recip_q30(i32::MAX), recip_q30(Q_ONE as i32));
+        // Above Q_ONE (rounding at the nearest vertex): still the reciprocal, not a clamp.
+        let r = recip_q30(i32::MAX);
+        assert!((r - (1 << 15)).abs() <= 1, "{r}");
     }
 }
