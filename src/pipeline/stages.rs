@@ -131,7 +131,7 @@ pub struct Affine;
 impl ProjectionStage for Affine {
     const KIND: ProjKind = ProjKind::Affine;
 }
-/// Subdivided projection marker (N comes from the draw, default 16).
+/// Subdivided projection marker (N comes from the draw, default 8).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Subdivided;
 impl ProjectionStage for Subdivided {
