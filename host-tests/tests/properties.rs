@@ -219,7 +219,11 @@ proptest! {
         (nx, ny) in (1usize..9, 1usize..9),
         (w, h) in (1usize..48, 1usize..40),
         e in prop_oneof![Just(1.0), 1.0f64..2.5],
-        jitter in prop::collection::vec((-0.3f64..0.3, -0.3f64..0.3), 100),
+        // |jitter| < 1/6 of a cell keeps every cell's two triangles counter-clockwise for
+        // either diagonal: the orientation of (bl, br, tr) is at least 1 - 6|jitter|. With
+        // 0.3 a cell could fold (a clockwise, culled triangle over its neighbour), which is
+        // not a tiling; CI's proptest found one (the regression file keeps the seed).
+        jitter in prop::collection::vec((-0.16f64..0.16, -0.16f64..0.16), 100),
         diag in prop::collection::vec(any::<bool>(), 64),
         ws in prop::collection::vec(prop_oneof![Just(1.0), 0.25f64..4.0], 100),
     ) {
