@@ -376,6 +376,7 @@ impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, M
     ) -> u16 {
         Mag::sample(base, wu, wv, u, v)
     }
+    #[inline(always)]
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
@@ -456,6 +457,7 @@ impl TexSampler for DynMip {
             Filter::Bilinear => Bilinear::sample(base, wu, wv, u, v),
         }
     }
+    #[inline(always)]
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
