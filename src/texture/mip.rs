@@ -457,7 +457,8 @@ impl TexSampler for DynMip {
             Filter::Bilinear => Bilinear::sample(base, wu, wv, u, v),
         }
     }
-    #[inline(always)]
+    // Not inlined: the run-time path instantiates it in every span loop, and four
+    // inlined mip samplers each would overflow a 256 KB part (`cargo xtask size`).
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
         self,
         t: &MipTexture<'_>,
