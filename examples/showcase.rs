@@ -17,8 +17,8 @@ use fixel::demo;
 use fixel::geometry::ClipVertex;
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
-use fixel::target::band::Binned;
-use fixel::target::DrawTargetFlush;
+use fixel::surface::band::Binned;
+use fixel::surface::DrawTargetFlush;
 
 /// A display in RAM: what `embedded-graphics-simulator` would be, without a window.
 struct Display {

@@ -39,7 +39,7 @@
 //! | pipeline | [`pipeline`] | per-triangle set-up; `u, v` in texels as `I16F16` bits; `q = w_min / w` as Q30; colour Q8.16; affine, subdivided, exact or adaptive (per triangle) interpolation |
 //! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |
-//! | targets | [`target`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
+//! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
 //! | scene | [`scene`] | meshes, camera, per-vertex directional light |
 //!
 //! ## Conventions (OpenGL ES unless stated)
@@ -81,7 +81,7 @@ pub mod math;
 pub mod pipeline;
 pub mod raster;
 pub mod scene;
-pub mod target;
+pub mod surface;
 pub mod texture;
 
 pub use error::Error;
@@ -91,7 +91,7 @@ pub mod prelude {
     pub use crate::geometry::{ClipVertex, Cull, Viewport};
     pub use crate::math::{Angle, Fx, Mat4, Vec3};
     pub use crate::pipeline::{DepthTest, Draw, DrawMode, Pipeline, Projection, Shading};
-    pub use crate::target::{BandRenderer, Frame, RenderTarget};
+    pub use crate::surface::{BandRenderer, Frame, RenderTarget};
     pub use crate::texture::{Filter, Texture, Wrap};
     pub use crate::Error;
 }

@@ -30,7 +30,7 @@ use std::time::Instant;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::pipeline::{Draw, Exact, NoDepth, Pipeline, Replace};
-use fixel::target::Frame;
+use fixel::surface::Frame;
 use fixel::texture::mip::{chain_len, full_levels};
 use fixel::texture::{
     generate_mips, Bilinear, LinearMipmapNearest, Lod, LodGranularity, MipTexture, Nearest,

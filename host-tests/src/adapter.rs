@@ -8,7 +8,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
-use fixel::target::Frame;
+use fixel::surface::Frame;
 use fixel::texture::mip::{chain_len, full_levels};
 use fixel::texture::{
     generate_mips, Filter, Lod, LodGranularity, MipFilter, MipTexture, Texture, Wrap,

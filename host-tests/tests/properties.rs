@@ -16,8 +16,8 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
-use fixel::target::band::Binned;
-use fixel::target::{BandRenderer, Frame};
+use fixel::surface::band::Binned;
+use fixel::surface::{BandRenderer, Frame};
 use fixel::texture::{Filter, Wrap};
 use proptest::prelude::*;
 

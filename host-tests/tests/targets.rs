@@ -22,8 +22,8 @@ use embedded_graphics_core::Pixel;
 use fixel::color::TargetColor;
 use fixel::geometry::{ClipVertex, Viewport};
 use fixel::pipeline::{Draw, DrawMode, Projection, Shading};
-use fixel::target::band::Binned;
-use fixel::target::{BandRenderer, DrawTargetFlush, Frame};
+use fixel::surface::band::Binned;
+use fixel::surface::{BandRenderer, DrawTargetFlush, Frame};
 use fixel::texture::Texture;
 use fixel::Error;
 use host_tests::{adapter, scenes};
@@ -85,7 +85,7 @@ fn banded(
     rows: u32,
     bins: usize,
     flush: &mut dyn FnMut(&Frame<'_, Rgb565>) -> Result<(), Infallible>,
-) -> fixel::target::band::BandStats {
+) -> fixel::surface::band::BandStats {
     let d = draw::<Rgb565>(s);
     let mut color = vec![BLACK; (W * rows) as usize];
     let mut depth = vec![0u16; (W * rows) as usize];

@@ -18,7 +18,7 @@ use super::stages::*;
 use crate::color::TargetColor;
 use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewport};
 use crate::raster::{rasterize, Rect, SpanSink};
-use crate::target::RenderTarget;
+use crate::surface::RenderTarget;
 use crate::texture::{
     Bilinear, DynMip, DynWrap, Lod, LodGranularity, MipFilter, MipTexture, Nearest, TexSampler,
     Texture, Wrap, WrapMode,

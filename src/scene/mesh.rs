@@ -4,7 +4,7 @@ use crate::color::TargetColor;
 use crate::geometry::{ClipVertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
 use crate::pipeline::Draw;
-use crate::target::RenderTarget;
+use crate::surface::RenderTarget;
 use crate::Error;
 
 use super::{Camera, DirectionalLight};

@@ -9,7 +9,7 @@ use fixel::demo;
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline, Replace};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
-use fixel::target::band::{BandStats, Binned};
+use fixel::surface::band::{BandStats, Binned};
 use fixel::texture::{Bilinear, Nearest, Repeat};
 
 /// Frame size of every scene.

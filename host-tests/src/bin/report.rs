@@ -42,7 +42,7 @@ use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Mat4;
 use fixel::pipeline::{DepthTest, DrawMode, Shading};
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
-use fixel::target::Frame;
+use fixel::surface::Frame;
 use fixel::texture::mip::{chain_len, full_levels};
 use fixel::texture::{generate_mips, MipTexture, Texture};
 use host_tests::adapter;

@@ -7,7 +7,7 @@ use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{ClipVertex, Cull, ScreenTriangle, Viewport};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Shading};
-use fixel::target::RenderTarget;
+use fixel::surface::RenderTarget;
 use fixel::texture::Texture;
 use host_tests::adapter;
 use host_tests::reference::{RefTexture, RefTriangle, RefVertex};

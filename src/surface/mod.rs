@@ -1,4 +1,4 @@
-//! Targets: where spans of finished pixels go.
+//! Surfaces (render targets): where spans of finished pixels go.
 //!
 //! The span writer needs rows, not pixels: [`RenderTarget::row_mut`] hands out one colour
 //! row slice (and its depth row, when the target has a depth buffer) per span, so the

@@ -119,7 +119,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     /// `width * rows` long).
     ///
     /// ```
-    /// use fixel::target::BandRenderer;
+    /// use fixel::surface::BandRenderer;
     /// use embedded_graphics_core::pixelcolor::Rgb565;
     /// let mut buf = [Rgb565::default(); 320 * 16];
     /// assert!(BandRenderer::new(&mut buf, 320, 16, 240).is_ok());

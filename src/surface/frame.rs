@@ -11,7 +11,7 @@ pub const DEPTH_CLEAR: u16 = u16::MAX;
 /// slices. Depth is optional: a scene that does not depth-test needs no depth memory.
 ///
 /// ```
-/// use fixel::target::Frame;
+/// use fixel::surface::Frame;
 /// use embedded_graphics_core::pixelcolor::Rgb565;
 /// let mut colour = [Rgb565::default(); 320 * 240];
 /// let mut depth = [0u16; 320 * 240];
