@@ -81,6 +81,7 @@ pub mod math;
 pub mod pipeline;
 pub mod raster;
 pub mod scene;
+pub mod shading;
 pub mod surface;
 pub mod texture;
 

@@ -11,10 +11,10 @@
 //! so two triangles sharing an edge compute bit-identical intersection points.
 //!
 //! Arithmetic: plane distances and interpolation in `i64`; the parameter `t` is Q30.
-//! Attributes (position, uv, colour) are interpolated linearly in clip space, which is
+//! Attributes (position and any number of varyings) are interpolated linearly in clip space, which is
 //! correct for perspective (GL does the same).
 
-use super::vertex::{ClipVertex, ScreenTriangle, ScreenVertex};
+use super::vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS};
 use super::viewport::{Cull, Viewport};
 
 /// Smallest clip-space `w` that reaches the rasterizer: 2^-8 (I16F16 bits 256). Keeps
@@ -24,31 +24,24 @@ pub const W_MIN_BITS: i32 = 256;
 const MAX_POLY: usize = 10;
 const PLANES: usize = 7;
 
-/// A clip vertex as plain integers: x, y, z, w, s, t, r, g, b.
-type Attr = [i32; 9];
-
-fn attr(v: &ClipVertex) -> Attr {
-    [
-        v.position[0].to_bits(),
-        v.position[1].to_bits(),
-        v.position[2].to_bits(),
-        v.position[3].to_bits(),
-        v.uv[0].to_bits(),
-        v.uv[1].to_bits(),
-        i32::from(v.color[0]),
-        i32::from(v.color[1]),
-        i32::from(v.color[2]),
-    ]
+/// A clip vertex as plain integers: position `x, y, z, w` (I16F16 bits) and the varyings.
+#[derive(Clone, Copy)]
+struct Attr<const N: usize> {
+    p: [i32; 4],
+    v: [i32; N],
 }
 
 #[inline]
-fn dist(plane: usize, a: &Attr, guard: (i64, i64)) -> i64 {
-    let (x, y, z, w) = (
-        i64::from(a[0]),
-        i64::from(a[1]),
-        i64::from(a[2]),
-        i64::from(a[3]),
-    );
+fn attr<const N: usize>(v: &Vertex<N>) -> Attr<N> {
+    Attr {
+        p: v.position.map(|c| c.to_bits()),
+        v: v.varyings,
+    }
+}
+
+#[inline]
+fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i64, i64)) -> i64 {
+    let [x, y, z, w] = a.p.map(i64::from);
     match plane {
         0 => w - i64::from(W_MIN_BITS),
         1 => z + w,
@@ -60,7 +53,7 @@ fn dist(plane: usize, a: &Attr, guard: (i64, i64)) -> i64 {
     }
 }
 
-fn outcode(a: &Attr, guard: (i64, i64)) -> u8 {
+fn outcode<const N: usize>(a: &Attr<N>, guard: (i64, i64)) -> u8 {
     let mut c = 0;
     for p in 0..PLANES {
         if dist(p, a, guard) < 0 {
@@ -70,8 +63,16 @@ fn outcode(a: &Attr, guard: (i64, i64)) -> u8 {
     c
 }
 
+/// `a + (b - a) t` for Q30 `t` in `[0, 1]`, rounded; exact in `i64` for any `i32` ends.
+#[inline]
+fn lerp_q30(a: i32, b: i32, t: i64) -> i32 {
+    let a = i64::from(a);
+    let d = i64::from(b) - a;
+    (a + ((d * t + (1 << 29)) >> 30)) as i32
+}
+
 /// Point on the edge from `inside` (distance `di >= 0`) to `outside` (`do_ < 0`).
-fn intersect(inside: &Attr, outside: &Attr, di: i64, do_: i64) -> Attr {
+fn intersect<const N: usize>(inside: &Attr<N>, outside: &Attr<N>, di: i64, do_: i64) -> Attr<N> {
     let mut num = di;
     let mut den = di - do_;
     while den >= 1 << 32 {
@@ -79,22 +80,40 @@ fn intersect(inside: &Attr, outside: &Attr, di: i64, do_: i64) -> Attr {
         den >>= 1;
     }
     let t = (num << 30) / den.max(1); // Q30 in [0, 1]
-    let mut out = [0; 9];
-    for k in 0..9 {
-        let a = i64::from(inside[k]);
-        let d = i64::from(outside[k]) - a;
-        out[k] = (a + ((d * t + (1 << 29)) >> 30)) as i32;
+    let mut out = *inside;
+    for k in 0..4 {
+        out.p[k] = lerp_q30(inside.p[k], outside.p[k], t);
+    }
+    for k in 0..N {
+        out.v[k] = lerp_q30(inside.v[k], outside.v[k], t);
     }
     out
 }
 
-/// Clips `tri` to the view volume and guard band, projects it with `vp`, culls per `cull`,
-/// and calls `emit` with each resulting screen triangle (0 to 8 of them).
+/// Clips a classic [`ClipVertex`] triangle (see [`clip_and_project_varyings`]); its
+/// screen triangles carry the varyings of [`ClipVertex::to_vertex`].
 pub fn clip_and_project(
     tri: &[ClipVertex; 3],
     vp: &Viewport,
     cull: Cull,
-    emit: &mut impl FnMut(&ScreenTriangle),
+    emit: &mut impl FnMut(&ScreenTriangle<CLASSIC_VARYINGS>),
+) {
+    clip_and_project_varyings(
+        &[tri[0].to_vertex(), tri[1].to_vertex(), tri[2].to_vertex()],
+        vp,
+        cull,
+        emit,
+    );
+}
+
+/// Clips `tri` to the view volume and guard band, projects it with `vp`, culls per `cull`,
+/// and calls `emit` with each resulting screen triangle (0 to 8 of them). Varyings are
+/// interpolated linearly in clip space at the new vertices, which is perspective-correct.
+pub fn clip_and_project_varyings<const N: usize>(
+    tri: &[Vertex<N>; 3],
+    vp: &Viewport,
+    cull: Cull,
+    emit: &mut impl FnMut(&ScreenTriangle<N>),
 ) {
     let guard = vp.guard;
     let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
@@ -106,12 +125,16 @@ pub fn clip_and_project(
     if codes[0] & codes[1] & codes[2] != 0 {
         return; // wholly outside one plane
     }
-    let mut poly = [[0i32; 9]; MAX_POLY];
+    let empty = Attr {
+        p: [0; 4],
+        v: [0; N],
+    };
+    let mut poly = [empty; MAX_POLY];
     let mut n = 3;
     poly[..3].copy_from_slice(&a);
     let any = codes[0] | codes[1] | codes[2];
     if any != 0 {
-        let mut next = [[0i32; 9]; MAX_POLY];
+        let mut next = [empty; MAX_POLY];
         for plane in 0..PLANES {
             if any & (1 << plane) == 0 {
                 continue;
@@ -140,18 +163,16 @@ pub fn clip_and_project(
             poly[..n].copy_from_slice(&next[..n]);
         }
     }
-    let mut screen = [ScreenVertex::default(); MAX_POLY];
-    for (s, p) in screen.iter_mut().zip(&poly[..n]) {
-        let w = p[3].max(W_MIN_BITS);
-        let (x, y, z) = vp.project(p[0], p[1], p[2], w);
-        let c = |v: i32| v.clamp(0, i32::from(u16::MAX)) as u16;
+    let mut screen = [ScreenVertex::<N>::default(); MAX_POLY];
+    for (s, a) in screen.iter_mut().zip(&poly[..n]) {
+        let w = a.p[3].max(W_MIN_BITS);
+        let (x, y, z) = vp.project(a.p[0], a.p[1], a.p[2], w);
         *s = ScreenVertex {
             x,
             y,
             z,
             w,
-            uv: [p[4], p[5]],
-            color: [c(p[6]), c(p[7]), c(p[8])],
+            varyings: a.v,
         };
     }
     for i in 1..n - 1 {

@@ -45,9 +45,50 @@ const fn q8(c: u8) -> u16 {
     ((c as u32 * 257 + 128) >> 8) as u16
 }
 
+/// A clip-space vertex with `N` varyings: the open pipeline's input.
+///
+/// * `position`: `(x, y, z, w)` in clip space, I16F16 (±32768, resolution 2^-16).
+/// * `varyings`: `N` attributes in whatever fixed-point format the shader documents for
+///   them (raw `i32` bits). They are interpolated linearly in clip space by the clipper and
+///   perspective-correctly (or as the draw's projection says) across the triangle, so any
+///   format works as long as each varying's values and their differences fit `i32`.
+///   Textured built-in shaders take normalized texture coordinates as I16F16 bits (1.0 = one
+///   whole texture) and colours as Q8 with 16 more fraction bits (`256 << 16` = 1.0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Vertex<const N: usize> {
+    /// Clip-space position `(x, y, z, w)`.
+    pub position: [Fx; 4],
+    /// The shader's varyings, raw fixed-point bits.
+    pub varyings: [i32; N],
+}
+
+impl<const N: usize> Vertex<N> {
+    /// A vertex at `position` with `varyings`.
+    pub const fn new(position: [Fx; 4], varyings: [i32; N]) -> Self {
+        Vertex { position, varyings }
+    }
+}
+
+/// The number of varyings of a [`ClipVertex`] (`u, v, r, g, b`).
+pub const CLASSIC_VARYINGS: usize = 5;
+
+impl ClipVertex {
+    /// The classic vertex as an open-pipeline [`Vertex`]: `[u, v, r, g, b]` with `u, v` the
+    /// I16F16 bits of `uv` and each colour channel clamped to [`COLOR_ONE`] and shifted to
+    /// Q8.16 (`256 << 16` = 1.0).
+    #[inline]
+    pub fn to_vertex(&self) -> Vertex<CLASSIC_VARYINGS> {
+        let c = |k: usize| i32::from(self.color[k].min(COLOR_ONE)) << 16;
+        Vertex {
+            position: self.position,
+            varyings: [self.uv[0].to_bits(), self.uv[1].to_bits(), c(0), c(1), c(2)],
+        }
+    }
+}
+
 /// A vertex after clipping, perspective divide and viewport mapping.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ScreenVertex {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScreenVertex<const N: usize = CLASSIC_VARYINGS> {
     /// Screen x, sub-pixel units (4 fractional bits), inside the guard band.
     pub x: i32,
     /// Screen y (down), sub-pixel units (4 fractional bits), inside the guard band.
@@ -56,11 +97,22 @@ pub struct ScreenVertex {
     pub z: i32,
     /// Clip-space `w`, I16F16 bits, positive (at least the clipper's minimum `w`).
     pub w: i32,
-    /// Normalized texture coordinates, I16F16 bits.
-    pub uv: [i32; 2],
-    /// Gouraud colour, Q8 per channel.
-    pub color: [u16; 3],
+    /// The varyings, in the vertex's formats (for a [`ClipVertex`]: `u, v` as normalized
+    /// I16F16 bits and `r, g, b` as Q8.16).
+    pub varyings: [i32; N],
+}
+
+impl<const N: usize> Default for ScreenVertex<N> {
+    fn default() -> Self {
+        ScreenVertex {
+            x: 0,
+            y: 0,
+            z: 0,
+            w: 0,
+            varyings: [0; N],
+        }
+    }
 }
 
 /// Three screen vertices. Winding is kept as given (culling has already been applied).
-pub type ScreenTriangle = [ScreenVertex; 3];
+pub type ScreenTriangle<const N: usize = CLASSIC_VARYINGS> = [ScreenVertex<N>; 3];

@@ -12,16 +12,15 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 
-use super::setup::setup;
-use super::span::{span, SpanCtx};
+use super::raster::{raster_shaded, RasterParams};
 use super::stages::*;
 use crate::color::TargetColor;
 use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewport};
-use crate::raster::{rasterize, Rect, SpanSink};
+use crate::shading::builtin::Classic;
+use crate::shading::TexBinding;
 use crate::surface::RenderTarget;
 use crate::texture::{
-    Bilinear, DynMip, DynWrap, Lod, LodGranularity, MipFilter, MipTexture, Nearest, TexSampler,
-    Texture, Wrap, WrapMode,
+    Bilinear, DynMip, DynWrap, Lod, MipFilter, MipTexture, Nearest, TexSampler, Texture, WrapMode,
 };
 use crate::Error;
 
@@ -231,22 +230,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     }
 }
 
-struct Writer<'c, 't, M: Stages, C> {
-    ctx: SpanCtx<'c, M>,
-    target: &'t mut dyn RenderTarget<Color = C>,
-    pixels: u32,
-}
-
-impl<M: Stages, C: TargetColor> SpanSink for Writer<'_, '_, M, C> {
-    #[inline]
-    fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        if let Some((row, depth)) = self.target.row_mut(y) {
-            let n = span::<M, C>(&self.ctx, y, x0, x1, row, depth);
-            self.pixels = self.pixels.wrapping_add(n);
-        }
-    }
-}
-
+/// The classic path: the built-in shader of `M`, fed the classic varyings.
 fn raster_triangle<'a, M, C>(
     draw: &Draw<'a, C>,
     tri: &ScreenTriangle,
@@ -256,88 +240,27 @@ where
     M: Stages,
     C: TargetColor,
 {
-    let vp = draw.viewport.rect();
-    let (r0, r1) = target.row_range();
-    let clip = Rect {
-        x0: vp.x0.max(0),
-        x1: vp.x1.min(target.width() as i32),
-        ..vp
-    }
-    .rows(r0, r1);
-    if clip.is_empty() {
-        return 0;
-    }
     let mode = &draw.mode;
-    let log2 = (
-        draw.texture.base().log2_width(),
-        draw.texture.base().log2_height(),
+    let tex = TexBinding::new_unchecked(
+        &draw.texture,
+        M::F::from_mode(mode),
+        M::WU::from_wrap(mode.wrap[0]),
+        M::WV::from_wrap(mode.wrap[1]),
+        mode.lod,
     );
-    let budget = match mode.projection {
-        // Q8 texels to the I16F16 texel units of the set-up.
-        Projection::Adaptive { budget } => i64::from(budget) << 8,
-        _ => 0,
-    };
-    let Some(setup) = setup(
+    let shader = <M::S as ShadingStage>::shader(tex, draw.flat);
+    let params = RasterParams::new(
+        &draw.viewport,
+        mode.projection,
+        mode.depth == DepthTest::Less,
+    );
+    raster_shaded::<_, M::P, M::D, C, { crate::geometry::CLASSIC_VARYINGS }>(
+        &shader,
         tri,
-        vp,
-        M::P::KIND,
-        M::S::KIND,
-        M::D::TEST,
-        log2,
-        mode.wrap,
-        budget,
-    ) else {
-        return 0;
-    };
-    let periodic = mode
-        .wrap
-        .map(|w| matches!(w, Wrap::Repeat | Wrap::MirroredRepeat));
-    let log2_n = match mode.projection {
-        Projection::Subdivided { log2_n } => u32::from(log2_n),
-        _ => 4,
-    };
-    let tri_lambda =
-        if <M::F as TexSampler>::LOD && mode.lod.granularity == LodGranularity::Triangle {
-            let (cx, cy) = setup.centroid;
-            if setup.affine {
-                super::interp::affine_lambda(&setup)
-            } else {
-                super::interp::hyper_lambda_at(&setup, cx, cy)
-            }
-        } else {
-            0
-        };
-    let ctx = SpanCtx::<M> {
-        setup,
-        tex: &draw.texture,
-        sampler: M::F::from_mode(mode),
-        lod: mode.lod,
-        tri_lambda,
-        wu: M::WU::from_wrap(mode.wrap[0]),
-        wv: M::WV::from_wrap(mode.wrap[1]),
-        log2_n,
-        flat: draw.flat,
-        periodic,
-        depth_on: mode.depth == DepthTest::Less,
-    };
-    let mut w = Writer {
-        ctx,
+        <M::S as ShadingStage>::Shader::<'_, M::F, M::WU, M::WV>::from_classic,
+        &params,
         target,
-        pixels: 0,
-    };
-    // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
-    // per span, nothing per pixel).
-    let sink: &mut dyn SpanSink = &mut w;
-    rasterize(
-        [
-            (tri[0].x, tri[0].y),
-            (tri[1].x, tri[1].y),
-            (tri[2].x, tri[2].y),
-        ],
-        clip,
-        sink,
-    );
-    w.pixels
+    )
 }
 
 /// The run-time dispatch table: one instance per (projection, filter, shading, depth).

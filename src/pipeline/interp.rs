@@ -1,4 +1,4 @@
-//! Span interpolators: how `(u, v, colour)` advance along a span in each projection mode.
+//! Span interpolators: how a shader's varyings advance along a span in each projection mode.
 //!
 //! * [`AffineInterp`]: adds per pixel, nothing else.
 //! * [`ExactInterp`]: steps `s = u q`, `t = v q`, `q` (and colour times `q`) linearly and
@@ -13,187 +13,158 @@
 
 use super::recip::{mul_q16, recip_q30};
 use super::setup::TriSetup;
+use crate::shading::Varyings;
 use crate::texture::mip::lambda_q8;
 
-/// One fragment's interpolated values: texel coordinates (I16F16 bits, before `uv_shift`)
-/// and colour channels (Q8 with 16 fraction bits).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Frag {
-    pub u: i32,
-    pub v: i32,
-    pub c: [i32; 3],
-}
-
-/// Interpolation along one span.
-pub(crate) trait Interp {
+/// Interpolation of the varyings `V` along one span.
+pub(crate) trait Interp<V: Varyings> {
     /// Starts at pixel `(x, y)` for a span of `len` pixels.
-    fn start(s: &TriSetup, x: i32, y: i32, len: u32, log2_n: u32) -> Self;
+    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self;
     /// Values at the current pixel.
-    fn frag(&self) -> Frag;
+    fn frag(&self) -> V;
     /// Moves one pixel right.
     fn step(&mut self);
-    /// Level of detail `lambda` (Q8.8, before bias) at the current pixel.
-    fn lambda(&self, s: &TriSetup) -> i32;
+    /// Level of detail `lambda` (Q8.8, before bias) of the varying pair `(a, b)` at the
+    /// current pixel.
+    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32;
+}
+
+#[inline(always)]
+fn get<V: Varyings>(v: &V, k: usize) -> i32 {
+    v.as_slice().get(k).copied().unwrap_or(0)
+}
+
+/// `v += d` per varying, wrapping.
+#[inline(always)]
+fn add<V: Varyings>(v: &mut V, d: &V) {
+    for k in 0..V::N {
+        v.as_mut_slice()[k] = v.as_slice()[k].wrapping_add(d.as_slice()[k]);
+    }
 }
 
 /// `lambda` of an affine mapping: constant derivatives, straight from the planes.
 #[inline(always)]
-pub(crate) fn affine_lambda(s: &TriSetup) -> i32 {
-    lambda_q8(s.u.dx, s.v.dx, s.u.dy, s.v.dy) + 256 * s.uv_shift as i32
+pub(crate) fn affine_lambda<V: Varyings>(s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+    lambda_q8(get(&s.dx, a), get(&s.dx, b), get(&s.dy, a), get(&s.dy, b))
 }
 
 /// `lambda` of a perspective mapping at a pixel with interpolants `h`: the derivative of
 /// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`).
 #[inline(always)]
-fn hyper_lambda(s: &TriSetup, h: &Hyper) -> i32 {
+fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize, b: usize) -> i32 {
     let r32 = recip_q30(h.q);
     let r = i64::from(r32);
-    let m = |a: i32| mul_q16(a, r32);
-    let (u, v) = (m(h.s), m(h.t));
+    let m = |x: i32| mul_q16(x, r32);
+    let (u, v) = (m(get(&h.s, a)), m(get(&h.s, b)));
     let d = |sd: i32, qd: i32, a: i32| -> i32 {
         let t = i64::from(sd) - ((i64::from(a) * i64::from(qd)) >> 30);
         (t.saturating_mul(r) >> 16).clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
     };
-    let (ux, vx) = (d(s.u.dx, s.q.dx, u), d(s.v.dx, s.q.dx, v));
-    let (uy, vy) = (d(s.u.dy, s.q.dy, u), d(s.v.dy, s.q.dy, v));
-    lambda_q8(ux, vx, uy, vy) + 256 * s.uv_shift as i32
+    let (ux, vx) = (d(get(&s.dx, a), s.q.dx, u), d(get(&s.dx, b), s.q.dx, v));
+    let (uy, vy) = (d(get(&s.dy, a), s.q.dy, u), d(get(&s.dy, b), s.q.dy, v));
+    lambda_q8(ux, vx, uy, vy)
 }
 
-/// `lambda` at pixel `(x, y)` for a perspective set-up (per-triangle level of detail).
-pub(crate) fn hyper_lambda_at(s: &TriSetup, x: i32, y: i32) -> i32 {
-    hyper_lambda(s, &Hyper::at(s, x, y))
-}
-
-#[inline(always)]
-fn at(p: &crate::raster::Plane, s: &TriSetup, x: i32, y: i32) -> i32 {
-    p.at((s.px_ref, s.py_ref), x, y)
+/// `lambda` of the pair `(a, b)` at pixel `(x, y)`, whichever the set-up's planes are (for
+/// per-triangle level of detail).
+pub(crate) fn lambda_at<V: Varyings>(s: &TriSetup<V>, x: i32, y: i32, a: usize, b: usize) -> i32 {
+    if s.affine {
+        affine_lambda(s, a, b)
+    } else {
+        hyper_lambda(s, &Hyper::at(s, x, y), a, b)
+    }
 }
 
 /// Screen-linear interpolation.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct AffineInterp {
-    f: Frag,
-    d: Frag,
+pub(crate) struct AffineInterp<V> {
+    f: V,
+    d: V,
 }
 
-impl Interp for AffineInterp {
+impl<V: Varyings> Interp<V> for AffineInterp<V> {
     #[inline(always)]
-    fn start(s: &TriSetup, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
+    fn start(s: &TriSetup<V>, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
         AffineInterp {
-            f: Frag {
-                u: at(&s.u, s, x, y),
-                v: at(&s.v, s, x, y),
-                c: [
-                    at(&s.c[0], s, x, y),
-                    at(&s.c[1], s, x, y),
-                    at(&s.c[2], s, x, y),
-                ],
-            },
-            d: Frag {
-                u: s.u.dx,
-                v: s.v.dx,
-                c: [s.c[0].dx, s.c[1].dx, s.c[2].dx],
-            },
+            f: s.at(x, y),
+            d: s.dx,
         }
     }
     #[inline(always)]
-    fn frag(&self) -> Frag {
+    fn frag(&self) -> V {
         self.f
     }
     #[inline(always)]
-    fn lambda(&self, s: &TriSetup) -> i32 {
-        affine_lambda(s)
+    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+        affine_lambda(s, a, b)
     }
     #[inline(always)]
     fn step(&mut self) {
-        self.f.u = self.f.u.wrapping_add(self.d.u);
-        self.f.v = self.f.v.wrapping_add(self.d.v);
-        for k in 0..3 {
-            self.f.c[k] = self.f.c[k].wrapping_add(self.d.c[k]);
-        }
+        add(&mut self.f, &self.d);
     }
 }
 
-/// The perspective interpolants `s, t, q, c q`.
+/// The perspective interpolants: varyings times `q`, and `q`.
 #[derive(Clone, Copy, Debug)]
-struct Hyper {
-    s: i32,
-    t: i32,
+struct Hyper<V> {
+    s: V,
     q: i32,
-    c: [i32; 3],
 }
 
-impl Hyper {
+impl<V: Varyings> Hyper<V> {
     #[inline(always)]
-    fn at(s: &TriSetup, x: i32, y: i32) -> Self {
+    fn at(s: &TriSetup<V>, x: i32, y: i32) -> Self {
         Hyper {
-            s: at(&s.u, s, x, y),
-            t: at(&s.v, s, x, y),
-            q: at(&s.q, s, x, y),
-            c: [
-                at(&s.c[0], s, x, y),
-                at(&s.c[1], s, x, y),
-                at(&s.c[2], s, x, y),
-            ],
+            s: s.at(x, y),
+            q: s.plane_at(&s.q, x, y),
         }
     }
     #[inline(always)]
-    fn dx(s: &TriSetup) -> Self {
-        Hyper {
-            s: s.u.dx,
-            t: s.v.dx,
-            q: s.q.dx,
-            c: [s.c[0].dx, s.c[1].dx, s.c[2].dx],
-        }
+    fn dx(s: &TriSetup<V>) -> Self {
+        Hyper { s: s.dx, q: s.q.dx }
     }
     #[inline(always)]
-    fn add_scaled(&mut self, d: &Hyper, n: i32) {
-        self.s = self.s.wrapping_add(d.s.wrapping_mul(n));
-        self.t = self.t.wrapping_add(d.t.wrapping_mul(n));
+    fn add_scaled(&mut self, d: &Hyper<V>, n: i32) {
+        for k in 0..V::N {
+            self.s.as_mut_slice()[k] =
+                self.s.as_slice()[k].wrapping_add(d.s.as_slice()[k].wrapping_mul(n));
+        }
         self.q = self.q.wrapping_add(d.q.wrapping_mul(n));
-        for k in 0..3 {
-            self.c[k] = self.c[k].wrapping_add(d.c[k].wrapping_mul(n));
-        }
     }
     #[inline(always)]
-    fn add(&mut self, d: &Hyper) {
-        self.s = self.s.wrapping_add(d.s);
-        self.t = self.t.wrapping_add(d.t);
+    fn add(&mut self, d: &Hyper<V>) {
+        add(&mut self.s, &d.s);
         self.q = self.q.wrapping_add(d.q);
-        for k in 0..3 {
-            self.c[k] = self.c[k].wrapping_add(d.c[k]);
-        }
     }
-    /// `(s, t, c) / q`.
+    /// The varyings: `s / q`.
     #[inline(always)]
-    fn resolve(&self) -> Frag {
+    fn resolve(&self) -> V {
         let r = recip_q30(self.q);
-        let m = |a: i32| mul_q16(a, r);
-        Frag {
-            u: m(self.s),
-            v: m(self.t),
-            c: [m(self.c[0]), m(self.c[1]), m(self.c[2])],
+        let mut out = self.s;
+        for k in 0..V::N {
+            out.as_mut_slice()[k] = mul_q16(self.s.as_slice()[k], r);
         }
+        out
     }
 }
 
 /// Perspective-correct at every pixel.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ExactInterp {
-    h: Hyper,
-    d: Hyper,
+pub(crate) struct ExactInterp<V> {
+    h: Hyper<V>,
+    d: Hyper<V>,
 }
 
-impl Interp for ExactInterp {
+impl<V: Varyings> Interp<V> for ExactInterp<V> {
     #[inline(always)]
-    fn start(s: &TriSetup, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
+    fn start(s: &TriSetup<V>, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
         ExactInterp {
             h: Hyper::at(s, x, y),
             d: Hyper::dx(s),
         }
     }
     #[inline(always)]
-    fn frag(&self) -> Frag {
+    fn frag(&self) -> V {
         self.h.resolve()
     }
     #[inline(always)]
@@ -201,8 +172,8 @@ impl Interp for ExactInterp {
         self.h.add(&self.d);
     }
     #[inline(always)]
-    fn lambda(&self, s: &TriSetup) -> i32 {
-        hyper_lambda(s, &self.h)
+    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+        hyper_lambda(s, &self.h, a, b)
     }
 }
 
@@ -219,20 +190,20 @@ static INV_SMALL: [u32; 64] = {
 
 /// Perspective-correct every `2^log2_n` pixels, affine in between.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct SubdivInterp {
-    cur: Frag,
-    slope: Frag,
-    end: Frag,
-    next: Hyper,
-    d: Hyper,
+pub(crate) struct SubdivInterp<V> {
+    cur: V,
+    slope: V,
+    end: V,
+    next: Hyper<V>,
+    d: Hyper<V>,
     in_seg: u32,
     left: u32,
     log2_n: u32,
     /// Interpolants at the current segment's first pixel (for the level of detail).
-    seg_start: Hyper,
+    seg_start: Hyper<V>,
 }
 
-impl SubdivInterp {
+impl<V: Varyings> SubdivInterp<V> {
     /// Sets up the segment from the current values to the exact values `seg` pixels on.
     #[inline(always)]
     fn segment(&mut self, seg: u32) {
@@ -248,37 +219,28 @@ impl SubdivInterp {
         self.next.add_scaled(&self.d, reach as i32);
         self.end = self.next.resolve();
         let k = reach.min(63);
-        let slope = |a: i32, b: i32| -> i32 {
-            let diff = b.wrapping_sub(a);
-            if reach == 1 << self.log2_n {
+        for i in 0..V::N {
+            let diff = self.end.as_slice()[i].wrapping_sub(self.cur.as_slice()[i]);
+            self.slope.as_mut_slice()[i] = if reach == 1 << self.log2_n {
                 diff >> self.log2_n
             } else {
                 ((i64::from(diff) * i64::from(INV_SMALL[k as usize])) >> 16) as i32
-            }
-        };
-        self.slope = Frag {
-            u: slope(self.cur.u, self.end.u),
-            v: slope(self.cur.v, self.end.v),
-            c: [
-                slope(self.cur.c[0], self.end.c[0]),
-                slope(self.cur.c[1], self.end.c[1]),
-                slope(self.cur.c[2], self.end.c[2]),
-            ],
-        };
+            };
+        }
         self.in_seg = seg;
         self.left -= seg;
     }
 }
 
-impl Interp for SubdivInterp {
+impl<V: Varyings> Interp<V> for SubdivInterp<V> {
     #[inline(always)]
-    fn start(s: &TriSetup, x: i32, y: i32, len: u32, log2_n: u32) -> Self {
+    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self {
         let h = Hyper::at(s, x, y);
         let log2_n = log2_n.clamp(1, 6);
         let mut it = SubdivInterp {
             cur: h.resolve(),
-            slope: Frag::default(),
-            end: Frag::default(),
+            slope: V::zero(),
+            end: V::zero(),
             next: h,
             d: Hyper::dx(s),
             in_seg: 0,
@@ -291,12 +253,12 @@ impl Interp for SubdivInterp {
         it
     }
     #[inline(always)]
-    fn frag(&self) -> Frag {
+    fn frag(&self) -> V {
         self.cur
     }
     #[inline(always)]
-    fn lambda(&self, s: &TriSetup) -> i32 {
-        hyper_lambda(s, &self.seg_start)
+    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+        hyper_lambda(s, &self.seg_start, a, b)
     }
     #[inline(always)]
     fn step(&mut self) {
@@ -308,11 +270,7 @@ impl Interp for SubdivInterp {
                 self.segment(seg);
             }
         } else {
-            self.cur.u = self.cur.u.wrapping_add(self.slope.u);
-            self.cur.v = self.cur.v.wrapping_add(self.slope.v);
-            for k in 0..3 {
-                self.cur.c[k] = self.cur.c[k].wrapping_add(self.slope.c[k]);
-            }
+            add(&mut self.cur, &self.slope);
         }
     }
 }

@@ -6,10 +6,13 @@
 
 mod draw;
 mod interp;
+mod raster;
 pub mod recip;
 mod setup;
+mod shaded;
 mod span;
 pub mod stages;
 
 pub use draw::Draw;
+pub use shaded::ShadedDraw;
 pub use stages::*;

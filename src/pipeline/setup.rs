@@ -6,47 +6,60 @@
 //! | interpolant | format | used by |
 //! |---|---|---|
 //! | `z` | window depth `0..=65535`, 14 fraction bits | depth test |
-//! | `u`, `v` | texel units, 16 fraction bits (I16F16 bits), shifted right by `uv_shift` | affine |
 //! | `q` | `w_min / w`, Q30 (`1.0` at the nearest vertex) | perspective |
-//! | `s`, `t` | `u q`, `v q`, same units as `u`, `v` | perspective |
-//! | `c[k]` | colour channel Q8 (`256` = 1.0) with 16 more fraction bits, times `q` when perspective | shading |
+//! | varying `k` | the shader's format for it (after its `triangle` hook) | affine |
+//! | varying `k` times `q` | same units | perspective |
 //!
-//! Texture coordinates are rebased per triangle: for the periodic wrap modes (repeat,
-//! mirrored repeat) a whole number of periods is subtracted so that the smallest vertex value
-//! lies in `[0, period)`; this keeps thousands of repeats exact. When a triangle's texel
-//! coordinates still exceed `2^30` (16384 texels), they are shifted right by `uv_shift` bits
-//! and shifted back before sampling: wrapping for periodic modes (exact modulo the period),
-//! clamped for the clamp modes (where every value beyond the edge samples the same).
+//! The shader's per-triangle hook has already rescaled and rebased the varyings (texture
+//! coordinates to texel units: see [`TexBinding`](crate::shading::TexBinding)).
 
 use super::recip::{Q_FLOOR, Q_ONE};
-use super::stages::{ProjKind, Shading};
-use crate::geometry::ScreenTriangle;
-use crate::geometry::COLOR_ONE;
+use super::stages::ProjKind;
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{Plane, Rect};
-use crate::texture::Wrap;
+use crate::shading::Varyings;
 
-/// Everything the span loop needs for one triangle.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct TriSetup {
+/// Everything the span loop needs for one triangle: depth, `q` and one plane per varying
+/// (held as three `V` values: at the reference pixel, per pixel right, per row down).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TriSetup<V> {
     pub px_ref: i32,
     pub py_ref: i32,
     pub z: Plane,
-    /// `u` (affine) or `s` (perspective).
-    pub u: Plane,
-    /// `v` (affine) or `t` (perspective).
-    pub v: Plane,
     /// `q` (perspective only).
     pub q: Plane,
-    /// Colour channels (times `q` for perspective). Intensity shading uses `c[0]` only.
-    pub c: [Plane; 3],
-    /// Right shift applied to texel coordinates (see the module docs).
-    pub uv_shift: u32,
+    /// Varyings (times `q` for perspective) at the reference pixel centre.
+    pub at_ref: V,
+    /// Change per pixel to the right.
+    pub dx: V,
+    /// Change per row down.
+    pub dy: V,
     /// The pixel nearest the centroid (where per-triangle level of detail is taken).
     pub centroid: (i32, i32),
-    /// True when the planes are affine (`u`, `v`, colour) rather than perspective (`s`, `t`,
-    /// `q`): always for [`ProjKind::Affine`], per triangle for [`ProjKind::Adaptive`].
+    /// True when the planes are affine (varyings) rather than perspective (varyings times
+    /// `q`, and `q`): always for [`ProjKind::Affine`], per triangle for [`ProjKind::Adaptive`].
     pub affine: bool,
+}
+
+impl<V: Varyings> TriSetup<V> {
+    /// The varying planes at the centre of pixel `(x, y)`.
+    #[inline(always)]
+    pub fn at(&self, x: i32, y: i32) -> V {
+        let mut out = self.at_ref;
+        let (ox, oy) = (x.wrapping_sub(self.px_ref), y.wrapping_sub(self.py_ref));
+        for k in 0..V::N {
+            out.as_mut_slice()[k] = self.at_ref.as_slice()[k]
+                .wrapping_add(ox.wrapping_mul(self.dx.as_slice()[k]))
+                .wrapping_add(oy.wrapping_mul(self.dy.as_slice()[k]));
+        }
+        out
+    }
+
+    /// A plane value at the centre of pixel `(x, y)`.
+    #[inline(always)]
+    pub fn plane_at(&self, p: &Plane, x: i32, y: i32) -> i32 {
+        p.at((self.px_ref, self.py_ref), x, y)
+    }
 }
 
 /// Upper bound, in the units of `extent`, of the difference between affine and
@@ -64,50 +77,35 @@ pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
     extent.saturating_mul(one - q) / (one + q)
 }
 
-fn periodic(w: Wrap) -> bool {
-    matches!(w, Wrap::Repeat | Wrap::MirroredRepeat)
-}
+/// One screen vertex as the set-up reads it: sub-pixel `x, y`, depth, clip `w`.
+pub(crate) type SetupVertex = (i32, i32, i32, i32);
 
-/// Texel coordinates (I16F16 bits) of the three vertices on one axis, rebased.
-fn texel_coords(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> [i64; 3] {
-    let mut t = uv.map(|x| i64::from(x) << log2_size);
-    if periodic(wrap) {
-        let period_log2 = 16 + log2_size + u32::from(wrap == Wrap::MirroredRepeat);
-        let min = t[0].min(t[1]).min(t[2]);
-        let base = (min >> period_log2) << period_log2;
-        for x in &mut t {
-            *x -= base;
-        }
-    }
-    t
-}
-
-/// Builds the set-up, or `None` for a zero-area triangle.
+/// Builds the set-up, or `None` for a zero-area triangle. `texcoords` is the shader's
+/// [`Shader::TEXCOORDS`](crate::shading::Shader::TEXCOORDS) pair, `adaptive_budget` the
+/// adaptive projection's budget in I16F16 texel units.
 ///
-/// Not inlined: it runs once per triangle, and one shared copy keeps every span loop a
-/// firmware links from carrying its own (about 3 KB each on Cortex-M).
+/// Not inlined: it runs once per triangle, and one shared copy (per varying count) keeps
+/// every span loop a firmware links from carrying its own (about 3 KB each on Cortex-M).
 #[inline(never)]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn setup(
-    tri: &ScreenTriangle,
+pub(crate) fn setup<V: Varyings>(
+    pos: [SetupVertex; 3],
+    vary: &[V; 3],
     viewport: Rect,
     proj: ProjKind,
-    shading: Shading,
     depth: bool,
-    tex_log2: (u32, u32),
-    wrap: [Wrap; 2],
+    texcoords: Option<(usize, usize)>,
     adaptive_budget: i64,
-) -> Option<TriSetup> {
+) -> Option<TriSetup<V>> {
     let ps = PlaneSetup::new(
         [
-            (tri[0].x, tri[0].y),
-            (tri[1].x, tri[1].y),
-            (tri[2].x, tri[2].y),
+            (pos[0].0, pos[0].1),
+            (pos[1].0, pos[1].1),
+            (pos[2].0, pos[2].1),
         ],
         viewport,
     )?;
-    let cx = (i64::from(tri[0].x) + i64::from(tri[1].x) + i64::from(tri[2].x)) / 48;
-    let cy = (i64::from(tri[0].y) + i64::from(tri[1].y) + i64::from(tri[2].y)) / 48;
+    let cx = (i64::from(pos[0].0) + i64::from(pos[1].0) + i64::from(pos[2].0)) / 48;
+    let cy = (i64::from(pos[0].1) + i64::from(pos[1].1) + i64::from(pos[2].1)) / 48;
     let centroid = (
         (cx as i32).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
         (cy as i32).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
@@ -115,52 +113,42 @@ pub(crate) fn setup(
     let mut s = TriSetup {
         px_ref: ps.px_ref,
         py_ref: ps.py_ref,
+        z: Plane::default(),
+        q: Plane::default(),
+        at_ref: V::zero(),
+        dx: V::zero(),
+        dy: V::zero(),
         centroid,
-        ..TriSetup::default()
+        affine: true,
     };
     if depth {
-        s.z = ps.plane([tri[0].z, tri[1].z, tri[2].z]);
+        s.z = ps.plane([pos[0].2, pos[1].2, pos[2].2]);
     }
     // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain.
     let q = if proj != ProjKind::Affine {
-        let wmin = i64::from(tri[0].w.min(tri[1].w).min(tri[2].w).max(1));
-        tri.map(|v| {
-            let w = i64::from(v.w.max(1));
+        let wmin = i64::from(pos[0].3.min(pos[1].3).min(pos[2].3).max(1));
+        pos.map(|v| {
+            let w = i64::from(v.3.max(1));
             ((wmin << 30) / w).clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
         })
     } else {
         [i64::from(Q_ONE); 3]
     };
-    let textured = shading.textured();
-    let uv = if textured {
-        let u = texel_coords(
-            [tri[0].uv[0], tri[1].uv[0], tri[2].uv[0]],
-            tex_log2.0,
-            wrap[0],
-        );
-        let v = texel_coords(
-            [tri[0].uv[1], tri[1].uv[1], tri[2].uv[1]],
-            tex_log2.1,
-            wrap[1],
-        );
-        Some((u, v))
-    } else {
-        None
-    };
+    let value = |k: usize| vary.each_ref().map(|v| i64::from(v.as_slice()[k]));
+    let span = |a: [i64; 3]| a[0].max(a[1]).max(a[2]) - a[0].min(a[1]).min(a[2]);
     let perspective = match proj {
         ProjKind::Affine => false,
         ProjKind::Exact | ProjKind::Subdivided => true,
         ProjKind::Adaptive => {
-            let span = |a: [i64; 3]| a.iter().max().unwrap_or(&0) - a.iter().min().unwrap_or(&0);
             let q_min = q[0].min(q[1]).min(q[2]);
-            match uv {
-                Some((u, v)) => affine_error_bound(span(u).max(span(v)), q_min) > adaptive_budget,
-                // Untextured: colour error against one RGB565 step (1/32 of full scale).
-                None => {
-                    let c =
-                        |k: usize| span(tri.map(|v| i64::from(v.color[k].min(COLOR_ONE)) << 16));
-                    affine_error_bound(c(0).max(c(1)).max(c(2)), q_min) > (1 << 19)
+            match texcoords {
+                Some((a, b)) if a < V::N && b < V::N => {
+                    let extent = span(value(a)).max(span(value(b)));
+                    // Shifted coordinates (extents near 2^30) stay perspective.
+                    extent >= 1 << 29 || affine_error_bound(extent, q_min) > adaptive_budget
                 }
+                // No texture: every varying against one RGB565 step of a Q8.16 colour.
+                _ => (0..V::N).any(|k| affine_error_bound(span(value(k)), q_min) > (1 << 19)),
             }
         }
     };
@@ -168,33 +156,17 @@ pub(crate) fn setup(
     if perspective {
         s.q = ps.plane([q[0] as i32, q[1] as i32, q[2] as i32]);
     }
-    let times_q = |a: [i64; 3]| -> [i32; 3] {
-        if perspective {
-            [0, 1, 2].map(|k| ((a[k] * q[k]) >> 30) as i32)
+    for k in 0..V::N {
+        let a = value(k);
+        let a = if perspective {
+            [0, 1, 2].map(|i| ((a[i] * q[i]) >> 30) as i32)
         } else {
             a.map(|x| x as i32)
-        }
-    };
-    if let Some((u, v)) = uv {
-        let max = u
-            .iter()
-            .chain(v.iter())
-            .map(|x| x.unsigned_abs())
-            .max()
-            .unwrap_or(0);
-        let shift = (64 - max.leading_zeros()).saturating_sub(30);
-        s.uv_shift = shift;
-        s.u = ps.plane(times_q(u.map(|x| x >> shift)));
-        s.v = ps.plane(times_q(v.map(|x| x >> shift)));
-    }
-    let channels = match shading {
-        Shading::Modulate | Shading::Gouraud => 3,
-        Shading::ModulateIntensity => 1,
-        Shading::Replace | Shading::Flat => 0,
-    };
-    for k in 0..channels {
-        let c = tri.map(|v| i64::from(v.color[k].min(COLOR_ONE)) << 16);
-        s.c[k] = ps.plane(times_q(c));
+        };
+        let p = ps.plane(a);
+        s.at_ref.as_mut_slice()[k] = p.at_ref;
+        s.dx.as_mut_slice()[k] = p.dx;
+        s.dy.as_mut_slice()[k] = p.dy;
     }
     Some(s)
 }

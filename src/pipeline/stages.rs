@@ -9,6 +9,7 @@ use core::fmt::Debug;
 use core::marker::PhantomData;
 
 use crate::geometry::Cull;
+use crate::shading::{self, builtin::Classic, TexBinding};
 use crate::texture::{
     Bilinear, BilinearFast, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter, Lod, MipFilter,
     Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap, WrapMode,
@@ -114,10 +115,18 @@ pub enum ProjKind {
     /// See [`Projection::Adaptive`].
     Adaptive,
 }
-/// Marker for the shading stage.
+/// Marker for the shading stage of the classic API: names a built-in shader.
 pub trait ShadingStage: Copy + Default + Debug {
     /// Which shading this marker selects.
     const KIND: Shading;
+    /// The built-in shader (see [`crate::shading::builtin`]) for a texture bound with
+    /// filter `F` and wraps `WU`, `WV`.
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>: Classic;
+    /// That shader, from the draw's texture binding and flat colour (raw RGB565).
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        tex: TexBinding<'a, F, WU, WV>,
+        flat: u16,
+    ) -> Self::Shader<'a, F, WU, WV>;
 }
 /// Marker for the depth stage.
 pub trait DepthStage: Copy + Default + Debug {
@@ -156,30 +165,73 @@ impl ProjectionStage for Exact {
 pub struct Replace;
 impl ShadingStage for Replace {
     const KIND: Shading = Shading::Replace;
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
+        shading::Replace<'a, F, WU, WV>;
+    #[inline(always)]
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        tex: TexBinding<'a, F, WU, WV>,
+        _: u16,
+    ) -> Self::Shader<'a, F, WU, WV> {
+        shading::Replace { tex }
+    }
 }
 /// Modulate-by-colour marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Modulate;
 impl ShadingStage for Modulate {
     const KIND: Shading = Shading::Modulate;
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
+        shading::Modulate<'a, F, WU, WV>;
+    #[inline(always)]
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        tex: TexBinding<'a, F, WU, WV>,
+        _: u16,
+    ) -> Self::Shader<'a, F, WU, WV> {
+        shading::Modulate { tex }
+    }
 }
 /// Modulate-by-intensity marker (lit textures).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ModulateIntensity;
 impl ShadingStage for ModulateIntensity {
     const KIND: Shading = Shading::ModulateIntensity;
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
+        shading::ModulateIntensity<'a, F, WU, WV>;
+    #[inline(always)]
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        tex: TexBinding<'a, F, WU, WV>,
+        _: u16,
+    ) -> Self::Shader<'a, F, WU, WV> {
+        shading::ModulateIntensity { tex }
+    }
 }
 /// Untextured Gouraud marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Gouraud;
 impl ShadingStage for Gouraud {
     const KIND: Shading = Shading::Gouraud;
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> = shading::Gouraud;
+    #[inline(always)]
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        _: TexBinding<'a, F, WU, WV>,
+        _: u16,
+    ) -> shading::Gouraud {
+        shading::Gouraud
+    }
 }
 /// Untextured flat marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Flat;
 impl ShadingStage for Flat {
     const KIND: Shading = Shading::Flat;
+    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> = shading::Flat;
+    #[inline(always)]
+    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+        _: TexBinding<'a, F, WU, WV>,
+        flat: u16,
+    ) -> shading::Flat {
+        shading::Flat(flat)
+    }
 }
 
 /// No depth test marker.

@@ -47,6 +47,11 @@ pub trait WrapMode: Copy + Default + core::fmt::Debug {
     /// in-range index, or `None` if the border colour should be used (only
     /// [`ClampToBorder`] returns `None`).
     fn wrap(self, i: i32, log2_size: u32) -> Option<u32>;
+    /// The mode as a value (for [`DynWrap`], the one it carries).
+    #[inline(always)]
+    fn mode(self) -> Wrap {
+        Self::MODE
+    }
 }
 
 /// `GL_REPEAT` marker: `i mod size`.
@@ -123,6 +128,11 @@ impl WrapMode for ClampToBorder {
 impl WrapMode for DynWrap {
     // Not meaningful for a run-time mode; `Repeat` is the default mode.
     const MODE: Wrap = Wrap::Repeat;
+
+    #[inline(always)]
+    fn mode(self) -> Wrap {
+        self.0
+    }
 
     #[inline]
     fn wrap(self, i: i32, log2_size: u32) -> Option<u32> {

@@ -1,0 +1,146 @@
+//! One screen triangle through a shader: the shader's per-triangle hook, the set-up, the
+//! edge walker, and the span loop for each span it emits.
+//!
+//! Shared by the classic [`Draw`](super::Draw) (built-in shaders fed the classic varyings)
+//! and the open [`ShadedDraw`](super::ShadedDraw) (any shader). Generic over the shader,
+//! projection, depth stage, target colour and varying count: each draw type a firmware
+//! uses links exactly one copy.
+
+use super::interp::lambda_at;
+use super::setup::setup;
+use super::span::{span, SpanCtx};
+use super::stages::{DepthStage, Projection, ProjectionStage};
+use crate::color::TargetColor;
+use crate::geometry::{ScreenTriangle, Viewport};
+use crate::raster::{rasterize, Rect, SpanSink};
+use crate::shading::Shader;
+use crate::surface::RenderTarget;
+use crate::texture::LodGranularity;
+
+/// The per-draw numbers the rasterization of one triangle needs.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RasterParams {
+    pub viewport: Rect,
+    /// Subdivision length, log2 (for [`Projection::Subdivided`]).
+    pub log2_n: u32,
+    /// Adaptive budget in I16F16 texel units.
+    pub budget: i64,
+    /// The run-time depth switch.
+    pub depth_on: bool,
+}
+
+impl RasterParams {
+    pub fn new(viewport: &Viewport, projection: Projection, depth_on: bool) -> Self {
+        RasterParams {
+            viewport: viewport.rect(),
+            log2_n: match projection {
+                Projection::Subdivided { log2_n } => u32::from(log2_n),
+                _ => 4,
+            },
+            budget: match projection {
+                // Q8 texels to the I16F16 texel units of the set-up.
+                Projection::Adaptive { budget } => i64::from(budget) << 8,
+                _ => 0,
+            },
+            depth_on,
+        }
+    }
+}
+
+struct Writer<'t, S: Shader, P, D, C> {
+    ctx: SpanCtx<S>,
+    target: &'t mut dyn RenderTarget<Color = C>,
+    pixels: u32,
+    _stages: core::marker::PhantomData<(P, D)>,
+}
+
+impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
+    for Writer<'_, S, P, D, C>
+{
+    #[inline]
+    fn span(&mut self, y: i32, x0: i32, x1: i32) {
+        if let Some((row, depth)) = self.target.row_mut(y) {
+            let n = span::<S, P, D, C>(&self.ctx, y, x0, x1, row, depth);
+            self.pixels = self.pixels.wrapping_add(n);
+        }
+    }
+}
+
+/// Rasterizes `tri` with `shader` into `target`; `varyings` maps a vertex's varyings to the
+/// shader's. Returns the pixels written.
+pub(crate) fn raster_shaded<S, P, D, C, const N: usize>(
+    shader: &S,
+    tri: &ScreenTriangle<N>,
+    varyings: impl Fn(&[i32; N]) -> S::Varyings,
+    params: &RasterParams,
+    target: &mut dyn RenderTarget<Color = C>,
+) -> u32
+where
+    S: Shader,
+    P: ProjectionStage,
+    D: DepthStage,
+    C: TargetColor,
+{
+    let vp = params.viewport;
+    let (r0, r1) = target.row_range();
+    let clip = Rect {
+        x0: vp.x0.max(0),
+        x1: vp.x1.min(target.width() as i32),
+        ..vp
+    }
+    .rows(r0, r1);
+    if clip.is_empty() {
+        return 0;
+    }
+    let mut vary = [
+        varyings(&tri[0].varyings),
+        varyings(&tri[1].varyings),
+        varyings(&tri[2].varyings),
+    ];
+    let triangle = shader.triangle(&mut vary);
+    let Some(setup) = setup(
+        tri.map(|v| (v.x, v.y, v.z, v.w)),
+        &vary,
+        vp,
+        P::KIND,
+        D::TEST,
+        S::TEXCOORDS,
+        params.budget,
+    ) else {
+        return 0;
+    };
+    let tri_lambda = match S::TEXCOORDS {
+        Some((a, b)) if S::LOD && shader.lod_granularity() == LodGranularity::Triangle => {
+            let (cx, cy) = setup.centroid;
+            lambda_at(&setup, cx, cy, a, b)
+        }
+        _ => 0,
+    };
+    let ctx = SpanCtx {
+        setup,
+        shader: *shader,
+        triangle,
+        tri_lambda,
+        log2_n: params.log2_n,
+        depth_on: params.depth_on,
+    };
+    let mut w = Writer::<S, P, D, C> {
+        ctx,
+        target,
+        pixels: 0,
+        _stages: core::marker::PhantomData,
+    };
+    // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
+    // per span, nothing per pixel).
+    let sink: &mut dyn SpanSink = &mut w;
+    rasterize(
+        [
+            (tri[0].x, tri[0].y),
+            (tri[1].x, tri[1].y),
+            (tri[2].x, tri[2].y),
+        ],
+        clip,
+        sink,
+    );
+    w.pixels
+}

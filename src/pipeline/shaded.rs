@@ -1,0 +1,159 @@
+//! The open draw: any [`Shader`], a projection and a depth stage as types, fed clip-space
+//! [`Vertex`] triangles whose varyings the shader declares.
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::geometry::Vertex;
+//! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+//! use fixel::shading::Gouraud;
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//!
+//! // A Gouraud triangle: varyings r, g, b in Q8.16 (256 << 16 = 1.0).
+//! let one = 256 << 16;
+//! let p = |x: f32, y: f32| [Fx::from_num(x), Fx::from_num(y), Fx::ZERO, Fx::ONE];
+//! let tri = [
+//!     Vertex::new(p(-0.8, -0.8), [one, 0, 0]),
+//!     Vertex::new(p(0.8, -0.8), [0, one, 0]),
+//!     Vertex::new(p(0.0, 0.8), [0, 0, one]),
+//! ];
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(Gouraud, Viewport::new(0, 0, 32, 32)?, Cull::Back)?;
+//! let (mut color, mut depth) = ([Rgb565::default(); 32 * 32], [0u16; 32 * 32]);
+//! let mut frame = Frame::new(&mut color, 32, 32)?.with_depth(&mut depth)?;
+//! frame.clear(Rgb565::default());
+//! assert!(draw.clip_triangles(&[tri], &mut frame) > 300);
+//! # Ok::<(), fixel::Error>(())
+//! ```
+
+use core::marker::PhantomData;
+
+use super::raster::{raster_shaded, RasterParams};
+use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
+use crate::color::TargetColor;
+use crate::geometry::{clip_and_project_varyings, Cull, ScreenTriangle, Vertex, Viewport};
+use crate::shading::Shader;
+use crate::surface::RenderTarget;
+use crate::Error;
+
+/// A draw with a user shader `S`, projection `P` and depth stage `D` chosen as types: a
+/// firmware links exactly this span loop.
+pub struct ShadedDraw<S, P, D> {
+    shader: S,
+    viewport: Viewport,
+    cull: Cull,
+    projection: Projection,
+    _stages: PhantomData<(P, D)>,
+}
+
+impl<S: core::fmt::Debug, P, D> core::fmt::Debug for ShadedDraw<S, P, D> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("ShadedDraw")
+            .field("shader", &self.shader)
+            .field("viewport", &self.viewport)
+            .field("projection", &self.projection)
+            .finish()
+    }
+}
+
+impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
+    /// A draw of `shader` into `viewport`, culling `cull` faces. Subdivided projection uses
+    /// N = 8 ([`ShadedDraw::with_subdivision`]), adaptive a budget of 1/4 texel
+    /// ([`ShadedDraw::with_adaptive_budget`]).
+    ///
+    /// # Errors
+    /// None today; the `Result` keeps room for checks of the shader's bindings.
+    pub fn new(shader: S, viewport: Viewport, cull: Cull) -> Result<Self, Error> {
+        let projection = match P::KIND {
+            ProjKind::Affine => Projection::Affine,
+            ProjKind::Exact => Projection::Exact,
+            ProjKind::Subdivided => Projection::Subdivided { log2_n: 3 },
+            ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
+        };
+        Ok(ShadedDraw {
+            shader,
+            viewport,
+            cull,
+            projection,
+            _stages: PhantomData,
+        })
+    }
+
+    /// With subdivision length `2^log2_n` for the subdivided projection.
+    ///
+    /// # Errors
+    /// [`Error::BadMode`] unless `log2_n` is in `1..=6`.
+    pub fn with_subdivision(mut self, log2_n: u8) -> Result<Self, Error> {
+        if !(1..=6).contains(&log2_n) {
+            return Err(Error::BadMode(
+                "subdivision log2_n must be in 1..=6 (N = 2..64)",
+            ));
+        }
+        if let Projection::Subdivided { .. } = self.projection {
+            self.projection = Projection::Subdivided { log2_n };
+        }
+        Ok(self)
+    }
+
+    /// With a different error budget for the adaptive projection (1/256 texel).
+    pub fn with_adaptive_budget(mut self, budget: u16) -> Self {
+        if let Projection::Adaptive { .. } = self.projection {
+            self.projection = Projection::Adaptive { budget };
+        }
+        self
+    }
+
+    /// The shader.
+    pub fn shader(&self) -> &S {
+        &self.shader
+    }
+
+    /// The viewport triangles are mapped to.
+    pub fn viewport(&self) -> &Viewport {
+        &self.viewport
+    }
+
+    /// Clips, projects and culls one clip-space triangle, handing each resulting screen
+    /// triangle to `emit` (for binning).
+    pub fn project<const N: usize>(
+        &self,
+        tri: &[Vertex<N>; 3],
+        emit: &mut impl FnMut(&ScreenTriangle<N>),
+    ) {
+        clip_and_project_varyings(tri, &self.viewport, self.cull, emit);
+    }
+
+    /// Draws triangles given in clip space and returns the pixels written (with a depth
+    /// test: that passed it). Triangles behind the camera, outside the view volume, culled
+    /// or of zero area are skipped; the rest are clipped.
+    pub fn clip_triangles<const N: usize, C, T>(
+        &self,
+        tris: &[[Vertex<N>; 3]],
+        target: &mut T,
+    ) -> u32
+    where
+        S: Shader<Varyings = [i32; N]>,
+        C: TargetColor,
+        T: RenderTarget<Color = C>,
+    {
+        let mut pixels = 0u32;
+        for tri in tris {
+            self.project(tri, &mut |s| {
+                pixels = pixels.wrapping_add(self.screen_triangle(s, target));
+            });
+        }
+        pixels
+    }
+
+    /// Draws one screen triangle (already clipped, projected and culled); returns the pixels
+    /// written.
+    pub fn screen_triangle<const N: usize, C: TargetColor>(
+        &self,
+        tri: &ScreenTriangle<N>,
+        target: &mut dyn RenderTarget<Color = C>,
+    ) -> u32
+    where
+        S: Shader<Varyings = [i32; N]>,
+    {
+        let params = RasterParams::new(&self.viewport, self.projection, true);
+        raster_shaded::<S, P, D, C, N>(&self.shader, tri, |v| *v, &params, target)
+    }
+}

@@ -1,0 +1,150 @@
+//! The open fragment stage: shaders as types, over any number of varyings.
+//!
+//! A draw interpolates the `N` varyings of its vertices (`[i32; N]`, raw fixed-point bits
+//! in formats the shader chooses) across each triangle in the draw's projection mode
+//! (affine, exact, subdivided or adaptive) and asks its [`Shader`] for the colour of every
+//! covered pixel that passes the depth test. The span loop is monomorphised per shader and
+//! projection, so a varying a shader does not declare is never interpolated, and a shader
+//! that does not read a [`Fragment`] field costs nothing for it.
+//!
+//! * [`Shader`]: the trait a user implements: a per-triangle hook (rescale or rebase
+//!   varyings, keep per-triangle data) and the per-pixel [`Shader::shade`].
+//! * [`TexBinding`]: a texture with its filter and wrap modes, as a shader uses it: texel
+//!   coordinate set-up per triangle and monomorphised sampling per pixel.
+//! * [`builtin`]: the classic shadings ([`Replace`], [`ModulateIntensity`], [`Modulate`],
+//!   [`Gouraud`], [`Flat`]) as ordinary shaders.
+//!
+//! # Writing a shader
+//!
+//! ```
+//! use fixel::shading::{Fragment, Shader};
+//!
+//! /// Vertical stripes from an object-space x passed as varying 0 (I16F16 bits).
+//! #[derive(Clone, Copy, Debug)]
+//! struct Stripes;
+//!
+//! impl Shader for Stripes {
+//!     type Varyings = [i32; 1];
+//!     type Triangle = ();
+//!     fn triangle(&self, _: &mut [[i32; 1]; 3]) {}
+//!     fn shade(&self, f: &Fragment<[i32; 1], ()>) -> Option<u16> {
+//!         // Bit 14 of x flips every 1/4 unit: white and red stripes (raw RGB565).
+//!         Some(if f.varyings[0] & (1 << 14) != 0 { 0xFFFF } else { 0xF800 })
+//!     }
+//! }
+//! ```
+//!
+//! See [`crate::pipeline::ShadedDraw`] for drawing with it, and the crate docs for a
+//! two-texture light-mapped shader.
+
+pub mod builtin;
+mod texcoord;
+
+pub use builtin::{Flat, Gouraud, Modulate, ModulateIntensity, Replace};
+pub use texcoord::{TexBinding, TexTriangle};
+
+/// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)
+/// and the span loop one running value and one step each; 8 covers a texture pair, a
+/// colour and a light vector.
+pub const MAX_VARYINGS: usize = 8;
+
+/// A shader's interpolated attributes: `[i32; N]` with `N <= MAX_VARYINGS`.
+///
+/// Implemented for arrays only. Declaring more than [`MAX_VARYINGS`] fails to compile when
+/// the draw is instantiated:
+///
+/// ```compile_fail
+/// use fixel::shading::Varyings;
+/// const TOO_MANY: usize = <[i32; 9] as Varyings>::N;
+/// ```
+pub trait Varyings: Copy + core::fmt::Debug + 'static {
+    /// The number of varyings, at most [`MAX_VARYINGS`].
+    const N: usize;
+    /// All zero.
+    fn zero() -> Self;
+    /// The values as a slice.
+    fn as_slice(&self) -> &[i32];
+    /// The values as a mutable slice.
+    fn as_mut_slice(&mut self) -> &mut [i32];
+}
+
+impl<const N: usize> Varyings for [i32; N] {
+    const N: usize = {
+        assert!(
+            N <= MAX_VARYINGS,
+            "a shader declares more varyings than fixel's set-up supports (MAX_VARYINGS = 8)"
+        );
+        N
+    };
+    #[inline(always)]
+    fn zero() -> Self {
+        [0; N]
+    }
+    #[inline(always)]
+    fn as_slice(&self) -> &[i32] {
+        self
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [i32] {
+        self
+    }
+}
+
+/// What a shader sees of one pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct Fragment<V, T> {
+    /// The interpolated varyings at the pixel centre, in the formats the vertices gave them
+    /// (after the shader's [`Shader::triangle`] hook).
+    pub varyings: V,
+    /// Pixel column (frame coordinates).
+    pub x: i32,
+    /// Pixel row (frame coordinates, down).
+    pub y: i32,
+    /// Window depth, `0..=65535` (0 at the near plane). Only computed when read.
+    pub depth: u16,
+    /// Level of detail of the varying pair [`Shader::TEXCOORDS`]: `log2` of the larger of
+    /// the pair's screen derivative lengths (Heckbert), Q8.8 (256 = one level), before any
+    /// bias; at the shader's [`Shader::lod_granularity`]. 0 unless [`Shader::LOD`].
+    pub lambda: i32,
+    /// The per-triangle data returned by [`Shader::triangle`].
+    pub triangle: T,
+}
+
+/// A fragment shader: the colour of each covered pixel.
+///
+/// Uniforms (textures, tables, lights) are fields of the shader value, borrowed with no heap;
+/// varyings come per pixel in [`Fragment::varyings`]. Implementations should be small `Copy`
+/// values: the span loop copies the shader once per span so its fields live in registers.
+pub trait Shader: Copy {
+    /// The interpolated attributes: `[i32; N]`.
+    type Varyings: Varyings;
+    /// Per-triangle data the [`Shader::triangle`] hook computes (for example the texel
+    /// coordinate shift of [`TexBinding`]); `()` when there is none.
+    type Triangle: Copy + core::fmt::Debug;
+
+    /// The varying pair (indices) that holds texel coordinates (I16F16 texel units, as
+    /// [`Shader::triangle`] leaves them), if any. The adaptive projection bounds its affine
+    /// error in texels on this pair (without one, on every varying against 1/32 of the
+    /// Q8.16 colour range), and [`Fragment::lambda`] is this pair's level of detail.
+    const TEXCOORDS: Option<(usize, usize)> = None;
+
+    /// True when the shader reads [`Fragment::lambda`] (mipmapping): the span loop then
+    /// computes it from the [`Shader::TEXCOORDS`] pair.
+    const LOD: bool = false;
+
+    /// Where [`Fragment::lambda`] is computed (only when [`Shader::LOD`]).
+    #[inline(always)]
+    fn lod_granularity(&self) -> crate::texture::LodGranularity {
+        crate::texture::LodGranularity::Pixel
+    }
+
+    /// Called once per screen triangle with the varyings of its three vertices, before the
+    /// set-up builds their planes: rescale or rebase them here (texture coordinates to texel
+    /// units, for example). Every varying and every difference of two vertices' values must
+    /// fit `i32` afterwards.
+    fn triangle(&self, varyings: &mut [Self::Varyings; 3]) -> Self::Triangle;
+
+    /// The colour of one pixel as raw RGB565, or `None` to discard it (the pixel and its
+    /// depth are left as they were).
+    fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
+}

@@ -1,0 +1,174 @@
+//! A texture as a shader uses it: level 0 (and the mip chain), a filter and two wrap modes,
+//! with the per-triangle texel-coordinate set-up and the per-pixel sample.
+//!
+//! Varying formats: a shader hands [`TexBinding::triangle`] the vertices' texture
+//! coordinates as *normalized* I16F16 bits (1.0 = one whole texture); after the call they
+//! are texel units, I16F16 bits (65536 = one texel), shifted right by
+//! [`TexTriangle::shift`]. [`TexBinding::sample`] undoes the shift and samples.
+//!
+//! Texture coordinates are rebased per triangle: for the periodic wrap modes (repeat,
+//! mirrored repeat) a whole number of periods is subtracted so that the smallest vertex value
+//! lies in `[0, period)`; this keeps thousands of repeats exact. When a triangle's texel
+//! coordinates still exceed `2^30` (16384 texels) they are shifted right and shifted back
+//! before sampling: wrapping for periodic modes (exact modulo the period), clamped for the
+//! clamp modes (where every value beyond the edge samples the same).
+
+use crate::texture::{Lod, MipTexture, TexSampler, Texture, Wrap, WrapMode};
+use crate::Error;
+
+/// A texture bound for sampling by a shader: level 0 by value (so its pointer and sizes stay
+/// in registers through a span), the chain by reference, the filter `F` and wraps `WU`, `WV`.
+#[derive(Clone, Copy, Debug)]
+pub struct TexBinding<'a, F, WU, WV> {
+    base: Texture<'a>,
+    chain: &'a MipTexture<'a>,
+    sampler: F,
+    wu: WU,
+    wv: WV,
+    lod: Lod,
+}
+
+/// Per-triangle data of one texture binding.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TexTriangle {
+    /// Right shift applied to this triangle's texel coordinates (0 unless they exceed 2^30).
+    pub shift: u8,
+    /// Per axis: true for the periodic wrap modes.
+    periodic: [bool; 2],
+}
+
+impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
+    /// Binds `chain` with filter value `sampler` and wrap values `wu`, `wv` (the markers are
+    /// zero-sized; [`DynWrap`](crate::texture::DynWrap) and
+    /// [`DynMip`](crate::texture::DynMip) carry run-time choices).
+    ///
+    /// # Errors
+    /// [`Error::BadMode`] when `F` is a mipmapping sampler and the level of detail's
+    /// clamps are inverted (`lod.min > lod.max`).
+    pub fn new(
+        chain: &'a MipTexture<'a>,
+        sampler: F,
+        wu: WU,
+        wv: WV,
+        lod: Lod,
+    ) -> Result<Self, Error> {
+        if F::LOD && lod.min > lod.max {
+            return Err(Error::BadMode("lod.min must not exceed lod.max"));
+        }
+        Ok(Self::new_unchecked(chain, sampler, wu, wv, lod))
+    }
+
+    /// [`TexBinding::new`] without the checks (the classic draw validated its mode).
+    #[inline(always)]
+    pub(crate) fn new_unchecked(
+        chain: &'a MipTexture<'a>,
+        sampler: F,
+        wu: WU,
+        wv: WV,
+        lod: Lod,
+    ) -> Self {
+        TexBinding {
+            base: *chain.base(),
+            chain,
+            sampler,
+            wu,
+            wv,
+            lod,
+        }
+    }
+
+    /// Level 0.
+    #[inline(always)]
+    pub fn base(&self) -> &Texture<'a> {
+        &self.base
+    }
+
+    /// The level-of-detail controls.
+    #[inline(always)]
+    pub fn lod(&self) -> &Lod {
+        &self.lod
+    }
+
+    /// Per triangle: turns the normalized I16F16 coordinates `u`, `v` of the three vertices
+    /// into rebased (and, rarely, shifted) texel units in place. See the module docs.
+    pub fn triangle(&self, u: [&mut i32; 3], v: [&mut i32; 3]) -> TexTriangle {
+        let tu = texel_coords(
+            [*u[0], *u[1], *u[2]],
+            self.base.log2_width(),
+            self.wu.mode(),
+        );
+        let tv = texel_coords(
+            [*v[0], *v[1], *v[2]],
+            self.base.log2_height(),
+            self.wv.mode(),
+        );
+        let max = tu
+            .iter()
+            .chain(tv.iter())
+            .map(|x| x.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        let shift = (64 - max.leading_zeros()).saturating_sub(30);
+        for (d, s) in u.into_iter().zip(tu) {
+            *d = (s >> shift) as i32;
+        }
+        for (d, s) in v.into_iter().zip(tv) {
+            *d = (s >> shift) as i32;
+        }
+        TexTriangle {
+            shift: shift as u8,
+            periodic: [periodic(self.wu.mode()), periodic(self.wv.mode())],
+        }
+    }
+
+    /// Samples at texel coordinates `u`, `v` (as [`TexBinding::triangle`] left them,
+    /// interpolated) with level of detail `lambda` (Q8.8, from [`Fragment::lambda`](super::Fragment::lambda); the
+    /// binding adds the shift, its bias and clamps). Returns raw RGB565. Never panics.
+    #[inline(always)]
+    pub fn sample(&self, tri: TexTriangle, u: i32, v: i32, lambda: i32) -> u16 {
+        let k = u32::from(tri.shift);
+        let u = unshift(u, k, tri.periodic[0]);
+        let v = unshift(v, k, tri.periodic[1]);
+        if F::LOD {
+            let l = lambda
+                .saturating_add(256 * k as i32)
+                .saturating_add(self.lod.bias)
+                .clamp(self.lod.min, self.lod.max.max(self.lod.min));
+            self.sampler
+                .sample_mip(self.chain, self.wu, self.wv, u, v, l)
+        } else {
+            self.sampler.sample_base(&self.base, self.wu, self.wv, u, v)
+        }
+    }
+}
+
+fn periodic(w: Wrap) -> bool {
+    matches!(w, Wrap::Repeat | Wrap::MirroredRepeat)
+}
+
+/// Texel coordinates (I16F16 bits) of the three vertices on one axis, rebased.
+fn texel_coords(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> [i64; 3] {
+    let mut t = uv.map(|x| i64::from(x) << log2_size);
+    if periodic(wrap) {
+        let period_log2 = 16 + log2_size + u32::from(wrap == Wrap::MirroredRepeat);
+        let min = t[0].min(t[1]).min(t[2]);
+        let base = (min >> period_log2) << period_log2;
+        for x in &mut t {
+            *x -= base;
+        }
+    }
+    t
+}
+
+/// Undoes the per-triangle texel-coordinate shift (rare: only huge uv extents).
+#[inline(always)]
+fn unshift(x: i32, k: u32, periodic: bool) -> i32 {
+    if k == 0 {
+        x
+    } else if periodic {
+        x.wrapping_shl(k)
+    } else {
+        let lim = (1i32 << 30) >> k.min(30);
+        x.clamp(-lim, lim) << k.min(30)
+    }
+}
