@@ -94,7 +94,9 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         let projection = match <M::P as ProjectionStage>::KIND {
             ProjKind::Affine => Projection::Affine,
             ProjKind::Exact => Projection::Exact,
-            ProjKind::Subdivided => Projection::Subdivided { log2_n: 3 },
+            ProjKind::Subdivided => Projection::Subdivided {
+                log2_n: <M::P as ProjectionStage>::LOG2_N,
+            },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
         };
         let mode = DrawMode {

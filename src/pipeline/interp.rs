@@ -16,19 +16,6 @@ use super::setup::TriSetup;
 use crate::shading::Varyings;
 use crate::texture::mip::lambda_q8;
 
-/// Interpolation of the varyings `V` along one span.
-pub(crate) trait Interp<V: Varyings> {
-    /// Starts at pixel `(x, y)` for a span of `len` pixels.
-    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self;
-    /// Values at the current pixel.
-    fn frag(&self) -> V;
-    /// Moves one pixel right.
-    fn step(&mut self);
-    /// Level of detail `lambda` (Q8.8, before bias) of the varying pair `(a, b)` at the
-    /// current pixel.
-    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32;
-}
-
 #[inline(always)]
 fn get<V: Varyings>(v: &V, k: usize) -> i32 {
     v.as_slice().get(k).copied().unwrap_or(0)
@@ -72,35 +59,6 @@ pub(crate) fn lambda_at<V: Varyings>(s: &TriSetup<V>, x: i32, y: i32, a: usize, 
         affine_lambda(s, a, b)
     } else {
         hyper_lambda(s, &Hyper::at(s, x, y), a, b)
-    }
-}
-
-/// Screen-linear interpolation.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct AffineInterp<V> {
-    f: V,
-    d: V,
-}
-
-impl<V: Varyings> Interp<V> for AffineInterp<V> {
-    #[inline(always)]
-    fn start(s: &TriSetup<V>, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
-        AffineInterp {
-            f: s.at(x, y),
-            d: s.dx,
-        }
-    }
-    #[inline(always)]
-    fn frag(&self) -> V {
-        self.f
-    }
-    #[inline(always)]
-    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
-        affine_lambda(s, a, b)
-    }
-    #[inline(always)]
-    fn step(&mut self) {
-        add(&mut self.f, &self.d);
     }
 }
 
@@ -148,6 +106,46 @@ impl<V: Varyings> Hyper<V> {
     }
 }
 
+/// Where the span loop wants varyings and levels of detail filled.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FillSpec {
+    /// The texture-coordinate pair, when the shader has one.
+    pub pair: (usize, usize),
+    /// Fill a level of detail per pixel (per segment for the linear modes).
+    pub lod: bool,
+    /// Left shift to undo on the pair (wrapping), see `Shader::coord_shift`.
+    pub shift: u32,
+}
+
+/// Interpolation along one span, a chunk of pixels at a time.
+pub(crate) trait Fill<V: Varyings> {
+    /// Starts at pixel `(x, y)` for a span of `len` pixels.
+    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self;
+    /// Level of detail (Q8.8, before bias) of `pair` at the next pixel.
+    fn lambda(&self, s: &TriSetup<V>, pair: (usize, usize)) -> i32;
+    /// Writes the varyings of the next `vals.len()` pixels into `vals` (and, with
+    /// `spec.lod`, their levels of detail into `lambdas`) and moves past them. Entries whose
+    /// bit in `mask` is clear may be left stale: the exact mode skips their reciprocal.
+    fn fill(
+        &mut self,
+        s: &TriSetup<V>,
+        vals: &mut [V],
+        lambdas: &mut [i32],
+        mask: u32,
+        spec: FillSpec,
+    );
+}
+
+/// Shifts the pair `(a, b)` of `v` left by `k`, wrapping.
+#[inline(always)]
+pub(crate) fn unshift<V: Varyings>(v: &mut V, (a, b): (usize, usize), k: u32) {
+    for i in [a, b] {
+        if let Some(x) = v.as_mut_slice().get_mut(i) {
+            *x = x.wrapping_shl(k);
+        }
+    }
+}
+
 /// Perspective-correct at every pixel.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ExactInterp<V> {
@@ -155,7 +153,7 @@ pub(crate) struct ExactInterp<V> {
     d: Hyper<V>,
 }
 
-impl<V: Varyings> Interp<V> for ExactInterp<V> {
+impl<V: Varyings> Fill<V> for ExactInterp<V> {
     #[inline(always)]
     fn start(s: &TriSetup<V>, x: i32, y: i32, _len: u32, _log2_n: u32) -> Self {
         ExactInterp {
@@ -164,16 +162,34 @@ impl<V: Varyings> Interp<V> for ExactInterp<V> {
         }
     }
     #[inline(always)]
-    fn frag(&self) -> V {
-        self.h.resolve()
-    }
-    #[inline(always)]
-    fn step(&mut self) {
-        self.h.add(&self.d);
-    }
-    #[inline(always)]
-    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+    fn lambda(&self, s: &TriSetup<V>, (a, b): (usize, usize)) -> i32 {
         hyper_lambda(s, &self.h, a, b)
+    }
+    #[inline(always)]
+    fn fill(
+        &mut self,
+        s: &TriSetup<V>,
+        vals: &mut [V],
+        lambdas: &mut [i32],
+        mask: u32,
+        spec: FillSpec,
+    ) {
+        let mut m = mask;
+        for (k, v) in vals.iter_mut().enumerate() {
+            if m & 1 != 0 {
+                *v = self.h.resolve();
+                if spec.shift != 0 {
+                    unshift(v, spec.pair, spec.shift);
+                }
+                if spec.lod {
+                    if let Some(l) = lambdas.get_mut(k) {
+                        *l = hyper_lambda(s, &self.h, spec.pair.0, spec.pair.1);
+                    }
+                }
+            }
+            m >>= 1;
+            self.h.add(&self.d);
+        }
     }
 }
 
@@ -188,26 +204,40 @@ static INV_SMALL: [u32; 64] = {
     t
 };
 
-/// Perspective-correct every `2^log2_n` pixels, affine in between.
+/// Linear interpolation in segments: affine (one segment per span) or subdivided (exact
+/// every `2^log2_n` pixels and at the span's last pixel, linear in between; one reciprocal
+/// per segment).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct SubdivInterp<V> {
+pub(crate) struct Linear<V, const SUBDIVIDED: bool> {
+    /// Values at the next pixel and their change per pixel.
     cur: V,
     slope: V,
-    end: V,
+    /// Pixels left in the current segment.
+    in_seg: u32,
+    /// Pixels of the span after the current segment.
+    left: u32,
+    /// Level of detail of the current segment (subdivided: at its first pixel).
+    seg_lambda: i32,
+    /// Subdivided: exact values at the next segment's first pixel and the perspective
+    /// interpolants there.
+    exact: V,
     next: Hyper<V>,
     d: Hyper<V>,
-    in_seg: u32,
-    left: u32,
     log2_n: u32,
-    /// Interpolants at the current segment's first pixel (for the level of detail).
-    seg_start: Hyper<V>,
+    /// Affine: whether the coordinate shift has been undone on the span's segment.
+    shifted: bool,
 }
 
-impl<V: Varyings> SubdivInterp<V> {
-    /// Sets up the segment from the current values to the exact values `seg` pixels on.
+impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
+    /// Starts the next segment of the span (subdivided only: the affine span is one
+    /// segment from the start). The segment runs from the current exact values to the exact
+    /// values `seg` pixels on.
     #[inline(always)]
-    fn segment(&mut self, seg: u32) {
-        self.seg_start = self.next;
+    fn segment(&mut self, s: &TriSetup<V>, spec: FillSpec) {
+        let seg = self.left.min(1 << self.log2_n);
+        if spec.lod {
+            self.seg_lambda = hyper_lambda(s, &self.next, spec.pair.0, spec.pair.1);
+        }
         // The span's last segment ends exactly on its last pixel (never outside the
         // triangle, where the hyperbola can be far from its chord); the others end on the
         // first pixel of the next segment.
@@ -217,60 +247,164 @@ impl<V: Varyings> SubdivInterp<V> {
             seg
         };
         self.next.add_scaled(&self.d, reach as i32);
-        self.end = self.next.resolve();
+        let end = self.next.resolve();
         let k = reach.min(63);
+        let mut slope = end;
         for i in 0..V::N {
-            let diff = self.end.as_slice()[i].wrapping_sub(self.cur.as_slice()[i]);
-            self.slope.as_mut_slice()[i] = if reach == 1 << self.log2_n {
+            let diff = end.as_slice()[i].wrapping_sub(self.exact.as_slice()[i]);
+            slope.as_mut_slice()[i] = if reach == 1 << self.log2_n {
                 diff >> self.log2_n
             } else {
                 ((i64::from(diff) * i64::from(INV_SMALL[k as usize])) >> 16) as i32
             };
         }
+        self.cur = self.exact;
+        self.slope = slope;
+        if spec.shift != 0 {
+            // (a + i d) << k = (a << k) + i (d << k) modulo 2^32: once per segment.
+            unshift(&mut self.cur, spec.pair, spec.shift);
+            unshift(&mut self.slope, spec.pair, spec.shift);
+        }
+        self.exact = end;
         self.in_seg = seg;
         self.left -= seg;
     }
 }
 
-impl<V: Varyings> Interp<V> for SubdivInterp<V> {
+/// One linear piece of a span: values at its first pixel, their change per pixel, its
+/// length, and its level of detail (when asked for).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Piece<V> {
+    pub start: V,
+    pub slope: V,
+    pub len: usize,
+    pub lambda: i32,
+}
+
+impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
+    /// Starts at pixel `(x, y)` for a span of `len` pixels.
     #[inline(always)]
-    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self {
-        let h = Hyper::at(s, x, y);
-        let log2_n = log2_n.clamp(1, 6);
-        let mut it = SubdivInterp {
-            cur: h.resolve(),
-            slope: V::zero(),
-            end: V::zero(),
-            next: h,
-            d: Hyper::dx(s),
-            in_seg: 0,
-            left: len,
-            log2_n,
-            seg_start: h,
-        };
-        let seg = len.min(1 << log2_n);
-        it.segment(seg);
-        it
-    }
-    #[inline(always)]
-    fn frag(&self) -> V {
-        self.cur
-    }
-    #[inline(always)]
-    fn lambda(&self, s: &TriSetup<V>, a: usize, b: usize) -> i32 {
-        hyper_lambda(s, &self.seg_start, a, b)
-    }
-    #[inline(always)]
-    fn step(&mut self) {
-        self.in_seg = self.in_seg.wrapping_sub(1);
-        if self.in_seg == 0 {
-            self.cur = self.end;
-            if self.left > 0 {
-                let seg = self.left.min(1 << self.log2_n);
-                self.segment(seg);
+    pub fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self {
+        if SUBDIVIDED {
+            let h = Hyper::at(s, x, y);
+            Linear {
+                cur: V::zero(),
+                slope: V::zero(),
+                in_seg: 0,
+                left: len,
+                seg_lambda: 0,
+                exact: h.resolve(),
+                next: h,
+                d: Hyper::dx(s),
+                log2_n: log2_n.clamp(1, 6),
+                shifted: true,
             }
         } else {
-            add(&mut self.cur, &self.slope);
+            Linear {
+                cur: s.at(x, y),
+                slope: s.dx,
+                in_seg: len,
+                left: 0,
+                seg_lambda: 0,
+                exact: V::zero(),
+                next: Hyper { s: V::zero(), q: 0 },
+                d: Hyper { s: V::zero(), q: 0 },
+                log2_n: 0,
+                shifted: false,
+            }
         }
     }
+
+    /// Level of detail (Q8.8, before bias) of `pair` at the next pixel.
+    #[inline(always)]
+    pub fn lambda(&self, s: &TriSetup<V>, (a, b): (usize, usize)) -> i32 {
+        if SUBDIVIDED {
+            hyper_lambda(s, &self.next, a, b)
+        } else {
+            affine_lambda(s, a, b)
+        }
+    }
+
+    /// The next linear piece, at most `max` pixels long, or `None` at the end of the span.
+    #[inline(always)]
+    pub fn piece(&mut self, s: &TriSetup<V>, max: usize, spec: FillSpec) -> Option<Piece<V>> {
+        if !SUBDIVIDED && !self.shifted {
+            // The affine span's only segment: undo the coordinate shift once, and take its
+            // (constant) level of detail.
+            self.shifted = true;
+            if spec.shift != 0 {
+                unshift(&mut self.cur, spec.pair, spec.shift);
+                unshift(&mut self.slope, spec.pair, spec.shift);
+            }
+            if spec.lod {
+                self.seg_lambda = affine_lambda(s, spec.pair.0, spec.pair.1);
+            }
+        }
+        if self.in_seg == 0 {
+            if !SUBDIVIDED || self.left == 0 {
+                return None;
+            }
+            self.segment(s, spec);
+        }
+        let len = (self.in_seg as usize).min(max);
+        let p = Piece {
+            start: self.cur,
+            slope: self.slope,
+            len,
+            lambda: self.seg_lambda,
+        };
+        for i in 0..V::N {
+            let d = self.slope.as_slice()[i].wrapping_mul(len as i32);
+            self.cur.as_mut_slice()[i] = self.cur.as_slice()[i].wrapping_add(d);
+        }
+        self.in_seg -= len as u32;
+        Some(p)
+    }
+}
+
+impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
+    #[inline(always)]
+    fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self {
+        Linear::start(s, x, y, len, log2_n)
+    }
+    #[inline(always)]
+    fn lambda(&self, s: &TriSetup<V>, pair: (usize, usize)) -> i32 {
+        Linear::lambda(self, s, pair)
+    }
+    #[inline(always)]
+    fn fill(
+        &mut self,
+        s: &TriSetup<V>,
+        vals: &mut [V],
+        lambdas: &mut [i32],
+        _: u32,
+        spec: FillSpec,
+    ) {
+        let mut off = 0usize;
+        while off < vals.len() {
+            let Some(p) = self.piece(s, vals.len() - off, spec) else {
+                break;
+            };
+            let end = (off + p.len).min(vals.len());
+            let mut v = p.start;
+            if let Some(vs) = vals.get_mut(off..end) {
+                for x in vs.iter_mut() {
+                    *x = v;
+                    step(&mut v, &p.slope);
+                }
+            }
+            if spec.lod {
+                if let Some(ls) = lambdas.get_mut(off..end) {
+                    ls.fill(p.lambda);
+                }
+            }
+            off = end;
+        }
+    }
+}
+
+/// `v += d` per varying, wrapping.
+#[inline(always)]
+pub(crate) fn step<V: Varyings>(v: &mut V, d: &V) {
+    add(v, d);
 }

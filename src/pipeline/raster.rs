@@ -8,7 +8,7 @@
 
 use super::interp::lambda_at;
 use super::setup::setup;
-use super::span::{span, SpanCtx};
+use super::span::{span, Scratch, SpanCtx};
 use super::stages::{DepthStage, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -49,6 +49,7 @@ impl RasterParams {
 
 struct Writer<'t, S: Shader, P, D, C> {
     ctx: SpanCtx<S>,
+    scratch: Scratch<S::Varyings>,
     target: &'t mut dyn RenderTarget<Color = C>,
     pixels: u32,
     _stages: core::marker::PhantomData<(P, D)>,
@@ -60,7 +61,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
         if let Some((row, depth)) = self.target.row_mut(y) {
-            let n = span::<S, P, D, C>(&self.ctx, y, x0, x1, row, depth);
+            let n = span::<S, P, D, C>(&self.ctx, &mut self.scratch, y, x0, x1, row, depth);
             self.pixels = self.pixels.wrapping_add(n);
         }
     }
@@ -122,10 +123,12 @@ where
         triangle,
         tri_lambda,
         log2_n: params.log2_n,
+        coord_shift: S::coord_shift(&triangle),
         depth_on: params.depth_on,
     };
     let mut w = Writer::<S, P, D, C> {
         ctx,
+        scratch: Scratch::new(),
         target,
         pixels: 0,
         _stages: core::marker::PhantomData,

@@ -65,7 +65,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
         let projection = match P::KIND {
             ProjKind::Affine => Projection::Affine,
             ProjKind::Exact => Projection::Exact,
-            ProjKind::Subdivided => Projection::Subdivided { log2_n: 3 },
+            ProjKind::Subdivided => Projection::Subdivided { log2_n: P::LOG2_N },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
         };
         Ok(ShadedDraw {

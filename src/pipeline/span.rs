@@ -1,17 +1,26 @@
-//! The fused per-pixel loop: depth test, interpolation of the shader's varyings, the
-//! shader, and the store, for one span, monomorphised per shader, projection and depth.
+//! The per-pixel loop: depth test, interpolation of the shader's varyings, the shader, and
+//! the stores, for one span, monomorphised per shader, projection and depth.
+//!
+//! A span is processed in chunks of up to 32 pixels, in three passes that each keep few
+//! values live (so nothing spills on a 13-register Cortex-M core):
+//! 1. depth: test (`GL_LESS`) and, unless the shader can discard, write the 16-bit depth of
+//!    the chunk's pixels, collecting a 32-bit visibility mask;
+//! 2. interpolation: the chunk's varyings (and levels of detail, when the shader reads them)
+//!    into a small stack array; the exact mode computes its reciprocal only for visible
+//!    pixels, the linear modes add a slope per pixel;
+//! 3. shading (not inlined, so it gets its own registers): the shader for each visible
+//!    pixel, and the store.
 //!
 //! Nothing is decided per pixel that was known per draw: the projection picks the
 //! interpolator type, the shader is a type whose `shade` is inlined, and depth is a const
 //! generic chosen once per span (a depth-testing draw into a target without a depth buffer
-//! falls back to the untested loop). The depth test runs before the varyings are resolved,
-//! so a hidden pixel costs no reciprocal and no texel fetch.
+//! falls back to the untested loop).
 
-use super::interp::{AffineInterp, ExactInterp, Interp, SubdivInterp};
+use super::interp::{step, ExactInterp, Fill, FillSpec, Linear};
 use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage};
 use crate::color::TargetColor;
-use crate::shading::{Fragment, Shader};
+use crate::shading::{Fragment, Shader, Varyings};
 use crate::texture::LodGranularity;
 
 /// Per-draw, per-triangle state the span loop reads.
@@ -23,13 +32,212 @@ pub(crate) struct SpanCtx<S: Shader> {
     /// Level of detail of the whole triangle (for [`LodGranularity::Triangle`]).
     pub tri_lambda: i32,
     pub log2_n: u32,
+    /// Left shift to undo on the texture-coordinate pair ([`Shader::coord_shift`]).
+    pub coord_shift: u32,
     /// The draw's run-time depth switch (for the typed path it is always on and the stage's
     /// type decides; the run-time path links one depth-testing loop and turns it off here).
     pub depth_on: bool,
 }
 
+/// Pixels per chunk: one word of visibility mask.
+pub(crate) const CHUNK: usize = 32;
+
+/// The chunk arrays of the filled modes, owned by the triangle's span writer so they are
+/// initialised once per triangle, not once per span.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Scratch<V> {
+    vals: [V; CHUNK],
+    lambdas: [i32; CHUNK],
+}
+
+impl<V: Varyings> Scratch<V> {
+    pub fn new() -> Self {
+        Scratch {
+            vals: [V::zero(); CHUNK],
+            lambdas: [0; CHUNK],
+        }
+    }
+}
+
+/// The mask with the low `n` bits set (`n <= 32`).
 #[inline(always)]
-fn run<S: Shader, C: TargetColor, I: Interp<S::Varyings>, const Z: bool>(
+fn low_bits(n: usize) -> u32 {
+    if n >= 32 {
+        u32::MAX
+    } else {
+        (1u32 << n) - 1
+    }
+}
+
+/// Depth test of one chunk (`GL_LESS`, depth `z >> 14` saturated to 16 bits): bit `k` of
+/// the result is set when pixel `k` passes. With `WRITE`, passing depths are written.
+#[inline(never)]
+fn depth_chunk<const WRITE: bool>(z0: i32, dz: i32, zrow: &mut [u16]) -> u32 {
+    let mut z = z0;
+    let mut m = 0u32;
+    let mut bit = 1u32;
+    for zb in zrow.iter_mut() {
+        let d = (z >> 14).clamp(0, 0xFFFF);
+        if d < i32::from(*zb) {
+            if WRITE {
+                *zb = d as u16;
+            }
+            m |= bit;
+        }
+        bit <<= 1;
+        z = z.wrapping_add(dz);
+    }
+    m
+}
+
+/// Where a chunk starts, for the fragments' position fields and the level of detail.
+#[derive(Clone, Copy, Debug)]
+struct Pos {
+    x: i32,
+    y: i32,
+    z: i32,
+    dz: i32,
+    /// The level of detail when it is not per pixel.
+    lambda: i32,
+    /// Read `lambdas` instead of `lambda`.
+    per_pixel: bool,
+}
+
+/// Shades the pixels of `out` whose bit is set in `mask` (bit 0 = first pixel) from the
+/// filled `vals`; with `ZW` (a shader that discards) writes their depth to `zrow` as well.
+/// Returns the pixels written. Not inlined: its registers are allocated on their own, so
+/// the shader's uniforms stay in registers through the loop.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
+    shader: &S,
+    triangle: S::Triangle,
+    vals: &[S::Varyings],
+    lambdas: &[i32],
+    out: &mut [C],
+    zrow: &mut [u16],
+    mask: u32,
+    pos: Pos,
+) -> u32 {
+    let shader = *shader;
+    if !shader.can_draw() {
+        return 0;
+    }
+    let frag = |v: S::Varyings, k: usize| Fragment {
+        varyings: v,
+        x: pos.x.wrapping_add(k as i32),
+        y: pos.y,
+        depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
+        lambda: if pos.per_pixel {
+            lambdas.get(k).copied().unwrap_or(0)
+        } else {
+            pos.lambda
+        },
+        triangle,
+    };
+    let mut written = 0u32;
+    if !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
+        for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
+            if let Some(c) = shader.shade(&frag(*v, k)) {
+                *o = C::from_rgb565(c);
+            }
+        }
+        return out.len().min(vals.len()) as u32;
+    }
+    let mut m = mask;
+    for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
+        if m & 1 != 0 {
+            let f = frag(*v, k);
+            if let Some(c) = shader.shade(&f) {
+                *o = C::from_rgb565(c);
+                if ZW {
+                    if let Some(zb) = zrow.get_mut(k) {
+                        *zb = f.depth;
+                    }
+                }
+                written += 1;
+            }
+        }
+        m >>= 1;
+    }
+    written
+}
+
+/// Like [`shade_chunk`] for a linear piece: the varyings start at `start` and change by
+/// `slope` per pixel, stepped here in registers.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
+    shader: &S,
+    triangle: S::Triangle,
+    start: &S::Varyings,
+    slope: &S::Varyings,
+    out: &mut [C],
+    zrow: &mut [u16],
+    mask: u32,
+    pos: Pos,
+) -> u32 {
+    let shader = *shader;
+    if !shader.can_draw() {
+        return 0;
+    }
+    let slope = *slope;
+    let mut v = *start;
+    let frag = |v: S::Varyings, k: usize| Fragment {
+        varyings: v,
+        x: pos.x.wrapping_add(k as i32),
+        y: pos.y,
+        depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
+        lambda: pos.lambda,
+        triangle,
+    };
+    let mut written = 0u32;
+    if !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
+        for (k, o) in out.iter_mut().enumerate() {
+            if let Some(c) = shader.shade(&frag(v, k)) {
+                *o = C::from_rgb565(c);
+            }
+            step(&mut v, &slope);
+        }
+        return out.len() as u32;
+    }
+    let mut m = mask;
+    for (k, o) in out.iter_mut().enumerate() {
+        if m & 1 != 0 {
+            let f = frag(v, k);
+            if let Some(c) = shader.shade(&f) {
+                *o = C::from_rgb565(c);
+                if ZW {
+                    if let Some(zb) = zrow.get_mut(k) {
+                        *zb = f.depth;
+                    }
+                }
+                written += 1;
+            }
+        }
+        m >>= 1;
+        step(&mut v, &slope);
+    }
+    written
+}
+
+/// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels).
+#[inline(always)]
+fn chunk_mask<S: Shader, const Z: bool>(z: i32, dz: i32, zc: &mut [u16], n: usize) -> u32 {
+    if !Z {
+        low_bits(n)
+    } else if S::DISCARDS {
+        // Test only: depth is written for the pixels the shader keeps.
+        depth_chunk::<false>(z, dz, zc) & low_bits(n)
+    } else {
+        depth_chunk::<true>(z, dz, zc) & low_bits(n)
+    }
+}
+
+/// Affine and subdivided spans: per chunk, the depth mask, then each linear piece of the
+/// chunk shaded with its varyings stepped in registers.
+#[inline(always)]
+fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
     ctx: &SpanCtx<S>,
     x: i32,
     y: i32,
@@ -37,74 +245,169 @@ fn run<S: Shader, C: TargetColor, I: Interp<S::Varyings>, const Z: bool>(
     zrow: &mut [u16],
 ) -> u32 {
     let s = &ctx.setup;
-    // The shader in a local: its uniforms can live in registers through the loop.
-    let shader = ctx.shader;
-    let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
-    let (a, b) = S::TEXCOORDS.unwrap_or((0, 1));
-    let granularity = if S::LOD {
-        shader.lod_granularity()
-    } else {
-        LodGranularity::Triangle
+    let pair = S::TEXCOORDS.unwrap_or((0, 1));
+    let mut it = Linear::<S::Varyings, SUB>::start(s, x, y, out.len() as u32, ctx.log2_n);
+    let (lambda, per_piece) = lod_policy(ctx, || it.lambda(s, pair));
+    let spec = FillSpec {
+        pair,
+        lod: per_piece,
+        shift: ctx.coord_shift,
     };
-    let per_pixel = S::LOD && granularity == LodGranularity::Pixel;
-    let fixed_lambda = if !S::LOD {
-        0
-    } else {
-        match granularity {
-            LodGranularity::Triangle => ctx.tri_lambda,
-            _ => it.lambda(s, a, b),
-        }
-    };
-    let lambda = |it: &I| -> i32 {
-        if per_pixel {
-            it.lambda(s, a, b)
-        } else {
-            fixed_lambda
-        }
-    };
+    let dz = s.z.dx;
     let mut z = s.plane_at(&s.z, x, y);
-    let mut written = 0u32;
     let mut px = x;
-    if Z {
-        for (o, zb) in out.iter_mut().zip(zrow.iter_mut()) {
-            let d = (z >> 14).clamp(0, 0xFFFF) as u16;
-            if d < *zb {
-                let f = Fragment {
-                    varyings: it.frag(),
-                    x: px,
+    let mut written = 0u32;
+    let mut zs: &mut [u16] = zrow;
+    for os in out.chunks_mut(CHUNK) {
+        let n = os.len();
+        let (zc, zrest) = if Z {
+            if n > zs.len() {
+                break;
+            }
+            core::mem::take(&mut zs).split_at_mut(n)
+        } else {
+            (&mut [][..], &mut [][..])
+        };
+        zs = zrest;
+        let mask = chunk_mask::<S, Z>(z, dz, zc, n);
+        let mut off = 0usize;
+        while off < n {
+            let Some(p) = it.piece(s, n - off, spec) else {
+                break;
+            };
+            let end = (off + p.len).min(n);
+            let m = mask >> off;
+            if m & low_bits(end - off) != 0 {
+                let pos = Pos {
+                    x: px.wrapping_add(off as i32),
                     y,
-                    depth: d,
-                    lambda: lambda(&it),
-                    triangle: ctx.triangle,
+                    z: z.wrapping_add(dz.wrapping_mul(off as i32)),
+                    dz,
+                    lambda: if per_piece { p.lambda } else { lambda },
+                    per_pixel: false,
                 };
-                if let Some(c) = shader.shade(&f) {
-                    *zb = d;
-                    *o = C::from_rgb565(c);
-                    written += 1;
+                let (Some(o), Some(zp)) = (
+                    os.get_mut(off..end),
+                    if Z {
+                        zc.get_mut(off..end)
+                    } else {
+                        Some(&mut [][..])
+                    },
+                ) else {
+                    break;
+                };
+                let shaded = if Z && S::DISCARDS {
+                    shade_linear::<S, C, true>(
+                        &ctx.shader,
+                        ctx.triangle,
+                        &p.start,
+                        &p.slope,
+                        o,
+                        zp,
+                        m,
+                        pos,
+                    )
+                } else {
+                    shade_linear::<S, C, false>(
+                        &ctx.shader,
+                        ctx.triangle,
+                        &p.start,
+                        &p.slope,
+                        o,
+                        zp,
+                        m,
+                        pos,
+                    )
+                };
+                if !Z || S::DISCARDS {
+                    written += shaded;
                 }
             }
-            z = z.wrapping_add(s.z.dx);
-            px = px.wrapping_add(1);
-            it.step();
+            off = end;
         }
-    } else {
-        for o in out.iter_mut() {
-            let f = Fragment {
-                varyings: it.frag(),
+        if Z && !S::DISCARDS {
+            written += mask.count_ones();
+        }
+        z = z.wrapping_add(dz.wrapping_mul(n as i32));
+        px = px.wrapping_add(n as i32);
+    }
+    written
+}
+
+/// The level of detail handed to the shader: `(fixed value, per pixel or piece?)`.
+#[inline(always)]
+fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i32, bool) {
+    if !S::LOD {
+        return (0, false);
+    }
+    match ctx.shader.lod_granularity() {
+        LodGranularity::Triangle => (ctx.tri_lambda, false),
+        LodGranularity::Span => (at_start(), false),
+        LodGranularity::Pixel => (0, true),
+    }
+}
+
+#[inline(always)]
+fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
+    ctx: &SpanCtx<S>,
+    scratch: &mut Scratch<S::Varyings>,
+    x: i32,
+    y: i32,
+    out: &mut [C],
+    zrow: &mut [u16],
+) -> u32 {
+    let s = &ctx.setup;
+    let pair = S::TEXCOORDS.unwrap_or((0, 1));
+    let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
+    let (lambda, per_pixel) = lod_policy(ctx, || it.lambda(s, pair));
+    let spec = FillSpec {
+        pair,
+        lod: per_pixel,
+        shift: ctx.coord_shift,
+    };
+    let dz = s.z.dx;
+    let mut z = s.plane_at(&s.z, x, y);
+    let mut px = x;
+    let mut written = 0u32;
+    let Scratch { vals, lambdas } = scratch;
+    let mut zs: &mut [u16] = zrow;
+    for os in out.chunks_mut(CHUNK) {
+        let n = os.len();
+        let (zc, zrest) = if Z {
+            let Some(split) = (n <= zs.len()).then(|| core::mem::take(&mut zs).split_at_mut(n))
+            else {
+                break;
+            };
+            split
+        } else {
+            (&mut [][..], &mut [][..])
+        };
+        zs = zrest;
+        let mask = chunk_mask::<S, Z>(z, dz, zc, n);
+        let (Some(vs), Some(ls)) = (vals.get_mut(..n), lambdas.get_mut(..n)) else {
+            break;
+        };
+        it.fill(s, vs, ls, mask, spec);
+        if mask != 0 {
+            let pos = Pos {
                 x: px,
                 y,
-                depth: (z >> 14).clamp(0, 0xFFFF) as u16,
-                lambda: lambda(&it),
-                triangle: ctx.triangle,
+                z,
+                dz,
+                lambda,
+                per_pixel: spec.lod,
             };
-            if let Some(c) = shader.shade(&f) {
-                *o = C::from_rgb565(c);
-                written += 1;
-            }
-            z = z.wrapping_add(s.z.dx);
-            px = px.wrapping_add(1);
-            it.step();
+            written += if Z && S::DISCARDS {
+                shade_chunk::<S, C, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
+            } else if Z {
+                shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos);
+                mask.count_ones()
+            } else {
+                shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
+            };
         }
+        z = z.wrapping_add(dz.wrapping_mul(n as i32));
+        px = px.wrapping_add(n as i32);
     }
     written
 }
@@ -115,6 +418,7 @@ fn run<S: Shader, C: TargetColor, I: Interp<S::Varyings>, const Z: bool>(
 #[inline(never)]
 pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
     ctx: &SpanCtx<S>,
+    scratch: &mut Scratch<S::Varyings>,
     y: i32,
     x0: i32,
     x1: i32,
@@ -132,23 +436,33 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     } else {
         None
     };
-    type A<S> = AffineInterp<<S as Shader>::Varyings>;
     type E<S> = ExactInterp<<S as Shader>::Varyings>;
-    type Sd<S> = SubdivInterp<<S as Shader>::Varyings>;
-    match (P::KIND, zrow) {
-        (ProjKind::Affine, Some(z)) => run::<S, C, A<S>, true>(ctx, x0, y, out, z),
-        (ProjKind::Affine, None) => run::<S, C, A<S>, false>(ctx, x0, y, out, &mut []),
-        (ProjKind::Exact, Some(z)) => run::<S, C, E<S>, true>(ctx, x0, y, out, z),
-        (ProjKind::Exact, None) => run::<S, C, E<S>, false>(ctx, x0, y, out, &mut []),
-        (ProjKind::Subdivided, Some(z)) => run::<S, C, Sd<S>, true>(ctx, x0, y, out, z),
-        (ProjKind::Subdivided, None) => run::<S, C, Sd<S>, false>(ctx, x0, y, out, &mut []),
-        (ProjKind::Adaptive, Some(z)) if ctx.setup.affine => {
-            run::<S, C, A<S>, true>(ctx, x0, y, out, z)
+    type L<S, const SUB: bool> = Linear<<S as Shader>::Varyings, SUB>;
+    // Long linear pieces step their varyings inside the shading loop; short ones (N < 16)
+    // are filled into the chunk's array first, which costs a store and a load per varying
+    // but one shading call per chunk instead of one per piece.
+    let long = ctx.log2_n >= 4;
+    let affine = match P::KIND {
+        ProjKind::Affine => true,
+        ProjKind::Adaptive => ctx.setup.affine,
+        _ => false,
+    };
+    match (P::KIND, affine, zrow) {
+        (_, true, Some(z)) => run_linear::<S, C, false, true>(ctx, x0, y, out, z),
+        (_, true, None) => run_linear::<S, C, false, false>(ctx, x0, y, out, &mut []),
+        (ProjKind::Subdivided, _, Some(z)) if long => {
+            run_linear::<S, C, true, true>(ctx, x0, y, out, z)
         }
-        (ProjKind::Adaptive, None) if ctx.setup.affine => {
-            run::<S, C, A<S>, false>(ctx, x0, y, out, &mut [])
+        (ProjKind::Subdivided, _, None) if long => {
+            run_linear::<S, C, true, false>(ctx, x0, y, out, &mut [])
         }
-        (ProjKind::Adaptive, Some(z)) => run::<S, C, E<S>, true>(ctx, x0, y, out, z),
-        (ProjKind::Adaptive, None) => run::<S, C, E<S>, false>(ctx, x0, y, out, &mut []),
+        (ProjKind::Subdivided, _, Some(z)) => {
+            run::<S, C, L<S, true>, true>(ctx, scratch, x0, y, out, z)
+        }
+        (ProjKind::Subdivided, _, None) => {
+            run::<S, C, L<S, true>, false>(ctx, scratch, x0, y, out, &mut [])
+        }
+        (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, scratch, x0, y, out, z),
+        (_, _, None) => run::<S, C, E<S>, false>(ctx, scratch, x0, y, out, &mut []),
     }
 }

@@ -100,8 +100,11 @@ pub struct DrawMode {
 
 /// Marker for the projection stage.
 pub trait ProjectionStage: Copy + Default + Debug {
-    /// Which interpolation this marker selects (subdivision length comes from the draw).
+    /// Which interpolation this marker selects.
     const KIND: ProjKind;
+    /// Log2 of the subdivision length a draw of this marker starts with (subdivided only;
+    /// the draw's `with_subdivision` changes it).
+    const LOG2_N: u8 = 3;
 }
 /// Projection kind without parameters (for markers).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,6 +148,21 @@ impl ProjectionStage for Affine {
 pub struct Subdivided;
 impl ProjectionStage for Subdivided {
     const KIND: ProjKind = ProjKind::Subdivided;
+}
+/// Subdivided projection marker with the subdivision length in the type:
+/// `SubdividedBy<4>` is exact every 16 pixels (`LOG2_N` in `1..=6`; other values are
+/// clamped into that range).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SubdividedBy<const LOG2_N: u8>;
+impl<const LOG2_N: u8> ProjectionStage for SubdividedBy<LOG2_N> {
+    const KIND: ProjKind = ProjKind::Subdivided;
+    const LOG2_N: u8 = if LOG2_N < 1 {
+        1
+    } else if LOG2_N > 6 {
+        6
+    } else {
+        LOG2_N
+    };
 }
 /// Adaptive projection marker (affine or exact per triangle; budget from the draw,
 /// default 1/4 texel).

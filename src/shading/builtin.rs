@@ -18,7 +18,7 @@
 //! so the classic [`Draw`](crate::pipeline::Draw) API feeds them unchanged.
 
 use super::{Fragment, Shader, TexBinding, TexTriangle};
-use crate::color::{modulate_rgb, modulate_scalar, rgb565};
+use crate::color::{modulate_rgb, rgb565};
 use crate::geometry::{CLASSIC_VARYINGS, COLOR_ONE};
 use crate::texture::{LodGranularity, TexSampler, WrapMode};
 
@@ -42,6 +42,14 @@ macro_rules! textured_common {
         #[inline(always)]
         fn lod_granularity(&self) -> LodGranularity {
             self.tex.lod().granularity
+        }
+        #[inline(always)]
+        fn can_draw(&self) -> bool {
+            self.tex.can_draw()
+        }
+        #[inline(always)]
+        fn coord_shift(t: &TexTriangle) -> u32 {
+            u32::from(t.shift)
         }
         #[inline]
         fn triangle(&self, v: &mut [Self::Varyings; 3]) -> TexTriangle {
@@ -89,10 +97,7 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 3], TexTriangle>) -> Option<u16> {
         let [u, v, i] = f.varyings;
-        Some(modulate_scalar(
-            self.tex.sample(f.triangle, u, v, f.lambda),
-            q8(i),
-        ))
+        Some(self.tex.sample_scaled(f.triangle, u, v, f.lambda, q8(i)))
     }
 }
 

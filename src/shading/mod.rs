@@ -128,6 +128,11 @@ pub trait Shader: Copy {
     /// Q8.16 colour range), and [`Fragment::lambda`] is this pair's level of detail.
     const TEXCOORDS: Option<(usize, usize)> = None;
 
+    /// True when [`Shader::shade`] may return `None` (alpha-tested cut-outs). A shader that
+    /// never discards lets a depth-tested span test and write depth for all its pixels first
+    /// and shade only the visible ones; one that does keeps the test and the write fused.
+    const DISCARDS: bool = false;
+
     /// True when the shader reads [`Fragment::lambda`] (mipmapping): the span loop then
     /// computes it from the [`Shader::TEXCOORDS`] pair.
     const LOD: bool = false;
@@ -138,6 +143,23 @@ pub trait Shader: Copy {
         crate::texture::LodGranularity::Pixel
     }
 
+    /// Left shift, in bits, that the span loop applies (wrapping) to the
+    /// [`Shader::TEXCOORDS`] pair before [`Shader::shade`]: a hook that had to shift huge
+    /// texel coordinates right to fit them in `i32` per triangle says so here (see
+    /// [`TexBinding`]). Default 0.
+    #[inline(always)]
+    fn coord_shift(_triangle: &Self::Triangle) -> u32 {
+        0
+    }
+
+    /// False when the shader cannot draw anything (for example a binding to an empty texel
+    /// slice, which fixel's constructors never produce). The span loop checks it once per
+    /// chunk, so the compiler can drop the per-texel bounds branch of every fetch.
+    #[inline(always)]
+    fn can_draw(&self) -> bool {
+        true
+    }
+
     /// Called once per screen triangle with the varyings of its three vertices, before the
     /// set-up builds their planes: rescale or rebase them here (texture coordinates to texel
     /// units, for example). Every varying and every difference of two vertices' values must
@@ -145,6 +167,7 @@ pub trait Shader: Copy {
     fn triangle(&self, varyings: &mut [Self::Varyings; 3]) -> Self::Triangle;
 
     /// The colour of one pixel as raw RGB565, or `None` to discard it (the pixel and its
-    /// depth are left as they were).
+    /// depth are left as they were; a shader that discards must say so in
+    /// [`Shader::DISCARDS`], or the depth is written anyway).
     fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
 }

@@ -9,9 +9,12 @@
 //! Texture coordinates are rebased per triangle: for the periodic wrap modes (repeat,
 //! mirrored repeat) a whole number of periods is subtracted so that the smallest vertex value
 //! lies in `[0, period)`; this keeps thousands of repeats exact. When a triangle's texel
-//! coordinates still exceed `2^30` (16384 texels) they are shifted right and shifted back
-//! before sampling: wrapping for periodic modes (exact modulo the period), clamped for the
-//! clamp modes (where every value beyond the edge samples the same).
+//! coordinates still exceed `2^30` (16384 texels) they are shifted right, and the span loop
+//! shifts the interpolated values back (wrapping: exact modulo the period, see
+//! [`Shader::coord_shift`](super::Shader::coord_shift)). A clamp-mode axis is first
+//! saturated to ±2^30 texel units: beyond 16384 texels every value samples the edge or the
+//! border, so only triangles spanning more than that are interpolated inexactly (the hard
+//! case `extreme_minification_thousands_of_repeats` checks the border still matches).
 
 use crate::texture::{Lod, MipTexture, TexSampler, Texture, Wrap, WrapMode};
 use crate::Error;
@@ -31,10 +34,9 @@ pub struct TexBinding<'a, F, WU, WV> {
 /// Per-triangle data of one texture binding.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TexTriangle {
-    /// Right shift applied to this triangle's texel coordinates (0 unless they exceed 2^30).
+    /// Right shift applied to this triangle's texel coordinates (0 unless they exceed 2^30);
+    /// the span loop undoes it before the shader runs.
     pub shift: u8,
-    /// Per axis: true for the periodic wrap modes.
-    periodic: [bool; 2],
 }
 
 impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
@@ -77,6 +79,12 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         }
     }
 
+    /// True when level 0 has texels (always, for a binding built from fixel's textures).
+    #[inline(always)]
+    pub fn can_draw(&self) -> bool {
+        !self.base.texels().is_empty()
+    }
+
     /// Level 0.
     #[inline(always)]
     pub fn base(&self) -> &Texture<'a> {
@@ -92,16 +100,24 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     /// Per triangle: turns the normalized I16F16 coordinates `u`, `v` of the three vertices
     /// into rebased (and, rarely, shifted) texel units in place. See the module docs.
     pub fn triangle(&self, u: [&mut i32; 3], v: [&mut i32; 3]) -> TexTriangle {
-        let tu = texel_coords(
+        let mut tu = texel_coords(
             [*u[0], *u[1], *u[2]],
             self.base.log2_width(),
             self.wu.mode(),
         );
-        let tv = texel_coords(
+        let mut tv = texel_coords(
             [*v[0], *v[1], *v[2]],
             self.base.log2_height(),
             self.wv.mode(),
         );
+        const LIM: i64 = 1 << 30;
+        for (t, w) in [(&mut tu, self.wu.mode()), (&mut tv, self.wv.mode())] {
+            if !periodic(w) {
+                for x in t.iter_mut() {
+                    *x = (*x).clamp(-LIM, LIM);
+                }
+            }
+        }
         let max = tu
             .iter()
             .chain(tv.iter())
@@ -115,20 +131,16 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         for (d, s) in v.into_iter().zip(tv) {
             *d = (s >> shift) as i32;
         }
-        TexTriangle {
-            shift: shift as u8,
-            periodic: [periodic(self.wu.mode()), periodic(self.wv.mode())],
-        }
+        TexTriangle { shift: shift as u8 }
     }
 
-    /// Samples at texel coordinates `u`, `v` (as [`TexBinding::triangle`] left them,
-    /// interpolated) with level of detail `lambda` (Q8.8, from [`Fragment::lambda`](super::Fragment::lambda); the
-    /// binding adds the shift, its bias and clamps). Returns raw RGB565. Never panics.
+    /// Samples at texel coordinates `u`, `v` (I16F16 texel units, as the span loop hands
+    /// them to the shader) with level of detail `lambda` (Q8.8, from
+    /// [`Fragment::lambda`](super::Fragment::lambda); the binding adds the triangle's shift,
+    /// its bias and clamps). Returns raw RGB565. Never panics.
     #[inline(always)]
     pub fn sample(&self, tri: TexTriangle, u: i32, v: i32, lambda: i32) -> u16 {
         let k = u32::from(tri.shift);
-        let u = unshift(u, k, tri.periodic[0]);
-        let v = unshift(v, k, tri.periodic[1]);
         if F::LOD {
             let l = lambda
                 .saturating_add(256 * k as i32)
@@ -138,6 +150,21 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
                 .sample_mip(self.chain, self.wu, self.wv, u, v, l)
         } else {
             self.sampler.sample_base(&self.base, self.wu, self.wv, u, v)
+        }
+    }
+}
+
+impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
+    /// [`TexBinding::sample`] times intensity `i` (Q8, `0..=256`; larger is 256): the lit
+    /// texture of [`ModulateIntensity`](super::ModulateIntensity). Plain bilinear folds the
+    /// intensity into its filter weights (one rounding); the others modulate the sample.
+    #[inline(always)]
+    pub fn sample_scaled(&self, tri: TexTriangle, u: i32, v: i32, lambda: i32, i: u16) -> u16 {
+        if F::LOD {
+            crate::color::modulate_scalar(self.sample(tri, u, v, lambda), i)
+        } else {
+            self.sampler
+                .sample_base_scaled(&self.base, self.wu, self.wv, u, v, i)
         }
     }
 }
@@ -158,17 +185,4 @@ fn texel_coords(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> [i64; 3] {
         }
     }
     t
-}
-
-/// Undoes the per-triangle texel-coordinate shift (rare: only huge uv extents).
-#[inline(always)]
-fn unshift(x: i32, k: u32, periodic: bool) -> i32 {
-    if k == 0 {
-        x
-    } else if periodic {
-        x.wrapping_shl(k)
-    } else {
-        let lim = (1i32 << 30) >> k.min(30);
-        x.clamp(-lim, lim) << k.min(30)
-    }
 }

@@ -264,6 +264,21 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         lambda: i32,
     ) -> u16;
 
+    /// [`TexSampler::sample_base`] times intensity `i` (Q8, `0..=256`). The default
+    /// modulates the sample; the plain samplers use [`Sampler::sample_scaled`].
+    #[inline(always)]
+    fn sample_base_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        crate::color::modulate_scalar(self.sample_base(base, wu, wv, u, v), i)
+    }
+
     /// Samples level 0 only (what the span loop calls when `LOD` is false, with the level
     /// copied into a local so its fields stay in registers).
     fn sample_base<WU: WrapMode, WV: WrapMode>(
@@ -277,6 +292,7 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
 }
 
 /// The plain samplers: no level of detail, always level 0.
+/// (`sample_base_scaled` goes through [`Sampler::sample_scaled`], fused for bilinear.)
 macro_rules! plain_sampler {
     ($($t:ident => $f:expr),* $(,)?) => {$(
         impl TexSampler for $t {
@@ -304,6 +320,18 @@ macro_rules! plain_sampler {
                 v: i32,
             ) -> u16 {
                 $t::sample(base, wu, wv, u, v)
+            }
+            #[inline(always)]
+            fn sample_base_scaled<WU: WrapMode, WV: WrapMode>(
+                self,
+                base: &Texture<'_>,
+                wu: WU,
+                wv: WV,
+                u: i32,
+                v: i32,
+                i: u16,
+            ) -> u16 {
+                $t::sample_scaled(base, wu, wv, u, v, i)
             }
         }
     )*};

@@ -48,6 +48,21 @@ pub trait Sampler: Copy + Default + core::fmt::Debug {
     /// and `wv` (rows). Returns raw RGB565. Never panics, for any input.
     fn sample<WU: WrapMode, WV: WrapMode>(tex: &Texture<'_>, wu: WU, wv: WV, u: i32, v: i32)
         -> u16;
+
+    /// The sample times intensity `i` (Q8, `0..=256`; larger is 256), raw RGB565. The
+    /// default modulates the sample ([`modulate_scalar`](crate::color::modulate_scalar));
+    /// [`Bilinear`] folds the intensity into its weights (one rounding, fewer multiplies).
+    #[inline(always)]
+    fn sample_scaled<WU: WrapMode, WV: WrapMode>(
+        tex: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        crate::color::modulate_scalar(Self::sample(tex, wu, wv, u, v), i)
+    }
 }
 
 /// `GL_NEAREST` marker.
@@ -96,6 +111,10 @@ fn gather<WU: WrapMode, WV: WrapMode>(
 ) -> ([u16; 4], u32, u32) {
     let (i0, fu) = split_half(u);
     let (j0, fv) = split_half(v);
+    if WU::REPEAT && WV::REPEAT {
+        let (c, _, _) = gather_repeat(tex, u, v);
+        return (c, fu, fv);
+    }
     // i0 >= -32769 and <= 32767, so + 1 cannot overflow.
     let (lw, lh) = (tex.log2_width(), tex.log2_height());
     let (i0w, i1w) = (wu.wrap(i0, lw), wu.wrap(i0 + 1, lw));
@@ -107,6 +126,67 @@ fn gather<WU: WrapMode, WV: WrapMode>(
         fetch(tex, i1w, j1w),
     ];
     (c, fu, fv)
+}
+
+/// The four texels around `(u, v)` with repeat wrapping on both axes, and the Q8 weights
+/// `a`, `b` (`0..=255`). Rounding the 16-bit fraction to Q8 is folded into the split:
+/// `t = u - 1/2 + 1/512`, `i0 = floor(t)`, `a = frac(t)` in Q8 (truncated). Where the
+/// rounded fraction would be 256 this picks the next column with weight 0, which blends
+/// the same texels with the same weights. Wrapping is the low bits, so masks alone index.
+#[inline(always)]
+fn gather_repeat(tex: &Texture<'_>, u: i32, v: i32) -> ([u16; 4], u32, u32) {
+    let tu = u.wrapping_sub(0x7F80);
+    let tv = v.wrapping_sub(0x7F80);
+    let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
+    let mw = tex.width() - 1;
+    let x0 = (tu >> 16) as u32 & mw;
+    let x1 = ((tu >> 16) as u32).wrapping_add(1) & mw;
+    // Row offsets: `texel_at` masks with `len - 1`, which wraps the row index too.
+    let r0 = ((tv >> 16) as u32) << tex.log2_width();
+    let r1 = r0.wrapping_add(tex.width());
+    let c = [
+        tex.texel_at(r0 | x0),
+        tex.texel_at(r0 | x1),
+        tex.texel_at(r1 | x0),
+        tex.texel_at(r1 | x1),
+    ];
+    (c, a, b)
+}
+
+/// Bilinear filtering with the result scaled by intensity `i` (Q8, `0..=256`) in the same
+/// rounding: the four Q8 weights are scaled by `i / 256` (each rounded, `w00` taking the
+/// remainder so they sum to exactly `i`), then each channel is `(sum w c + 128) >> 8`. One
+/// rounding instead of two (bilinear to RGB565, then modulation), and six fewer multiplies
+/// than filtering and modulating in turn. Within 0.75 LSB of the exact value before the
+/// final rounding (see the tests).
+#[inline(always)]
+pub(crate) fn blend_q8_scaled(c: [u16; 4], a: u32, b: u32, i: u32) -> u16 {
+    debug_assert!(a <= 256 && b <= 256 && i <= 256);
+    let ai = (a * i + 128) >> 8;
+    let bi_raw = b * i;
+    let bi = (bi_raw + 128) >> 8;
+    let w11 = (a * bi_raw + 32768) >> 16;
+    // Rounding is monotonic and a*b*i/65536 <= a*i/256, b*i/256, so w10, w01 >= 0; w00 is
+    // i (1 - a)(1 - b) up to the roundings and is kept from going below 0.
+    let w10 = ai - w11;
+    let w01 = bi - w11;
+    let w00 = (i + w11).saturating_sub(ai + bi);
+    blend_weights(c, [w00, w10, w01, w11])
+}
+
+/// `sum w c` per channel for Q8 weights `w` summing to at most 256, rounded.
+#[inline(always)]
+fn blend_weights(c: [u16; 4], w: [u32; 4]) -> u16 {
+    let rb = |t: u16| {
+        let t = t as u32;
+        ((t & 0xF800) << 5) | (t & 0x001F)
+    };
+    let g = |t: u16| t as u32 & 0x07E0;
+    let rbs = rb(c[0]) * w[0] + rb(c[1]) * w[1] + rb(c[2]) * w[2] + rb(c[3]) * w[3];
+    let gs = g(c[0]) * w[0] + g(c[1]) * w[1] + g(c[2]) * w[2] + g(c[3]) * w[3];
+    let rbs = (rbs + 0x0080_0080) >> 8;
+    let gs = ((gs + (128 << 5)) >> 8) & 0x07E0;
+    (((rbs >> 5) & 0xF800) | gs | (rbs & 0x001F)) as u16
 }
 
 /// Bilinear blend of `[c00, c10, c01, c11]` with Q8 fractions `a`, `b` in 0..=256.
@@ -121,18 +201,9 @@ pub(crate) fn blend_q8(c: [u16; 4], a: u32, b: u32) -> u16 {
     let w01 = b - w11;
     // Evaluated left to right: 256 + w11 - a >= 0 since a <= 256; the result is w00 >= 0.
     let w00 = 256 + w11 - a - b;
-    let rb = |t: u16| {
-        let t = t as u32;
-        ((t & 0xF800) << 5) | (t & 0x001F)
-    };
-    let g = |t: u16| t as u32 & 0x07E0;
     // Lanes: R sum <= 31*256 at bit 16, B sum <= 31*256 at bit 0 (< 2^13 each); G sum
     // <= 63*256 << 5 < 2^19.
-    let rbs = rb(c[0]) * w00 + rb(c[1]) * w10 + rb(c[2]) * w01 + rb(c[3]) * w11;
-    let gs = g(c[0]) * w00 + g(c[1]) * w10 + g(c[2]) * w01 + g(c[3]) * w11;
-    let rbs = (rbs + 0x0080_0080) >> 8;
-    let gs = ((gs + (128 << 5)) >> 8) & 0x07E0;
-    (((rbs >> 5) & 0xF800) | gs | (rbs & 0x001F)) as u16
+    blend_weights(c, [w00, w10, w01, w11])
 }
 
 /// Spreads RGB565 into `0b00000ggg_ggg00000_rrrrr000_000bbbbb` (G at 21, R at 11, B at 0).
@@ -172,6 +243,14 @@ impl Sampler for Nearest {
         u: i32,
         v: i32,
     ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            // Row bits straight from v: (v >> (16 - lw)) holds floor(v) << lw plus fraction
+            // bits below lw, which `texel_at`'s mask with `len - 1` and the column mask clear.
+            let lw = tex.log2_width();
+            let row = ((v >> (16 - lw)) as u32) & !(tex.width() - 1);
+            let col = (u >> 16) as u32 & (tex.width() - 1);
+            return tex.texel_at(row | col);
+        }
         // Arithmetic shift = floor for negative coordinates too.
         let i = wu.wrap(u >> 16, tex.log2_width());
         let j = wv.wrap(v >> 16, tex.log2_height());
@@ -190,9 +269,31 @@ impl Sampler for Bilinear {
         u: i32,
         v: i32,
     ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            let (c, a, b) = gather_repeat(tex, u, v);
+            return blend_q8(c, a, b);
+        }
         let (c, fu, fv) = gather(tex, wu, wv, u, v);
         // Round the 16-bit fractions to Q8 (0..=256).
         blend_q8(c, (fu + 0x80) >> 8, (fv + 0x80) >> 8)
+    }
+
+    #[inline(always)]
+    fn sample_scaled<WU: WrapMode, WV: WrapMode>(
+        tex: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        let i = u32::from(i.min(256));
+        if WU::REPEAT && WV::REPEAT {
+            let (c, a, b) = gather_repeat(tex, u, v);
+            return blend_q8_scaled(c, a, b, i);
+        }
+        let (c, fu, fv) = gather(tex, wu, wv, u, v);
+        blend_q8_scaled(c, (fu + 0x80) >> 8, (fv + 0x80) >> 8, i)
     }
 }
 

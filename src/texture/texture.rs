@@ -155,6 +155,18 @@ impl<'a> Texture<'a> {
         }
     }
 
+    /// Raw RGB565 of the texel at row-major index `idx`, taken modulo the texel count (a
+    /// power of two): `(j << log2_width) | i` for in-range `i`, `j`; higher bits of a
+    /// wrapped row index fall away. Never panics.
+    #[inline(always)]
+    pub fn texel_at(&self, idx: u32) -> u16 {
+        let idx = idx as usize & self.texels.len().wrapping_sub(1);
+        match self.texels.get(idx) {
+            Some(c) => c.into_storage(),
+            None => self.border,
+        }
+    }
+
     /// Samples with a filter and wrap modes chosen at run time (host convenience; the
     /// rasterizer uses the monomorphised [`Sampler::sample`]). `u`, `v` are raw I16F16 texel
     /// coordinates. Returns raw RGB565.

@@ -47,6 +47,9 @@ pub trait WrapMode: Copy + Default + core::fmt::Debug {
     /// in-range index, or `None` if the border colour should be used (only
     /// [`ClampToBorder`] returns `None`).
     fn wrap(self, i: i32, log2_size: u32) -> Option<u32>;
+    /// True only for the [`Repeat`] marker: samplers then index with masks alone (the
+    /// fast path of the benchmark scenes).
+    const REPEAT: bool = false;
     /// The mode as a value (for [`DynWrap`], the one it carries).
     #[inline(always)]
     fn mode(self) -> Wrap {
@@ -76,6 +79,7 @@ pub struct DynWrap(pub Wrap);
 
 impl WrapMode for Repeat {
     const MODE: Wrap = Wrap::Repeat;
+    const REPEAT: bool = true;
 
     #[inline(always)]
     fn wrap(self, i: i32, log2_size: u32) -> Option<u32> {

@@ -21,10 +21,14 @@ use fixel::texture::{
 pub enum Proj {
     /// Screen-linear (`Affine`).
     Affine,
+    /// Exact every 4 pixels (`Subdivided`, `log2_n = 2`).
+    Sub4,
     /// Exact every 8 pixels (`Subdivided`, `log2_n = 3`).
     Sub8,
     /// Exact every 16 pixels (`Subdivided`, `log2_n = 4`).
     Sub16,
+    /// Exact every 32 pixels (`Subdivided`, `log2_n = 5`).
+    Sub32,
     /// Exact at every pixel (`Exact`).
     Exact,
     /// Affine or exact per triangle from an error budget of 1/4 texel
@@ -93,8 +97,10 @@ impl Mode {
     pub const fn proj_name(&self) -> &'static str {
         match self.proj {
             Proj::Affine => "affine",
+            Proj::Sub4 => "sub4",
             Proj::Sub8 => "sub8",
             Proj::Sub16 => "sub16",
+            Proj::Sub32 => "sub32",
             Proj::Exact => "exact",
             Proj::Adaptive => "adaptive",
         }
@@ -145,8 +151,10 @@ impl Mode {
         }
         let draw = match self.proj {
             Proj::Affine => by_filter!(Affine)?,
+            Proj::Sub4 => by_filter!(Subdivided)?.with_subdivision(2)?,
             Proj::Sub8 => by_filter!(Subdivided)?.with_subdivision(3)?,
             Proj::Sub16 => by_filter!(Subdivided)?.with_subdivision(4)?,
+            Proj::Sub32 => by_filter!(Subdivided)?.with_subdivision(5)?,
             Proj::Exact => by_filter!(Exact)?,
             Proj::Adaptive => by_filter!(Adaptive)?.with_adaptive_budget(64),
         };
@@ -161,10 +169,12 @@ impl Mode {
     }
 }
 
-const PROJS: [Proj; 5] = [
+const PROJS: [Proj; 7] = [
     Proj::Affine,
+    Proj::Sub4,
     Proj::Sub8,
     Proj::Sub16,
+    Proj::Sub32,
     Proj::Exact,
     Proj::Adaptive,
 ];
@@ -201,11 +211,11 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
 
 /// Modes of the lit scenes (cube, sphere): lit and unlit, nearest and bilinear, every
 /// projection.
-pub const LIT_SCENE_MODES: [Mode; 20] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
+pub const LIT_SCENE_MODES: [Mode; 28] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
 /// projection.
-pub const FLOOR_MODES: [Mode; 25] = matrix(
+pub const FLOOR_MODES: [Mode; 35] = matrix(
     &[false],
     &[
         Filt::Nearest,
@@ -217,10 +227,10 @@ pub const FLOOR_MODES: [Mode; 25] = matrix(
 );
 
 /// The floor's unmipmapped modes (firmware `report_floor`).
-pub const FLOOR_PLAIN_MODES: [Mode; 10] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+pub const FLOOR_PLAIN_MODES: [Mode; 14] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// The floor's mipmapped modes (firmware `report_floor_mip`).
-pub const FLOOR_MIP_MODES: [Mode; 15] = matrix(
+pub const FLOOR_MIP_MODES: [Mode; 21] = matrix(
     &[false],
     &[Filt::NearestMip, Filt::Trilinear, Filt::TrilinearSpan],
 );

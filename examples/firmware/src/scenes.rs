@@ -6,7 +6,7 @@
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
-use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline, Replace};
+use fixel::pipeline::{DepthLess, ModulateIntensity, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
 use fixel::surface::band::{BandStats, Binned};
@@ -25,11 +25,11 @@ pub const BINS: usize = 16;
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
 /// `cube` and `sphere`: lit, bilinear, perspective-correct, repeat, depth-tested.
-pub type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+pub type Lit = Pipeline<SubdividedBy<3>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 /// `floor` with nearest filtering (unlit).
-pub type FloorNearest = Pipeline<Exact, Nearest, Repeat, Repeat, Replace, DepthLess>;
+pub type FloorNearest = Pipeline<SubdividedBy<5>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).
-pub type FloorBilinear = Pipeline<Exact, Bilinear, Repeat, Repeat, Replace, DepthLess>;
+pub type FloorBilinear = Pipeline<SubdividedBy<4>, Bilinear, Repeat, Repeat, Replace, DepthLess>;
 
 /// FNV-1a (32 bit) over the RGB565 values as little-endian bytes, rows top to bottom.
 #[derive(Clone, Copy, Debug)]

@@ -483,8 +483,10 @@ fn proj_colour(p: Proj) -> plotters::style::RGBColor {
     use plotters::style::RGBColor;
     match p {
         Proj::Affine => RGBColor(214, 39, 40),
+        Proj::Sub4 => RGBColor(227, 119, 194),
         Proj::Sub8 => RGBColor(255, 127, 14),
         Proj::Sub16 => RGBColor(188, 160, 0),
+        Proj::Sub32 => RGBColor(140, 86, 75),
         Proj::Exact => RGBColor(31, 119, 180),
         Proj::Adaptive => RGBColor(44, 160, 44),
     }
@@ -610,8 +612,10 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
         // Legend: projection colours.
         for (k, p) in [
             Proj::Affine,
+            Proj::Sub4,
             Proj::Sub8,
             Proj::Sub16,
+            Proj::Sub32,
             Proj::Exact,
             Proj::Adaptive,
         ]
