@@ -36,11 +36,89 @@
 //! | fixed-point math | [`math`] | `I16F16` ([`math::Fx`]) vectors and 4x4 matrices; angles in 1/65536 turn; table sin/cos; division-free reciprocal |
 //! | geometry | [`geometry`] | clip space `I16F16`; clipping in `i64`; screen coordinates with 4 sub-pixel bits; depth `0..=65535` with 14 fraction bits |
 //! | raster | [`raster`] | exact integer edge DDA (top-left rule) emitting spans to a sink; plane equations with wrapping `i32` stepping |
-//! | pipeline | [`pipeline`] | per-triangle set-up; `u, v` in texels as `I16F16` bits; `q = w_min / w` as Q30; colour Q8.16; affine, subdivided, exact or adaptive (per triangle) interpolation |
+//! | pipeline | [`pipeline`] | per-triangle set-up of a plane per varying (`i32` bits in the shader's formats, times `q = w_min / w` (Q30) for perspective); spans in 32-pixel chunks: depth mask, varyings, shader; affine, subdivided, exact or adaptive (per triangle) interpolation |
 //! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
+//! | shading | [`shading`] | the [`shading::Shader`] trait (varyings `[i32; N]`, `N <= 8`; RGB565 out or discard); [`shading::TexBinding`] (a texture, filter and wraps as a shader uses them); the built-in shaders |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |
 //! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
 //! | scene | [`scene`] | meshes, camera, per-vertex directional light |
+//!
+//! ## Writing a shader
+//!
+//! A pixel's colour comes from a [`shading::Shader`]: a `Copy` value holding its uniforms
+//! (textures, tables, constants; borrowed, no heap) that declares its varyings as `[i32; N]`
+//! (raw fixed-point bits in formats it documents), rescales them once per triangle in
+//! [`shading::Shader::triangle`], and returns raw RGB565 (or `None` to discard) from
+//! [`shading::Shader::shade`]. [`pipeline::ShadedDraw`] draws it from clip-space
+//! [`geometry::Vertex`] triangles in any projection mode; the span loop is monomorphised for
+//! the shader, so a varying it does not declare costs nothing. The classic
+//! [`pipeline::Draw`] API is built on the same stage ([`shading::builtin`]).
+//!
+//! A light-mapped wall: a base texture times a second, smaller light map with its own
+//! coordinates, dimmed by an extra varying (`k`, Q8.16):
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::geometry::Vertex;
+//! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+//! use fixel::shading::{Fragment, Shader, TexBinding, TexTriangle};
+//! use fixel::texture::{Bilinear, ClampToEdge, Lod, MipTexture, Repeat};
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//!
+//! #[derive(Clone, Copy, Debug)]
+//! struct LightMapped<'a> {
+//!     base: TexBinding<'a, Bilinear, Repeat, Repeat>,
+//!     light: TexBinding<'a, Bilinear, ClampToEdge, ClampToEdge>,
+//! }
+//!
+//! impl Shader for LightMapped<'_> {
+//!     /// `u0, v0` (base), `u1, v1` (light map): normalized I16F16; `k`: Q8.16 (1.0 = 256 << 16).
+//!     type Varyings = [i32; 5];
+//!     type Triangle = (TexTriangle, TexTriangle);
+//!     const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
+//!     fn coord_shift(t: &Self::Triangle) -> u32 {
+//!         u32::from(t.0.shift)
+//!     }
+//!     fn triangle(&self, v: &mut [[i32; 5]; 3]) -> Self::Triangle {
+//!         (self.base.triangle(v, (0, 1)), self.light.triangle(v, (2, 3)))
+//!     }
+//!     fn shade(&self, f: &Fragment<[i32; 5], Self::Triangle>) -> Option<u16> {
+//!         let [u0, v0, u1, v1, k] = f.varyings;
+//!         let texel = self.base.sample(f.triangle.0, u0, v0, f.lambda);
+//!         // The light map's green channel (6 bits) times k, as one Q8 intensity.
+//!         // The span loop undid the base pair's shift; the light map's is ours to undo.
+//!         let (lt, u1, v1) = (f.triangle.1, f.triangle.1.unshift(u1), f.triangle.1.unshift(v1));
+//!         let light = self.light.sample(lt, u1, v1, 0);
+//!         let g = u32::from((light >> 5) & 0x3F);
+//!         let i = (g * 256 / 63) * ((k >> 16).clamp(0, 256) as u32) / 256;
+//!         Some(fixel::color::modulate_scalar(texel, i as u16))
+//!     }
+//! }
+//!
+//! let mut base_texels = [Rgb565::default(); 32 * 32];
+//! fixel::demo::checker_texture(32, 32, &mut base_texels)?;
+//! let light_texels: [Rgb565; 4] = [Rgb565::new(31, 63, 31), Rgb565::new(8, 16, 8),
+//!                                  Rgb565::new(8, 16, 8), Rgb565::new(31, 63, 31)];
+//! let (base, light) = (MipTexture::single(Texture::new(&base_texels, 32, 32)?),
+//!                      MipTexture::single(Texture::new(&light_texels, 2, 2)?));
+//! let shader = LightMapped {
+//!     base: TexBinding::new(&base, Bilinear, Repeat, Repeat, Lod::default())?,
+//!     light: TexBinding::new(&light, Bilinear, ClampToEdge, ClampToEdge, Lod::default())?,
+//! };
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, 64, 48)?, Cull::None)?;
+//!
+//! // A wall receding to the right (w from 1 to 3), base repeated 4 times, light map once.
+//! let (one, k) = (1 << 16, 200 << 16);
+//! let p = |x: f32, y: f32, w: f32| [Fx::from_num(x * w), Fx::from_num(y * w), Fx::ZERO, Fx::from_num(w)];
+//! let v = |x: f32, y: f32, w: f32, s: i32, t: i32| Vertex::new(p(x, y, w), [4 * s, 4 * t, s, t, k]);
+//! let wall = [v(-0.9, 0.9, 1.0, 0, 0), v(-0.9, -0.9, 1.0, 0, one), v(0.9, -0.9, 3.0, one, one), v(0.9, 0.9, 3.0, one, 0)];
+//! let (mut color, mut depth) = ([Rgb565::default(); 64 * 48], [0u16; 64 * 48]);
+//! let mut frame = Frame::new(&mut color, 64, 48)?.with_depth(&mut depth)?;
+//! frame.clear(Rgb565::default());
+//! let drawn = draw.clip_triangles(&[[wall[0], wall[1], wall[2]], [wall[0], wall[2], wall[3]]], &mut frame);
+//! assert!(drawn > 2000);
+//! # Ok::<(), fixel::Error>(())
+//! ```
 //!
 //! ## Conventions (OpenGL ES unless stated)
 //!
@@ -56,7 +134,7 @@
 //!
 //! ## Model only what a scene needs
 //!
-//! A draw's stages (projection, filter, wraps, shading, depth) are fixed when it is built.
+//! A draw's stages (projection, shader, depth) are fixed when it is built.
 //! [`pipeline::Draw::new`] takes them as types, so a firmware links exactly one span loop;
 //! [`pipeline::Draw::dynamic`] takes a run-time [`pipeline::DrawMode`] and links them all
 //! (for host tools). No depth memory is needed without a depth test, no colour interpolant

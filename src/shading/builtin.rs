@@ -53,9 +53,7 @@ macro_rules! textured_common {
         }
         #[inline]
         fn triangle(&self, v: &mut [Self::Varyings; 3]) -> TexTriangle {
-            let [a, b, c] = v;
-            let ([ua, va, ..], [ub, vb, ..], [uc, vc, ..]) = (a, b, c);
-            self.tex.triangle([ua, ub, uc], [va, vb, vc])
+            self.tex.triangle(v, (0, 1))
         }
     };
 }

@@ -16,6 +16,7 @@
 //! border, so only triangles spanning more than that are interpolated inexactly (the hard
 //! case `extreme_minification_thousands_of_repeats` checks the border still matches).
 
+use super::Varyings;
 use crate::texture::{Lod, MipTexture, TexSampler, Texture, Wrap, WrapMode};
 use crate::Error;
 
@@ -35,8 +36,18 @@ pub struct TexBinding<'a, F, WU, WV> {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TexTriangle {
     /// Right shift applied to this triangle's texel coordinates (0 unless they exceed 2^30);
-    /// the span loop undoes it before the shader runs.
+    /// the span loop undoes it on the shader's [`Shader::TEXCOORDS`](super::Shader::TEXCOORDS)
+    /// pair before the shader runs. A second texture's pair is undone by the shader with
+    /// [`TexTriangle::unshift`].
     pub shift: u8,
+}
+
+impl TexTriangle {
+    /// `x` shifted back by [`TexTriangle::shift`] (wrapping: exact for the periodic wraps).
+    #[inline(always)]
+    pub fn unshift(self, x: i32) -> i32 {
+        x.wrapping_shl(u32::from(self.shift))
+    }
 }
 
 impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
@@ -97,16 +108,19 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         &self.lod
     }
 
-    /// Per triangle: turns the normalized I16F16 coordinates `u`, `v` of the three vertices
-    /// into rebased (and, rarely, shifted) texel units in place. See the module docs.
-    pub fn triangle(&self, u: [&mut i32; 3], v: [&mut i32; 3]) -> TexTriangle {
+    /// Per triangle: turns the normalized I16F16 coordinates in varyings `pair = (u, v)`
+    /// of the three vertices into rebased (and, rarely, shifted) texel units in place. See
+    /// the module docs; a shader calls this from its [`Shader::triangle`](super::Shader::triangle)
+    /// hook for each texture's coordinate pair.
+    pub fn triangle<V: Varyings>(&self, vary: &mut [V; 3], pair: (usize, usize)) -> TexTriangle {
+        let get = |v: &V, k: usize| v.as_slice().get(k).copied().unwrap_or(0);
         let mut tu = texel_coords(
-            [*u[0], *u[1], *u[2]],
+            vary.each_ref().map(|v| get(v, pair.0)),
             self.base.log2_width(),
             self.wu.mode(),
         );
         let mut tv = texel_coords(
-            [*v[0], *v[1], *v[2]],
+            vary.each_ref().map(|v| get(v, pair.1)),
             self.base.log2_height(),
             self.wv.mode(),
         );
@@ -125,11 +139,14 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             .max()
             .unwrap_or(0);
         let shift = (64 - max.leading_zeros()).saturating_sub(30);
-        for (d, s) in u.into_iter().zip(tu) {
-            *d = (s >> shift) as i32;
-        }
-        for (d, s) in v.into_iter().zip(tv) {
-            *d = (s >> shift) as i32;
+        for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
+            let s = v.as_mut_slice();
+            if let Some(x) = s.get_mut(pair.0) {
+                *x = (a >> shift) as i32;
+            }
+            if let Some(x) = s.get_mut(pair.1) {
+                *x = (b >> shift) as i32;
+            }
         }
         TexTriangle { shift: shift as u8 }
     }
