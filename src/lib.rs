@@ -167,9 +167,12 @@ pub use error::Error;
 
 /// The names most programs need, in one import.
 pub mod prelude {
-    pub use crate::geometry::{ClipVertex, Cull, Viewport};
+    pub use crate::geometry::{ClipVertex, Cull, Vertex, Viewport};
     pub use crate::math::{Angle, Fx, Mat4, Vec3};
-    pub use crate::pipeline::{DepthTest, Draw, DrawMode, Pipeline, Projection, Shading};
+    pub use crate::pipeline::{
+        DepthTest, Draw, DrawMode, Pipeline, Projection, ShadedDraw, Shading,
+    };
+    pub use crate::shading::{Fragment, Shader, TexBinding, TexTriangle};
     pub use crate::surface::{BandRenderer, Frame, RenderTarget};
     pub use crate::texture::{Filter, Texture, Wrap};
     pub use crate::Error;

@@ -98,6 +98,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
                 log2_n: <M::P as ProjectionStage>::LOG2_N,
             },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
+            ProjKind::Dynamic => Projection::Exact,
         };
         let mode = DrawMode {
             projection,
@@ -265,7 +266,8 @@ where
     )
 }
 
-/// The run-time dispatch table: one instance per (projection, filter, shading, depth).
+/// The run-time dispatch table: one instance per (filter, shading); projection, wraps and
+/// the depth test are read at run time.
 fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
     // One depth-testing loop per combination; `SpanCtx::depth_on` switches the test off at
     // run time (a span loop costs flash, a predictable branch per span costs nothing).
@@ -302,10 +304,7 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
             }
         };
     }
-    match mode.projection {
-        Projection::Affine => by_filter!(Affine),
-        Projection::Subdivided { .. } => by_filter!(Subdivided),
-        Projection::Exact => by_filter!(Exact),
-        Projection::Adaptive { .. } => by_filter!(Adaptive),
-    }
+    // The projection is read from the draw at run time: one span loop per filter and
+    // shading instead of four.
+    by_filter!(DynProjection)
 }

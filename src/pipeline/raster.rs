@@ -9,7 +9,7 @@
 use super::interp::lambda_at;
 use super::setup::setup;
 use super::span::{span, Scratch, SpanCtx};
-use super::stages::{DepthStage, Projection, ProjectionStage};
+use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
 use crate::raster::{rasterize, Rect, SpanSink};
@@ -27,6 +27,8 @@ pub(crate) struct RasterParams {
     pub budget: i64,
     /// The run-time depth switch.
     pub depth_on: bool,
+    /// The projection (for the run-time projection marker).
+    pub kind: ProjKind,
 }
 
 impl RasterParams {
@@ -43,6 +45,12 @@ impl RasterParams {
                 _ => 0,
             },
             depth_on,
+            kind: match projection {
+                Projection::Affine => ProjKind::Affine,
+                Projection::Subdivided { .. } => ProjKind::Subdivided,
+                Projection::Exact => ProjKind::Exact,
+                Projection::Adaptive { .. } => ProjKind::Adaptive,
+            },
         }
     }
 }
@@ -99,11 +107,15 @@ where
         varyings(&tri[2].varyings),
     ];
     let triangle = shader.triangle(&mut vary);
+    let kind = match P::KIND {
+        ProjKind::Dynamic => params.kind,
+        k => k,
+    };
     let Some(setup) = setup(
         tri.map(|v| (v.x, v.y, v.z, v.w)),
         &vary,
         vp,
-        P::KIND,
+        kind,
         D::TEST,
         S::TEXCOORDS,
         params.budget,
@@ -124,6 +136,7 @@ where
         tri_lambda,
         log2_n: params.log2_n,
         coord_shift: S::coord_shift(&triangle),
+        kind,
         depth_on: params.depth_on,
     };
     let mut w = Writer::<S, P, D, C> {

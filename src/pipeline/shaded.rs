@@ -67,6 +67,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
             ProjKind::Exact => Projection::Exact,
             ProjKind::Subdivided => Projection::Subdivided { log2_n: P::LOG2_N },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
+            ProjKind::Dynamic => Projection::Exact,
         };
         Ok(ShadedDraw {
             shader,

@@ -34,6 +34,8 @@ pub(crate) struct SpanCtx<S: Shader> {
     pub log2_n: u32,
     /// Left shift to undo on the texture-coordinate pair ([`Shader::coord_shift`]).
     pub coord_shift: u32,
+    /// The projection (the draw's, when its marker is the run-time one).
+    pub kind: ProjKind,
     /// The draw's run-time depth switch (for the typed path it is always on and the stage's
     /// type decides; the run-time path links one depth-testing loop and turns it off here).
     pub depth_on: bool,
@@ -136,7 +138,7 @@ fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
         triangle,
     };
     let mut written = 0u32;
-    if !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
+    if !S::SMALL && !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
         for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
             if let Some(c) = shader.shade(&frag(*v, k)) {
                 *o = C::from_rgb565(c);
@@ -370,10 +372,13 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
     let mut px = x;
     let mut written = 0u32;
     let Scratch { vals, lambdas } = scratch;
+    // `Z` links the depth code; an empty depth row switches it off at run time (the small
+    // span loops use one instance for both).
+    let depth = Z && !zrow.is_empty();
     let mut zs: &mut [u16] = zrow;
     for os in out.chunks_mut(CHUNK) {
         let n = os.len();
-        let (zc, zrest) = if Z {
+        let (zc, zrest) = if depth {
             let Some(split) = (n <= zs.len()).then(|| core::mem::take(&mut zs).split_at_mut(n))
             else {
                 break;
@@ -383,7 +388,11 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
             (&mut [][..], &mut [][..])
         };
         zs = zrest;
-        let mask = chunk_mask::<S, Z>(z, dz, zc, n);
+        let mask = if depth {
+            chunk_mask::<S, true>(z, dz, zc, n)
+        } else {
+            low_bits(n)
+        };
         let (Some(vs), Some(ls)) = (vals.get_mut(..n), lambdas.get_mut(..n)) else {
             break;
         };
@@ -397,9 +406,9 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
                 lambda,
                 per_pixel: spec.lod,
             };
-            written += if Z && S::DISCARDS {
+            written += if depth && S::DISCARDS {
                 shade_chunk::<S, C, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
-            } else if Z {
+            } else if depth {
                 shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos);
                 mask.count_ones()
             } else {
@@ -441,13 +450,23 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     // Long linear pieces step their varyings inside the shading loop; short ones (N < 16)
     // are filled into the chunk's array first, which costs a store and a load per varying
     // but one shading call per chunk instead of one per piece.
-    let long = ctx.log2_n >= 4;
-    let affine = match P::KIND {
+    let long = !S::SMALL && ctx.log2_n >= 4;
+    let kind = match P::KIND {
+        ProjKind::Dynamic => ctx.kind,
+        k => k,
+    };
+    let affine = match kind {
         ProjKind::Affine => true,
         ProjKind::Adaptive => ctx.setup.affine,
         _ => false,
     };
-    match (P::KIND, affine, zrow) {
+    match (kind, affine, zrow) {
+        (_, true, Some(z)) if S::SMALL => {
+            run::<S, C, L<S, false>, true>(ctx, scratch, x0, y, out, z)
+        }
+        (_, true, None) if S::SMALL => {
+            run::<S, C, L<S, false>, true>(ctx, scratch, x0, y, out, &mut [])
+        }
         (_, true, Some(z)) => run_linear::<S, C, false, true>(ctx, x0, y, out, z),
         (_, true, None) => run_linear::<S, C, false, false>(ctx, x0, y, out, &mut []),
         (ProjKind::Subdivided, _, Some(z)) if long => {
@@ -459,10 +478,14 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         (ProjKind::Subdivided, _, Some(z)) => {
             run::<S, C, L<S, true>, true>(ctx, scratch, x0, y, out, z)
         }
+        (ProjKind::Subdivided, _, None) if S::SMALL => {
+            run::<S, C, L<S, true>, true>(ctx, scratch, x0, y, out, &mut [])
+        }
         (ProjKind::Subdivided, _, None) => {
             run::<S, C, L<S, true>, false>(ctx, scratch, x0, y, out, &mut [])
         }
         (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, scratch, x0, y, out, z),
+        (_, _, None) if S::SMALL => run::<S, C, E<S>, true>(ctx, scratch, x0, y, out, &mut []),
         (_, _, None) => run::<S, C, E<S>, false>(ctx, scratch, x0, y, out, &mut []),
     }
 }

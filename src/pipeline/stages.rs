@@ -117,6 +117,9 @@ pub enum ProjKind {
     Exact,
     /// See [`Projection::Adaptive`].
     Adaptive,
+    /// Chosen per draw at run time (the [`DynProjection`] marker of
+    /// [`Draw::dynamic`](super::Draw::dynamic)): one span loop serves every projection.
+    Dynamic,
 }
 /// Marker for the shading stage of the classic API: names a built-in shader.
 pub trait ShadingStage: Copy + Default + Debug {
@@ -170,6 +173,13 @@ impl<const LOG2_N: u8> ProjectionStage for SubdividedBy<LOG2_N> {
 pub struct Adaptive;
 impl ProjectionStage for Adaptive {
     const KIND: ProjKind = ProjKind::Adaptive;
+}
+/// Projection chosen at run time from the draw's [`Projection`] (host tools: one span loop
+/// for all four modes, at the cost of a branch per span).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DynProjection;
+impl ProjectionStage for DynProjection {
+    const KIND: ProjKind = ProjKind::Dynamic;
 }
 /// Exact perspective marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -39,6 +39,7 @@ macro_rules! textured_common {
         type Triangle = TexTriangle;
         const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
         const LOD: bool = F::LOD;
+        const SMALL: bool = WU::DYNAMIC || WV::DYNAMIC;
         #[inline(always)]
         fn lod_granularity(&self) -> LodGranularity {
             self.tex.lod().granularity

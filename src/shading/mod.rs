@@ -133,6 +133,13 @@ pub trait Shader: Copy {
     /// and shade only the visible ones; one that does keeps the test and the write fused.
     const DISCARDS: bool = false;
 
+    /// True to link the smallest span loops rather than the fastest: one shading loop per
+    /// projection (varyings filled into a chunk array, then shaded), where the default also
+    /// links loops that step long linear pieces in registers and a branch-free loop for
+    /// fully visible chunks. Less flash, a few instructions more per pixel. The run-time
+    /// [`Draw::dynamic`](crate::pipeline::Draw::dynamic) path, which links every mode, sets it.
+    const SMALL: bool = false;
+
     /// True when the shader reads [`Fragment::lambda`] (mipmapping): the span loop then
     /// computes it from the [`Shader::TEXCOORDS`] pair.
     const LOD: bool = false;

@@ -112,7 +112,15 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     /// of the three vertices into rebased (and, rarely, shifted) texel units in place. See
     /// the module docs; a shader calls this from its [`Shader::triangle`](super::Shader::triangle)
     /// hook for each texture's coordinate pair.
+    ///
+    /// Indices past the shader's varyings read as 0 and are not written (a debug build
+    /// asserts instead).
     pub fn triangle<V: Varyings>(&self, vary: &mut [V; 3], pair: (usize, usize)) -> TexTriangle {
+        debug_assert!(
+            pair.0 < V::N && pair.1 < V::N,
+            "texture coordinate pair {pair:?} outside the shader's {} varyings",
+            V::N
+        );
         let get = |v: &V, k: usize| v.as_slice().get(k).copied().unwrap_or(0);
         let mut tu = texel_coords(
             vary.each_ref().map(|v| get(v, pair.0)),

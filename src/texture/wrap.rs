@@ -50,6 +50,9 @@ pub trait WrapMode: Copy + Default + core::fmt::Debug {
     /// True only for the [`Repeat`] marker: samplers then index with masks alone (the
     /// fast path of the benchmark scenes).
     const REPEAT: bool = false;
+    /// True only for [`DynWrap`]: a run-time mode, used by draws that link every mode (the
+    /// shaders then ask for the smallest span loops, see `Shader::SMALL`).
+    const DYNAMIC: bool = false;
     /// The mode as a value (for [`DynWrap`], the one it carries).
     #[inline(always)]
     fn mode(self) -> Wrap {
@@ -132,6 +135,7 @@ impl WrapMode for ClampToBorder {
 impl WrapMode for DynWrap {
     // Not meaningful for a run-time mode; `Repeat` is the default mode.
     const MODE: Wrap = Wrap::Repeat;
+    const DYNAMIC: bool = true;
 
     #[inline(always)]
     fn mode(self) -> Wrap {
