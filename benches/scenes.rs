@@ -40,7 +40,7 @@ fn group(c: &mut Criterion, name: &str, cases: &[Case], rows: &mut Vec<Row>) {
         g.measurement_time((t0.elapsed() * 12).max(Duration::from_secs(1)));
         let mut times = Vec::new();
         g.throughput(Throughput::Elements(pixels));
-        g.bench_function(BenchmarkId::new(case.scene.name(), case.mode.name()), |b| {
+        g.bench_function(BenchmarkId::new(case.scene.name(), case.mode_name()), |b| {
             b.iter_custom(|iters| {
                 let t0 = Instant::now();
                 for _ in 0..iters {
@@ -81,7 +81,7 @@ fn summary(rows: &mut [Row]) -> String {
             s,
             "| {} | {} | {} | {:.0} | {:.0} | {:.2} |",
             r.case.scene.name(),
-            r.case.mode.name(),
+            r.case.mode_name(),
             frames,
             r.pixels as f64 / f64::from(frames),
             t / f64::from(frames),

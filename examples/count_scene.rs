@@ -8,8 +8,10 @@
 //! ```
 //!
 //! Prints `frames <N>` and `pixels <drawn pixels summed over the frames>` on stdout. Modes are
-//! `{lit|unlit}-{nearest|bilinear|bilinearfast}-{affine|exact|subN}`, for example
-//! `cube/lit-bilinear-exact` or `floor/unlit-nearest-sub16`.
+//! those of `examples/firmware/src/modes.rs`:
+//! `{lit|unlit}-{nearest|bilinear|nearest-mip-nearest|trilinear|trilinear-span}-`
+//! `{affine|sub4|sub8|sub16|sub32|exact|adaptive}`, for example `cube/lit-bilinear-exact` or
+//! `floor/unlit-nearest-sub16`; `--list` prints the benchmark's cases, any mode can be named.
 
 #[path = "common/bench_scenes.rs"]
 mod bench_scenes;

@@ -1,22 +1,31 @@
 //! The benchmark scenes of `SCENES.md` as runnable cases, shared by `benches/scenes.rs`
 //! (criterion timing) and `examples/count_scene.rs` (instruction counts under callgrind).
 //!
-//! A case is a scene (cube, sphere, floor) plus a mode (lit or not, filter, projection).
-//! Every mode is a typed [`Pipeline`] built with [`Draw::new`], as a firmware would build
-//! it: the per-pixel loop is monomorphised for exactly that combination and chosen once per
-//! draw. Lit modes use `ModulateIntensity` (per-vertex light times the texel), unlit ones
-//! `Replace`; all depth-test (`DepthLess`, 16-bit depth buffer) with repeat wrap and back-face
-//! culling.
+//! A case is a scene (cube, sphere, floor) plus a [`Mode`] (lit or not, filter, projection).
+//! The modes are those of `examples/firmware/src/modes.rs`, included here word for word
+//! (as in the report firmwares and `host-tests/src/bin/report.rs`): one mode table, one
+//! [`Mode::draw`] and one [`Mode::write_name`] for the firmwares, the host report and these
+//! benchmarks. Every mode is a typed `Pipeline` built with `Draw::new_mip`: the per-pixel
+//! loop is monomorphised for exactly that combination and chosen once per draw. Lit modes
+//! use `ModulateIntensity` (per-vertex light times the texel), unlit ones `Replace`; all
+//! depth-test (`DepthLess`, 16-bit depth buffer) with repeat wrap and back-face culling.
+//! Mipmapped filters get the texture's full mip chain.
 
-// Shared by the bench and the example; each uses a different part.
+// Shared by the bench and the example; each uses a different part (and of `modes`, only the
+// mode type and its draw and name are used here).
 #![allow(dead_code)]
+
+#[path = "../firmware/src/modes.rs"]
+mod modes;
+
+pub use modes::{Filt, Mode, Proj};
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
-use fixel::pipeline::{Affine, DepthLess, Exact, ModulateIntensity, Pipeline, Replace, Subdivided};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
-use fixel::texture::{Bilinear, BilinearFast, Nearest, Repeat};
+use fixel::texture::mip::{chain_len, full_levels};
+use fixel::texture::{generate_mips, MipTexture};
 
 /// A benchmark scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,121 +63,69 @@ impl Scene {
     }
 }
 
-/// Texture filter of a mode.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Filt {
-    /// `Nearest`.
-    Nearest,
-    /// `Bilinear` (Q8 weights, 9 multiplies).
-    Bilinear,
-    /// `BilinearFast` (packed Q5 weights, 6 multiplies).
-    BilinearFast,
+/// Every [`Filt`], for parsing names (`filt_listed` fails to compile when one is missing).
+const FILTS: [Filt; 5] = [
+    Filt::Nearest,
+    Filt::Bilinear,
+    Filt::NearestMip,
+    Filt::Trilinear,
+    Filt::TrilinearSpan,
+];
+
+/// Every [`Proj`], for parsing names (`proj_listed` fails to compile when one is missing).
+const PROJS: [Proj; 7] = [
+    Proj::Affine,
+    Proj::Sub4,
+    Proj::Sub8,
+    Proj::Sub16,
+    Proj::Sub32,
+    Proj::Exact,
+    Proj::Adaptive,
+];
+
+/// Exhaustive: a new [`Filt`] variant must be added here and to [`FILTS`].
+const fn filt_listed(f: Filt) {
+    match f {
+        Filt::Nearest
+        | Filt::Bilinear
+        | Filt::NearestMip
+        | Filt::Trilinear
+        | Filt::TrilinearSpan => {}
+    }
 }
 
-/// Projection of a mode.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Proj {
-    /// Screen-linear.
-    Affine,
-    /// Exact every `2^log2_n` pixels.
-    Sub(u8),
-    /// Exact every pixel.
-    Exact,
+/// Exhaustive: a new [`Proj`] variant must be added here and to [`PROJS`].
+const fn proj_listed(p: Proj) {
+    match p {
+        Proj::Affine
+        | Proj::Sub4
+        | Proj::Sub8
+        | Proj::Sub16
+        | Proj::Sub32
+        | Proj::Exact
+        | Proj::Adaptive => {}
+    }
 }
 
-/// How a scene is drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Mode {
-    /// Per-vertex lighting modulated into the texel (`ModulateIntensity`), else `Replace`.
-    pub lit: bool,
-    /// Texture filter.
-    pub filter: Filt,
-    /// Projection.
-    pub proj: Proj,
+/// [`Mode::write_name`] as a `String`: `lit-bilinear-exact`, `unlit-nearest-sub16`, ...
+pub fn mode_name(mode: &Mode) -> String {
+    let mut s = String::new();
+    mode.write_name(&mut s).expect("write to a String");
+    s
 }
 
-impl Mode {
-    /// `lit-bilinear-exact`, `unlit-nearest-sub16`, ...
-    pub fn name(&self) -> String {
-        let lit = if self.lit { "lit" } else { "unlit" };
-        let f = match self.filter {
-            Filt::Nearest => "nearest",
-            Filt::Bilinear => "bilinear",
-            Filt::BilinearFast => "bilinearfast",
-        };
-        let p = match self.proj {
-            Proj::Affine => "affine".to_string(),
-            Proj::Sub(k) => format!("sub{}", 1u32 << k),
-            Proj::Exact => "exact".to_string(),
-        };
-        format!("{lit}-{f}-{p}")
-    }
-
-    /// Parses [`Mode::name`].
-    pub fn parse(s: &str) -> Option<Self> {
-        let mut it = s.split('-');
-        let lit = match it.next()? {
-            "lit" => true,
-            "unlit" => false,
-            _ => return None,
-        };
-        let filter = match it.next()? {
-            "nearest" => Filt::Nearest,
-            "bilinear" => Filt::Bilinear,
-            "bilinearfast" => Filt::BilinearFast,
-            _ => return None,
-        };
-        let proj = match it.next()? {
-            "affine" => Proj::Affine,
-            "exact" => Proj::Exact,
-            p => {
-                let n: u32 = p.strip_prefix("sub")?.parse().ok()?;
-                if !n.is_power_of_two() || !(2..=64).contains(&n) {
-                    return None;
-                }
-                Proj::Sub(n.trailing_zeros() as u8)
-            }
-        };
-        if it.next().is_some() {
-            return None;
-        }
-        Some(Mode { lit, filter, proj })
-    }
-
-    /// The typed draw for this mode.
-    pub fn draw<'a>(&self, tex: Texture<'a>, vp: Viewport) -> Result<Draw<'a, Rgb565>, Error> {
-        macro_rules! typed {
-            ($p:ty, $f:ty) => {
-                if self.lit {
-                    Draw::new::<Pipeline<$p, $f, Repeat, Repeat, ModulateIntensity, DepthLess>>(
-                        Some(tex),
-                        vp,
-                        Cull::Back,
-                    )
-                } else {
-                    Draw::new::<Pipeline<$p, $f, Repeat, Repeat, Replace, DepthLess>>(
-                        Some(tex),
-                        vp,
-                        Cull::Back,
-                    )
-                }
-            };
-        }
-        macro_rules! by_filter {
-            ($p:ty) => {
-                match self.filter {
-                    Filt::Nearest => typed!($p, Nearest),
-                    Filt::Bilinear => typed!($p, Bilinear),
-                    Filt::BilinearFast => typed!($p, BilinearFast),
-                }
-            };
-        }
-        match self.proj {
-            Proj::Affine => by_filter!(Affine),
-            Proj::Exact => by_filter!(Exact),
-            Proj::Sub(k) => by_filter!(Subdivided)?.with_subdivision(k),
-        }
-    }
+/// Parses [`mode_name`] (any lighting x filter x projection of `modes.rs`).
+pub fn parse_mode(s: &str) -> Option<Mode> {
+    [true, false]
+        .into_iter()
+        .flat_map(|lit| {
+            FILTS.into_iter().flat_map(move |filter| {
+                PROJS
+                    .into_iter()
+                    .map(move |proj| Mode { lit, filter, proj })
+            })
+        })
+        .find(|m| mode_name(m) == s)
 }
 
 /// One scene drawn in one mode.
@@ -183,7 +140,12 @@ pub struct Case {
 impl Case {
     /// `scene/mode`.
     pub fn id(&self) -> String {
-        format!("{}/{}", self.scene.name(), self.mode.name())
+        format!("{}/{}", self.scene.name(), self.mode_name())
+    }
+
+    /// The mode's name ([`mode_name`]).
+    pub fn mode_name(&self) -> String {
+        mode_name(&self.mode)
     }
 
     /// Parses `scene/mode` (or `scene mode`).
@@ -191,94 +153,51 @@ impl Case {
         let (scene, mode) = s.split_once(['/', ' '])?;
         Some(Case {
             scene: Scene::parse(scene)?,
-            mode: Mode::parse(mode)?,
+            mode: parse_mode(mode)?,
         })
     }
 }
 
-const fn mode(lit: bool, filter: Filt, proj: Proj) -> Mode {
-    Mode { lit, filter, proj }
+const fn case(scene: Scene, lit: bool, filter: Filt, proj: Proj) -> Case {
+    Case {
+        scene,
+        mode: Mode { lit, filter, proj },
+    }
 }
 
-/// The cases of `SCENES.md` (trilinear is not implemented yet, so the floor has two).
+/// The cases of `SCENES.md` (the floor in its two unmipmapped filters).
 pub const SCENES: [Case; 4] = [
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::Bilinear, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Sphere,
-        mode: mode(true, Filt::Bilinear, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Nearest, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Bilinear, Proj::Exact),
-    },
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Exact),
+    case(Scene::Sphere, true, Filt::Bilinear, Proj::Exact),
+    case(Scene::Floor, false, Filt::Nearest, Proj::Exact),
+    case(Scene::Floor, false, Filt::Bilinear, Proj::Exact),
 ];
 
 /// Cheaper and dearer modes on the cube and the floor (the per-pixel loop is chosen per
-/// draw; the cheapest, unlit nearest affine, is the fill-rate floor).
-pub const MODES: [Case; 12] = [
-    Case {
-        scene: Scene::Cube,
-        mode: mode(false, Filt::Nearest, Proj::Affine),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(false, Filt::Nearest, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::Nearest, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::BilinearFast, Proj::Exact),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::Bilinear, Proj::Sub(4)),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::Bilinear, Proj::Sub(3)),
-    },
-    Case {
-        scene: Scene::Cube,
-        mode: mode(true, Filt::Bilinear, Proj::Affine),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Nearest, Proj::Affine),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Nearest, Proj::Sub(4)),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Nearest, Proj::Sub(3)),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Bilinear, Proj::Sub(4)),
-    },
-    Case {
-        scene: Scene::Floor,
-        mode: mode(false, Filt::Bilinear, Proj::Sub(3)),
-    },
+/// draw; the cheapest, unlit nearest affine, is the fill-rate floor). Any other mode of
+/// `modes.rs` can be named on the command line of `count_scene`.
+pub const MODES: [Case; 11] = [
+    case(Scene::Cube, false, Filt::Nearest, Proj::Affine),
+    case(Scene::Cube, false, Filt::Nearest, Proj::Exact),
+    case(Scene::Cube, true, Filt::Nearest, Proj::Exact),
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Sub16),
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Sub8),
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Affine),
+    case(Scene::Floor, false, Filt::Nearest, Proj::Affine),
+    case(Scene::Floor, false, Filt::Nearest, Proj::Sub16),
+    case(Scene::Floor, false, Filt::Nearest, Proj::Sub8),
+    case(Scene::Floor, false, Filt::Bilinear, Proj::Sub16),
+    case(Scene::Floor, false, Filt::Bilinear, Proj::Sub8),
 ];
 
 /// Everything a case needs, built once (texture, mesh, buffers).
 pub struct Bench {
     /// The case.
     pub case: Case,
+    /// Level 0, then (mipmapped filters only) the rest of the full mip chain.
     texels: Vec<Rgb565>,
     tex_size: (u32, u32),
+    levels: u32,
     cube: demo::MeshData<24, 12>,
     sphere: Option<Box<demo::MeshData<{ demo::SPHERE_VERTICES }, { demo::SPHERE_TRIANGLES }>>>,
     floor: demo::MeshData<4, 2>,
@@ -296,13 +215,22 @@ impl Bench {
             Scene::Sphere => (256, 128),
             Scene::Floor => (64, 64),
         };
-        let mut texels = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
-        demo::checker_texture(w, h, &mut texels).expect("texture");
+        let levels = if case.mode.filter.mipmapped() {
+            full_levels(w, h)
+        } else {
+            1
+        };
+        let mut texels = vec![Rgb565::new(0, 0, 0); chain_len(w, h, levels)];
+        demo::checker_texture(w, h, &mut texels[..(w * h) as usize]).expect("texture");
+        if levels > 1 {
+            generate_mips(&mut texels, w, h, levels).expect("mips");
+        }
         let n = (demo::WIDTH * demo::HEIGHT) as usize;
         Bench {
             case,
             texels,
             tex_size: (w, h),
+            levels,
             cube: demo::cube(),
             sphere: (case.scene == Scene::Sphere).then(|| Box::new(demo::sphere())),
             floor: demo::floor(),
@@ -316,7 +244,8 @@ impl Bench {
     /// Renders frames `0..frames` (clear to black, then draw frame `i`); returns the pixels
     /// that passed the depth test, summed over the frames.
     pub fn run(&mut self, frames: u32) -> u64 {
-        let tex = Texture::new(&self.texels, self.tex_size.0, self.tex_size.1).expect("texture");
+        let (w, h) = self.tex_size;
+        let tex = MipTexture::new(&self.texels, w, h, self.levels).expect("texture");
         let vp = Viewport::new(0, 0, demo::WIDTH, demo::HEIGHT).expect("viewport");
         let draw = self.case.mode.draw(tex, vp).expect("draw");
         let mesh: Mesh<'_> = match self.case.scene {
