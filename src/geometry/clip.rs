@@ -142,35 +142,55 @@ pub fn clip_and_project(
     }
     let mut screen = [ScreenVertex::default(); MAX_POLY];
     for (s, p) in screen.iter_mut().zip(&poly[..n]) {
-        let w = p[3].max(W_MIN_BITS);
-        let (x, y, z) = vp.project(p[0], p[1], p[2], w);
-        let c = |v: i32| v.clamp(0, i32::from(u16::MAX)) as u16;
-        *s = ScreenVertex {
-            x,
-            y,
-            z,
-            w,
-            uv: [p[4], p[5]],
-            color: [c(p[6]), c(p[7]), c(p[8])],
-        };
+        *s = project_attr(p, vp);
     }
     for i in 1..n - 1 {
         let t = [screen[0], screen[i], screen[i + 1]];
-        let area2 = (i64::from(t[1].x) - i64::from(t[0].x))
-            * (i64::from(t[2].y) - i64::from(t[0].y))
-            - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
-        // y points down on screen, so counter-clockwise in NDC (front) has negative area.
-        let front = area2 < 0;
-        let skip = area2 == 0
-            || match cull {
-                Cull::None => false,
-                Cull::Back => !front,
-                Cull::Front => front,
-            };
-        if !skip {
+        if keeps(&t, cull) {
             emit(&t);
         }
     }
+}
+
+/// Perspective divide and viewport mapping of one clip-space vertex (`w` raised to
+/// [`W_MIN_BITS`]; colours clamped to `0..=65535`).
+fn project_attr(p: &Attr, vp: &Viewport) -> ScreenVertex {
+    let w = p[3].max(W_MIN_BITS);
+    let (x, y, z) = vp.project(p[0], p[1], p[2], w);
+    let c = |v: i32| v.clamp(0, i32::from(u16::MAX)) as u16;
+    ScreenVertex {
+        x,
+        y,
+        z,
+        w,
+        uv: [p[4], p[5]],
+        color: [c(p[6]), c(p[7]), c(p[8])],
+    }
+}
+
+/// Whether a projected triangle survives culling: non-zero area and, per `cull`, the
+/// wanted winding (sub-pixel coordinates, exact `i64` area).
+pub fn keeps(t: &ScreenTriangle, cull: Cull) -> bool {
+    let area2 = (i64::from(t[1].x) - i64::from(t[0].x)) * (i64::from(t[2].y) - i64::from(t[0].y))
+        - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
+    // y points down on screen, so counter-clockwise in NDC (front) has negative area.
+    let front = area2 < 0;
+    area2 != 0
+        && match cull {
+            Cull::None => true,
+            Cull::Back => front,
+            Cull::Front => !front,
+        }
+}
+
+/// One vertex prepared for [`clip_and_project`]'s unclipped case: its outcode (the planes
+/// it violates, 0 when inside the view volume and guard band) and its projection. When the
+/// three vertices of a triangle have outcode 0, `clip_and_project` emits exactly
+/// `[a.screen, b.screen, c.screen]` if [`keeps`] holds, so a caller that caches prepared
+/// vertices gets the same screen triangles without projecting a shared vertex again.
+pub fn prepare(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
+    let a = attr(v);
+    (outcode(&a, vp.guard), project_attr(&a, vp))
 }
 
 #[cfg(test)]

@@ -12,7 +12,14 @@ fn run() -> bool {
         return false;
     };
     report("sphere", |pause, resume| {
-        scenes::sphere(&mut buf, data::T256X128, &mesh, frame, pause, resume)
+        scenes::sphere(
+            scenes::Target::Bands(&mut buf),
+            data::T256X128,
+            &mesh,
+            frame,
+            pause,
+            resume,
+        )
     })
 }
 

@@ -1,0 +1,292 @@
+//! The geometry stage for meshes, done once per vertex where it can be: a cache of
+//! *prepared* vertices (transformed, outcoded and projected), culling before lighting, and
+//! a triangle filter that runs before any transform (for bands).
+//!
+//! Per triangle, in mesh order:
+//!
+//! 1. `wants(id)` (a band renderer says whether the triangle meets the band): if not, skip;
+//! 2. its three vertices from the cache, or transformed by the model-view-projection
+//!    matrix, outcoded against the view volume and guard band, and projected (3 `i64`
+//!    divisions), then cached;
+//! 3. all three outside one plane: skip. All three inside (the common case): the screen
+//!    triangle is the three cached projections; cull it by its exact sub-pixel area, and
+//!    only then light its vertices (a normal transform and a dot product, once per vertex,
+//!    cached). Otherwise: the full clipper (`clip_and_project`) on freshly transformed and
+//!    lit vertices.
+//!
+//! Every screen triangle is bit-identical to what [`mesh_triangles`](super::mesh_triangles)
+//! followed by [`Draw::project`] gives (same transforms, same projection, same culling
+//! test), so any path drawing a mesh gives the same pixels.
+//!
+//! The cache is caller storage of [`CachedVertex`] (36 bytes each): with one entry per mesh
+//! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
+//! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
+//! entries); empty, nothing is cached (each corner is prepared on its own).
+
+use crate::color::TargetColor;
+use crate::geometry::clip::{keeps, prepare};
+use crate::geometry::{ScreenTriangle, ScreenVertex};
+use crate::math::Mat4;
+use crate::pipeline::{Draw, Shading};
+use crate::surface::{MeshSink, RenderTarget};
+
+use super::mesh::{intensity, vertex};
+use super::{Camera, DirectionalLight, Mesh};
+
+const EMPTY: u8 = 0;
+/// Transformed and projected; colour still white.
+const PLACED: u8 = 1;
+/// Placed and lit.
+const LIT: u8 = 2;
+/// Its position or normal overflows the fixed-point range: its triangles are skipped.
+const FAILED: u8 = 3;
+
+/// One prepared vertex: its projection (with uv and colour), outcode and cache key.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CachedVertex {
+    screen: ScreenVertex,
+    key: u16,
+    outcode: u8,
+    state: u8,
+}
+
+/// Where the walker's screen triangles go, and which triangles it should skip.
+pub trait TriangleOut {
+    /// Whether triangle `id` is needed (checked before any of its vertices is touched).
+    fn wants(&self, id: usize) -> bool;
+    /// Whether pushed triangles need lighting (else their colour may stay white).
+    fn attributes(&self) -> bool;
+    /// One screen triangle of triangle `id`.
+    fn triangle(&mut self, id: usize, tri: &ScreenTriangle);
+}
+
+/// The matrices and options of one mesh draw.
+struct Ctx<'m, 'l> {
+    mesh: &'m Mesh<'m>,
+    model_view: Mat4,
+    mvp: Mat4,
+    light: Option<&'l DirectionalLight>,
+}
+
+/// Walks the triangles of `mesh` (ids `first_id..`), preparing vertices through `cache`,
+/// and hands every visible screen triangle of `draw`'s viewport and culling to `out`.
+/// Lighting is skipped when `draw` does not use vertex colours. Returns the id after the
+/// last triangle (`first_id + mesh.triangles()`).
+#[allow(clippy::too_many_arguments)]
+pub fn walk_mesh<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    first_id: usize,
+    out: &mut impl TriangleOut,
+) -> usize {
+    let model_view = camera.view.mul(model);
+    let mvp = camera.projection.mul(&model_view);
+    let coloured = matches!(
+        draw.mode().shading,
+        Shading::Modulate | Shading::ModulateIntensity | Shading::Gouraud
+    );
+    let ctx = Ctx {
+        mesh,
+        model_view,
+        mvp,
+        light: light.filter(|_| coloured),
+    };
+    let vp = draw.viewport();
+    let cull = draw.mode().cull;
+    let n = mesh.positions.len();
+    // Slot of vertex i: i itself when every vertex has one, else i mod 2^k.
+    let mask = if cache.len() >= n {
+        usize::MAX
+    } else {
+        (1usize << cache.len().max(1).ilog2()) - 1
+    };
+    let used = cache.len().min(n);
+    for c in cache[..used].iter_mut() {
+        c.state = EMPTY;
+    }
+    for (t, idx) in mesh.indices.iter().enumerate() {
+        let id = first_id + t;
+        if !out.wants(id) {
+            continue;
+        }
+        let lit = out.attributes() && ctx.light.is_some();
+        // The three corners, prepared (from the cache or placed now), copied out: two
+        // corners may share a direct-mapped slot.
+        let mut v = [CachedVertex::default(); 3];
+        for k in 0..3 {
+            let i = usize::from(idx[k]);
+            v[k] = match cache.get_mut(i & mask) {
+                Some(c) => {
+                    if c.state == EMPTY || usize::from(c.key) != i {
+                        place(&ctx, vp, i, c);
+                    }
+                    *c
+                }
+                None => {
+                    let mut c = CachedVertex::default();
+                    place(&ctx, vp, i, &mut c);
+                    c
+                }
+            };
+        }
+        if v.iter().any(|c| c.state == FAILED) {
+            continue;
+        }
+        if v[0].outcode & v[1].outcode & v[2].outcode != 0 {
+            continue; // wholly outside one plane
+        }
+        if v[0].outcode | v[1].outcode | v[2].outcode != 0 {
+            clipped(draw, &ctx, idx, lit, id, out);
+            continue;
+        }
+        let mut tri = [v[0].screen, v[1].screen, v[2].screen];
+        if !keeps(&tri, cull) {
+            continue;
+        }
+        if lit {
+            let mut failed = false;
+            for k in 0..3 {
+                let i = usize::from(idx[k]);
+                if v[k].state == PLACED {
+                    light_vertex(&ctx, i, &mut v[k]);
+                    if let Some(c) = cache.get_mut(i & mask) {
+                        if c.key == v[k].key {
+                            *c = v[k];
+                        }
+                    }
+                }
+                failed |= v[k].state == FAILED;
+                tri[k].color = v[k].screen.color;
+            }
+            if failed {
+                continue;
+            }
+        }
+        out.triangle(id, &tri);
+    }
+    first_id + mesh.indices.len()
+}
+
+/// Transforms, outcodes and projects vertex `i` into `c` (white, not lit yet).
+fn place(ctx: &Ctx<'_, '_>, vp: &crate::geometry::Viewport, i: usize, c: &mut CachedVertex) {
+    c.key = i as u16;
+    match vertex(ctx.mesh, i as u16, &ctx.model_view, &ctx.mvp, None) {
+        Some(v) => {
+            let (outcode, screen) = prepare(&v, vp);
+            c.outcode = outcode;
+            c.screen = screen;
+            c.state = PLACED;
+        }
+        None => c.state = FAILED,
+    }
+}
+
+/// Lights a placed vertex (its colour becomes the light's intensity on all channels).
+fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
+    let Some(l) = ctx.light else {
+        return;
+    };
+    match intensity(ctx.mesh, i, &ctx.model_view, l) {
+        Some(q) => {
+            c.screen.color = [q; 3];
+            c.state = LIT;
+        }
+        None => c.state = FAILED,
+    }
+}
+
+/// A triangle that crosses a clip plane: the full clipper on fresh vertices.
+fn clipped<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    ctx: &Ctx<'_, '_>,
+    idx: &[u16; 3],
+    lit: bool,
+    id: usize,
+    out: &mut impl TriangleOut,
+) {
+    let light = if lit { ctx.light } else { None };
+    let v = |k: usize| vertex(ctx.mesh, idx[k], &ctx.model_view, &ctx.mvp, light);
+    if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+        draw.project(&[a, b, c], &mut |s| out.triangle(id, s));
+    }
+}
+
+/// Sends a mesh's triangles to a band renderer's sink (see
+/// [`BandRenderer::render_spans`](crate::surface::BandRenderer::render_spans)): triangles
+/// the band does not need are skipped before their vertices are transformed. `draw` must be
+/// `draws[draw_index]` of the renderer. Returns the next free triangle id.
+#[allow(clippy::too_many_arguments)]
+pub fn mesh_to_sink<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    draw_index: u8,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    first_id: usize,
+    sink: &mut MeshSink<'_, '_, '_, C>,
+) -> usize {
+    struct ToSink<'x, 's, 'f, 'a, C: TargetColor> {
+        sink: &'x mut MeshSink<'s, 'f, 'a, C>,
+        draw: u8,
+    }
+    impl<C: TargetColor> TriangleOut for ToSink<'_, '_, '_, '_, C> {
+        fn wants(&self, id: usize) -> bool {
+            self.sink.wants(id)
+        }
+        fn attributes(&self) -> bool {
+            self.sink.attributes()
+        }
+        fn triangle(&mut self, id: usize, tri: &ScreenTriangle) {
+            self.sink.push(id, self.draw, tri);
+        }
+    }
+    let mut out = ToSink {
+        sink,
+        draw: draw_index,
+    };
+    walk_mesh(draw, mesh, model, camera, light, cache, first_id, &mut out)
+}
+
+/// Draws `mesh` into `target` through the vertex cache (`cache`: one entry per vertex for
+/// a single pass per vertex; any length works); returns the pixels written. Same pixels as
+/// [`draw_mesh`](super::draw_mesh).
+pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    target: &mut T,
+) -> u32 {
+    struct ToTarget<'x, 'd, 'a, C: TargetColor, T> {
+        draw: &'d Draw<'a, C>,
+        target: &'x mut T,
+        pixels: u32,
+    }
+    impl<C: TargetColor, T: RenderTarget<Color = C>> TriangleOut for ToTarget<'_, '_, '_, C, T> {
+        fn wants(&self, _: usize) -> bool {
+            true
+        }
+        fn attributes(&self) -> bool {
+            true
+        }
+        fn triangle(&mut self, _: usize, tri: &ScreenTriangle) {
+            let p = self.draw.screen_triangle(tri, self.target);
+            self.pixels = self.pixels.wrapping_add(p);
+        }
+    }
+    let mut out = ToTarget {
+        draw,
+        target,
+        pixels: 0,
+    };
+    walk_mesh(draw, mesh, model, camera, light, cache, 0, &mut out);
+    out.pixels
+}

@@ -1,0 +1,278 @@
+//! Band rendering for meshes of any size: two bytes per triangle instead of a screen
+//! triangle per bin.
+//!
+//! [`BandRenderer::render`] keeps every screen triangle of the frame (about 100 bytes each);
+//! a mesh of a thousand visible triangles does not fit a small part's RAM, and the fallback
+//! runs the whole geometry once per band. [`BandRenderer::render_spans`] keeps, per mesh
+//! triangle, only the range of bands it touches ([`BandRange`], 2 bytes), found by one
+//! geometry pass over the frame; each band then runs the geometry again for the triangles
+//! whose range covers it and skips the others *before transforming anything* (the
+//! geometry asks [`MeshSink::wants`] per triangle). With 8-row bands a small triangle is
+//! re-projected in one or two bands, so the geometry costs about two whole-frame passes
+//! instead of one per band.
+//!
+//! Ladder of storage (same pixels on every rung, tested):
+//!
+//! 1. the frame's screen triangles fit `bins`: they are drawn from the bins, the geometry runs
+//!    once (as [`BandRenderer::render`]);
+//! 2. they do not, but every triangle id has a [`BandRange`]: one binning pass, then each
+//!    band re-projects the triangles it meets ([`BandStats::reprojected`]);
+//! 3. triangle ids past the end of `ranges` have no stored range: they are projected in
+//!    every band ([`BandStats::rewalked`]); with empty `ranges` this is the plain per-band
+//!    re-walk.
+//!
+//! Bit-exactness: the band pass gets the very same screen triangles as a whole-frame draw
+//! (the geometry is deterministic), in the same order (triangle ids ascending within each
+//! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
+//! viewport only.
+
+use super::band::{rows_of, BandStats, Binned};
+use super::{BandRenderer, Frame, RenderTarget};
+use crate::color::TargetColor;
+use crate::geometry::ScreenTriangle;
+use crate::pipeline::Draw;
+
+/// The bands one triangle touches: the first and last band index, saturated at 255 (a
+/// triangle below band 255 is then looked at in every band from 255 on: conservative).
+/// [`BandRange::EMPTY`] (the default) when the triangle emits nothing visible.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BandRange {
+    first: u8,
+    last: u8,
+}
+
+impl Default for BandRange {
+    fn default() -> Self {
+        BandRange::EMPTY
+    }
+}
+
+impl BandRange {
+    /// No band (culled, clipped away or outside the frame's rows).
+    pub const EMPTY: BandRange = BandRange { first: 1, last: 0 };
+
+    /// True when no band is covered.
+    pub fn is_empty(self) -> bool {
+        self.first > self.last
+    }
+
+    /// Whether band `index` (saturated at 255) is covered.
+    #[inline]
+    pub fn covers(self, index: u32) -> bool {
+        let b = index.min(255) as u8;
+        self.first <= b && b <= self.last
+    }
+
+    /// Grows the range to include bands `first..=last`.
+    fn include(&mut self, first: u8, last: u8) {
+        if self.is_empty() {
+            *self = BandRange { first, last };
+        } else {
+            self.first = self.first.min(first);
+            self.last = self.last.max(last);
+        }
+    }
+}
+
+/// Receives the screen triangles of a frame's geometry, tagged with a triangle id (the
+/// triangle's index in its mesh plus the mesh's first id) and the index of their draw.
+#[derive(Debug)]
+pub struct MeshSink<'s, 'f, 'a, C: TargetColor> {
+    pass: Pass<'s, 'f, 'a, C>,
+}
+
+#[derive(Debug)]
+enum Pass<'s, 'f, 'a, C: TargetColor> {
+    /// The binning pass: screen triangles to `bins` while they fit, band ranges always.
+    Bin {
+        bins: &'s mut [Binned],
+        len: usize,
+        bins_full: bool,
+        ranges: &'s mut [BandRange],
+        ranges_short: bool,
+        rows: u32,
+        height: u32,
+        triangles: u32,
+    },
+    /// One band: draw what covers it.
+    Band {
+        draws: &'s [&'s Draw<'a, C>],
+        band: &'s mut Frame<'f, C>,
+        ranges: &'s [BandRange],
+        index: u32,
+        pixels: u32,
+    },
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// Whether triangle `id` must be projected in this pass; when `false` the geometry
+    /// should skip it before transforming its vertices.
+    #[inline]
+    pub fn wants(&self, id: usize) -> bool {
+        match &self.pass {
+            Pass::Bin { .. } => true,
+            Pass::Band { ranges, index, .. } => ranges.get(id).is_none_or(|r| r.covers(*index)),
+        }
+    }
+
+    /// Whether the screen triangles pushed now need their attributes (texture coordinates
+    /// and lighting): `false` in the binning pass once the bins are full, where only their
+    /// rows count, so the geometry may skip per-vertex lighting.
+    #[inline]
+    pub fn attributes(&self) -> bool {
+        match &self.pass {
+            Pass::Bin { bins_full, .. } => !*bins_full,
+            Pass::Band { .. } => true,
+        }
+    }
+
+    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]`.
+    pub fn push(&mut self, id: usize, draw: u8, tri: &ScreenTriangle) {
+        match &mut self.pass {
+            Pass::Bin {
+                bins,
+                len,
+                bins_full,
+                ranges,
+                ranges_short,
+                rows,
+                height,
+                triangles,
+            } => {
+                *triangles += 1;
+                if !*bins_full {
+                    match bins.get_mut(*len) {
+                        Some(slot) => {
+                            *slot = Binned::new(draw, tri);
+                            *len += 1;
+                        }
+                        None => *bins_full = true,
+                    }
+                }
+                let (r0, r1) = rows_of(tri);
+                let last_row = *height as i32 - 1;
+                if r1 < 0 || r0 > last_row {
+                    return; // no row of the frame
+                }
+                let band = |r: i32| (r.clamp(0, last_row) as u32 / *rows).min(255) as u8;
+                match ranges.get_mut(id) {
+                    Some(r) => r.include(band(r0), band(r1)),
+                    None => *ranges_short = true,
+                }
+            }
+            Pass::Band {
+                draws,
+                band,
+                pixels,
+                ..
+            } => {
+                let (first, end) = band.row_range();
+                let (r0, r1) = rows_of(tri);
+                if r1 < first || r0 > end {
+                    return;
+                }
+                if let Some(d) = draws.get(usize::from(draw)) {
+                    *pixels += d.screen_triangle(tri, *band);
+                }
+            }
+        }
+    }
+}
+
+impl<C: TargetColor> BandRenderer<'_, C> {
+    /// Draws one frame of meshes of any size (see the module docs). `geometry` is called
+    /// once for binning and then once per band; it must push the same screen triangles in
+    /// the same order each time (for each triangle id it [`wants`](MeshSink::wants)),
+    /// usually through [`crate::scene::mesh_to_sink`]. `bins` holds screen triangles while
+    /// they fit (may be empty); `ranges` one [`BandRange`] per triangle id (may be shorter
+    /// than the frame: see [`BandStats::rewalked`]). Each band is cleared to `clear`, drawn
+    /// and passed to `flush`; the first flush error stops the frame and is returned.
+    pub fn render_spans<E>(
+        &mut self,
+        draws: &[&Draw<'_, C>],
+        bins: &mut [Binned],
+        ranges: &mut [BandRange],
+        clear: C,
+        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+        mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+    ) -> Result<BandStats, E> {
+        ranges.fill(BandRange::EMPTY);
+        let mut sink = MeshSink {
+            pass: Pass::Bin {
+                bins,
+                len: 0,
+                bins_full: false,
+                ranges,
+                ranges_short: false,
+                rows: self.rows.max(1),
+                height: self.height,
+                triangles: 0,
+            },
+        };
+        geometry(&mut sink);
+        let Pass::Bin {
+            bins,
+            len,
+            bins_full,
+            ranges,
+            ranges_short,
+            triangles,
+            ..
+        } = sink.pass
+        else {
+            return Ok(BandStats::default());
+        };
+        let mut stats = BandStats {
+            triangles,
+            reprojected: bins_full,
+            rewalked: bins_full && ranges_short,
+            ..BandStats::default()
+        };
+        let ranges: &[BandRange] = ranges;
+        self.each_band(&mut stats, clear, &mut flush, |band, index| {
+            if bins_full {
+                let mut s = MeshSink {
+                    pass: Pass::Band {
+                        draws,
+                        band,
+                        ranges,
+                        index,
+                        pixels: 0,
+                    },
+                };
+                geometry(&mut s);
+                match s.pass {
+                    Pass::Band { pixels, .. } => pixels,
+                    Pass::Bin { .. } => 0,
+                }
+            } else {
+                let (r0, r1) = band.row_range();
+                let mut pixels = 0;
+                for b in bins[..len].iter().filter(|b| b.meets(r0, r1)) {
+                    if let Some(d) = draws.get(usize::from(b.draw)) {
+                        pixels += d.screen_triangle(&b.tri, band);
+                    }
+                }
+                pixels
+            }
+        })?;
+        Ok(stats)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_grow_and_saturate() {
+        let mut r = BandRange::EMPTY;
+        assert!(r.is_empty() && !r.covers(0));
+        r.include(3, 4);
+        r.include(2, 2);
+        assert!(r.covers(2) && r.covers(4) && !r.covers(5) && !r.covers(1));
+        let mut far = BandRange::EMPTY;
+        far.include(255, 255);
+        assert!(far.covers(300) && !far.covers(254));
+    }
+}
