@@ -13,7 +13,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
-use scenes::{Buffers, Fnv1a, FrameResult, SmallBuffers, Target, Whole, WholeTarget};
+use scenes::{Fnv1a, FrameResult, SmallBuffers, SphereBuffers, Target, Whole, WholeTarget};
 
 fn texture(w: u32, h: u32) -> Vec<Rgb565> {
     let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
@@ -68,7 +68,7 @@ fn print_whole(scene: &str, r: &FrameResult, w: &FrameResult) {
 
 #[test]
 fn mcu_frames() {
-    let mut buf = Box::new(Buffers::new());
+    let mut buf = Box::new(SphereBuffers::with_storage());
     let mut small = Box::new(SmallBuffers::with_storage());
     let mut whole_buf = Box::new(Whole::new());
     let (mut nop1, mut nop2) = (|| {}, || {});
@@ -131,7 +131,7 @@ fn mcu_frames() {
     let tex = Texture::new(&t64, 64, 64).unwrap();
     let floor = demo::floor();
     let fm = floor.mesh().unwrap();
-    let r = scenes::floor::<scenes::FloorNearest, _, _>(
+    let r = scenes::floor::<scenes::FloorNearest, _, _, _>(
         Target::Bands(&mut *small),
         tex,
         &mut nop1,
@@ -139,7 +139,7 @@ fn mcu_frames() {
     )
     .unwrap();
     print("floor", &r);
-    let wr = scenes::floor::<scenes::FloorNearest, _, _>(
+    let wr = scenes::floor::<scenes::FloorNearest, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
         tex,
         &mut nop1,
@@ -154,7 +154,7 @@ fn mcu_frames() {
         "floor: bands differ from the whole frame"
     );
 
-    let r = scenes::floor::<scenes::FloorBilinear, _, _>(
+    let r = scenes::floor::<scenes::FloorBilinear, _, _, _>(
         Target::Bands(&mut *small),
         tex,
         &mut nop1,
@@ -162,7 +162,7 @@ fn mcu_frames() {
     )
     .unwrap();
     print("floor_bilinear", &r);
-    let wr = scenes::floor::<scenes::FloorBilinear, _, _>(
+    let wr = scenes::floor::<scenes::FloorBilinear, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
         tex,
         &mut nop1,

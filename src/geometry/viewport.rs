@@ -8,6 +8,7 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
+use crate::math::{div_floor_i64, div_round_i64};
 use crate::raster::{Rect, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_ONE};
 use crate::Error;
 
@@ -103,21 +104,18 @@ impl Viewport {
     }
 }
 
-/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`.
+/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`. Exact, through
+/// the 32-bit paths of [`crate::math::div`] when the operands are small (the common case:
+/// about 3x fewer instructions on Cortex-M than a 64-bit division).
 #[inline]
 fn round_half_up(n: i64, d: i64) -> i64 {
-    (2 * n + d).div_euclid(2 * d)
+    div_floor_i64(2 * n + d, 2 * d)
 }
 
 /// `n / d` rounded to nearest, ties away from zero; `d > 0`.
 #[inline]
 pub(crate) fn div_round(n: i64, d: i64) -> i64 {
-    let half = d / 2;
-    if n >= 0 {
-        (n + half) / d
-    } else {
-        -((half - n) / d)
-    }
+    div_round_i64(n, d)
 }
 
 #[cfg(test)]

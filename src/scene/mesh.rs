@@ -91,7 +91,7 @@ pub(super) fn vertex(
     let p = mvp.transform_point(*mesh.positions.get(i)?)?;
     let uv = *mesh.uvs.get(i)?;
     let intensity = match light {
-        Some(l) => intensity(mesh, i, model_view, l)?,
+        Some(l) => vertex_intensity(mesh, i, model_view, l)?,
         None => COLOR_ONE,
     };
     Some(ClipVertex {
@@ -104,7 +104,7 @@ pub(super) fn vertex(
 /// Per-vertex Gouraud intensity of vertex `i` (Q8, `0..=256`) under `light`, its normal
 /// taken to view space by `model_view`; [`COLOR_ONE`] when the mesh has no normals. `None`
 /// when the normal overflows the fixed-point range (its triangles are skipped).
-pub(super) fn intensity(
+pub fn vertex_intensity(
     mesh: &Mesh<'_>,
     i: usize,
     model_view: &Mat4,

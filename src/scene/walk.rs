@@ -18,7 +18,7 @@
 //! followed by [`Draw::project`] gives (same transforms, same projection, same culling
 //! test), so any path drawing a mesh gives the same pixels.
 //!
-//! The cache is caller storage of [`CachedVertex`] (36 bytes each): with one entry per mesh
+//! The cache is caller storage of [`CachedVertex`] (40 bytes each): with one entry per mesh
 //! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
 //! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
 //! entries); empty, nothing is cached (each corner is prepared on its own).
@@ -30,7 +30,7 @@ use crate::math::Mat4;
 use crate::pipeline::{Draw, Shading};
 use crate::surface::{MeshSink, RenderTarget};
 
-use super::mesh::{intensity, vertex};
+use super::mesh::{vertex, vertex_intensity};
 use super::{Camera, DirectionalLight, Mesh};
 
 const EMPTY: u8 = 0;
@@ -45,6 +45,8 @@ const FAILED: u8 = 3;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CachedVertex {
     screen: ScreenVertex,
+    /// The mesh's first triangle id (meshes sharing a cache have distinct ones).
+    mesh: u32,
     key: u16,
     outcode: u8,
     state: u8,
@@ -54,6 +56,16 @@ pub struct CachedVertex {
 pub trait TriangleOut {
     /// Whether triangle `id` is needed (checked before any of its vertices is touched).
     fn wants(&self, id: usize) -> bool;
+    /// The ids that may be wanted, `lo..=hi` (the others are skipped without asking).
+    fn window(&self) -> (usize, usize) {
+        (0, usize::MAX)
+    }
+    /// Whether the cache must be emptied first (a new frame). When `false` the cache is
+    /// trusted to hold this frame's vertices of this mesh (a band pass after the binning
+    /// pass of the same frame).
+    fn fresh(&self) -> bool {
+        true
+    }
     /// Whether pushed triangles need lighting (else their colour may stay white).
     fn attributes(&self) -> bool;
     /// One screen triangle of triangle `id`.
@@ -104,11 +116,20 @@ pub fn walk_mesh<C: TargetColor>(
     } else {
         (1usize << cache.len().max(1).ilog2()) - 1
     };
-    let used = cache.len().min(n);
-    for c in cache[..used].iter_mut() {
-        c.state = EMPTY;
+    if out.fresh() {
+        for c in cache.iter_mut() {
+            c.state = EMPTY;
+        }
     }
-    for (t, idx) in mesh.indices.iter().enumerate() {
+    let tag = first_id as u32;
+    let (lo, hi) = out.window();
+    let len = mesh.indices.len();
+    let start = lo.saturating_sub(first_id).min(len);
+    let end = match hi.checked_sub(first_id) {
+        Some(h) => h.saturating_add(1).min(len),
+        None => 0,
+    };
+    for (t, idx) in mesh.indices.iter().enumerate().take(end).skip(start) {
         let id = first_id + t;
         if !out.wants(id) {
             continue;
@@ -121,8 +142,9 @@ pub fn walk_mesh<C: TargetColor>(
             let i = usize::from(idx[k]);
             v[k] = match cache.get_mut(i & mask) {
                 Some(c) => {
-                    if c.state == EMPTY || usize::from(c.key) != i {
+                    if c.state == EMPTY || usize::from(c.key) != i || c.mesh != tag {
                         place(&ctx, vp, i, c);
+                        c.mesh = tag;
                     }
                     *c
                 }
@@ -154,7 +176,7 @@ pub fn walk_mesh<C: TargetColor>(
                 if v[k].state == PLACED {
                     light_vertex(&ctx, i, &mut v[k]);
                     if let Some(c) = cache.get_mut(i & mask) {
-                        if c.key == v[k].key {
+                        if c.key == v[k].key && c.mesh == tag {
                             *c = v[k];
                         }
                     }
@@ -190,7 +212,7 @@ fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     let Some(l) = ctx.light else {
         return;
     };
-    match intensity(ctx.mesh, i, &ctx.model_view, l) {
+    match vertex_intensity(ctx.mesh, i, &ctx.model_view, l) {
         Some(q) => {
             c.screen.color = [q; 3];
             c.state = LIT;
@@ -238,6 +260,12 @@ pub fn mesh_to_sink<C: TargetColor>(
     impl<C: TargetColor> TriangleOut for ToSink<'_, '_, '_, '_, C> {
         fn wants(&self, id: usize) -> bool {
             self.sink.wants(id)
+        }
+        fn window(&self) -> (usize, usize) {
+            self.sink.window()
+        }
+        fn fresh(&self) -> bool {
+            self.sink.fresh()
         }
         fn attributes(&self) -> bool {
             self.sink.attributes()

@@ -32,13 +32,14 @@ use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
 use crate::pipeline::Draw;
 
-/// The bands one triangle touches: the first and last band index, saturated at 255 (a
-/// triangle below band 255 is then looked at in every band from 255 on: conservative).
-/// [`BandRange::EMPTY`] (the default) when the triangle emits nothing visible.
+/// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
+/// triangle below band 254 is then looked at in every band from 254 on: conservative).
+/// [`BandRange::EMPTY`] (the default, all zero bits so arrays of it start zeroed) when the
+/// triangle emits nothing visible.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BandRange {
     first: u8,
-    last: u8,
+    end: u8,
 }
 
 impl Default for BandRange {
@@ -47,29 +48,33 @@ impl Default for BandRange {
     }
 }
 
+/// Largest band index a range stores; later bands share it.
+const LAST_BAND: u32 = 254;
+
 impl BandRange {
     /// No band (culled, clipped away or outside the frame's rows).
-    pub const EMPTY: BandRange = BandRange { first: 1, last: 0 };
+    pub const EMPTY: BandRange = BandRange { first: 0, end: 0 };
 
     /// True when no band is covered.
     pub fn is_empty(self) -> bool {
-        self.first > self.last
+        self.first >= self.end
     }
 
-    /// Whether band `index` (saturated at 255) is covered.
+    /// Whether band `index` (saturated at 254) is covered.
     #[inline]
     pub fn covers(self, index: u32) -> bool {
-        let b = index.min(255) as u8;
-        self.first <= b && b <= self.last
+        let b = index.min(LAST_BAND) as u8;
+        self.first <= b && b < self.end
     }
 
-    /// Grows the range to include bands `first..=last`.
+    /// Grows the range to include bands `first..=last` (each at most 254).
     fn include(&mut self, first: u8, last: u8) {
+        let end = last.saturating_add(1);
         if self.is_empty() {
-            *self = BandRange { first, last };
+            *self = BandRange { first, end };
         } else {
             self.first = self.first.min(first);
-            self.last = self.last.max(last);
+            self.end = self.end.max(end);
         }
     }
 }
@@ -85,6 +90,7 @@ pub struct MeshSink<'s, 'f, 'a, C: TargetColor> {
 enum Pass<'s, 'f, 'a, C: TargetColor> {
     /// The binning pass: screen triangles to `bins` while they fit, band ranges always.
     Bin {
+        windows: &'s mut Windows,
         bins: &'s mut [Binned],
         len: usize,
         bins_full: bool,
@@ -96,6 +102,7 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
     },
     /// One band: draw what covers it.
     Band {
+        window: (usize, usize),
         draws: &'s [&'s Draw<'a, C>],
         band: &'s mut Frame<'f, C>,
         ranges: &'s [BandRange],
@@ -104,7 +111,44 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
     },
 }
 
+/// Per group of bands, the lowest and highest triangle id that meets it (so a band pass
+/// need not ask about the ids outside). 64 groups of `group` consecutive bands.
+#[derive(Debug)]
+struct Windows {
+    ids: [(usize, usize); WINDOWS],
+    group: u32,
+}
+
+const WINDOWS: usize = 64;
+
+impl Windows {
+    fn window(&self, band: u32) -> (usize, usize) {
+        self.ids
+            .get((band / self.group) as usize)
+            .copied()
+            .unwrap_or((0, usize::MAX))
+    }
+}
+
 impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// The triangle ids this pass may want, `lo..=hi` (the whole range in the binning
+    /// pass; in a band pass, the ids of the triangles that met the band's group). The
+    /// geometry may skip the ids outside without asking [`wants`](Self::wants).
+    #[inline]
+    pub fn window(&self) -> (usize, usize) {
+        match &self.pass {
+            Pass::Bin { .. } => (0, usize::MAX),
+            Pass::Band { window, .. } => *window,
+        }
+    }
+
+    /// True in the binning pass, which starts a frame: caches of transformed vertices
+    /// kept across the band passes must be emptied then (the matrices may have changed).
+    #[inline]
+    pub fn fresh(&self) -> bool {
+        matches!(self.pass, Pass::Bin { .. })
+    }
+
     /// Whether triangle `id` must be projected in this pass; when `false` the geometry
     /// should skip it before transforming its vertices.
     #[inline]
@@ -130,6 +174,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     pub fn push(&mut self, id: usize, draw: u8, tri: &ScreenTriangle) {
         match &mut self.pass {
             Pass::Bin {
+                windows,
                 bins,
                 len,
                 bins_full,
@@ -154,10 +199,17 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 if r1 < 0 || r0 > last_row {
                     return; // no row of the frame
                 }
-                let band = |r: i32| (r.clamp(0, last_row) as u32 / *rows).min(255) as u8;
+                let band = |r: i32| r.clamp(0, last_row) as u32 / *rows;
+                let (b0, b1) = (band(r0), band(r1));
+                let sat = |b: u32| b.min(LAST_BAND) as u8;
                 match ranges.get_mut(id) {
-                    Some(r) => r.include(band(r0), band(r1)),
+                    Some(r) => r.include(sat(b0), sat(b1)),
                     None => *ranges_short = true,
+                }
+                for g in b0 / windows.group..=b1 / windows.group {
+                    if let Some(w) = windows.ids.get_mut(g as usize) {
+                        *w = (w.0.min(id), w.1.max(id));
+                    }
                 }
             }
             Pass::Band {
@@ -197,20 +249,27 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
     ) -> Result<BandStats, E> {
         ranges.fill(BandRange::EMPTY);
+        let rows = self.rows.max(1);
+        let mut windows = Windows {
+            ids: [(usize::MAX, 0); WINDOWS],
+            group: self.height.div_ceil(rows).div_ceil(WINDOWS as u32).max(1),
+        };
         let mut sink = MeshSink {
             pass: Pass::Bin {
+                windows: &mut windows,
                 bins,
                 len: 0,
                 bins_full: false,
                 ranges,
                 ranges_short: false,
-                rows: self.rows.max(1),
+                rows,
                 height: self.height,
                 triangles: 0,
             },
         };
         geometry(&mut sink);
         let Pass::Bin {
+            windows,
             bins,
             len,
             bins_full,
@@ -229,10 +288,17 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             ..BandStats::default()
         };
         let ranges: &[BandRange] = ranges;
+        let windows: &Windows = windows;
         self.each_band(&mut stats, clear, &mut flush, |band, index| {
             if bins_full {
                 let mut s = MeshSink {
                     pass: Pass::Band {
+                        // Ids without a stored range are wanted in every band.
+                        window: if ranges_short {
+                            (0, usize::MAX)
+                        } else {
+                            windows.window(index)
+                        },
                         draws,
                         band,
                         ranges,
@@ -272,7 +338,7 @@ mod tests {
         r.include(2, 2);
         assert!(r.covers(2) && r.covers(4) && !r.covers(5) && !r.covers(1));
         let mut far = BandRange::EMPTY;
-        far.include(255, 255);
-        assert!(far.covers(300) && !far.covers(254));
+        far.include(254, 254);
+        assert!(far.covers(300) && far.covers(254) && !far.covers(253));
     }
 }

@@ -64,13 +64,13 @@ impl Fnv1a {
 
 /// Buffers a band renderer needs: colour band, depth band, triangle bins, `R` band ranges
 /// and a cache of `V` prepared vertices.
-pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE> {
+pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE, const B: usize = BINS> {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
     /// Depth band.
     pub depth: [u16; BAND_PIXELS],
     /// Triangle bins.
-    pub bins: [Binned; BINS],
+    pub bins: [Binned; B],
     /// Band range per triangle (when the bins overflow).
     pub ranges: [BandRange; R],
     /// Prepared-vertex cache.
@@ -79,6 +79,9 @@ pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE> {
 
 /// Buffers of the scenes whose triangles fit the bins (cube, floor): no band ranges.
 pub type SmallBuffers = Buffers<0, 32>;
+/// Buffers of the sphere firmware: band ranges and a vertex cache, no bins (its ~650
+/// screen triangles would need 68 KB of them). 10 KiB band + 4.4 KB ranges + 2.5 KB cache.
+pub type SphereBuffers = Buffers<RANGES, CACHE, 0>;
 
 impl Default for Buffers {
     fn default() -> Self {
@@ -93,13 +96,13 @@ impl Buffers {
     }
 }
 
-impl<const R: usize, const V: usize> Buffers<R, V> {
+impl<const R: usize, const V: usize, const B: usize> Buffers<R, V, B> {
     /// Zeroed buffers.
     pub fn with_storage() -> Self {
         Buffers {
             color: [Rgb565::new(0, 0, 0); BAND_PIXELS],
             depth: [0; BAND_PIXELS],
-            bins: [Binned::default(); BINS],
+            bins: [Binned::default(); B],
             ranges: [BandRange::EMPTY; R],
             cache: [CachedVertex::default(); V],
         }
@@ -135,12 +138,12 @@ impl Default for Whole {
 }
 
 /// A whole-frame [`Target`] (its band storage parameters are unused).
-pub type WholeTarget<'b> = Target<'b, 0, 0>;
+pub type WholeTarget<'b> = Target<'b, 0, 0, 0>;
 
 /// Where a frame is drawn: in bands through `Buffers`, or whole.
-pub enum Target<'b, const R: usize, const V: usize> {
+pub enum Target<'b, const R: usize, const V: usize, const B: usize = BINS> {
     /// Band by band.
-    Bands(&'b mut Buffers<R, V>),
+    Bands(&'b mut Buffers<R, V, B>),
     /// One whole frame.
     Whole(&'b mut Whole),
 }
@@ -158,8 +161,8 @@ pub struct FrameResult {
 /// before each band's checksum and `resume` after it, so an instruction counter can leave
 /// the (harness-only) checksum out of the renderer's count.
 #[allow(clippy::too_many_arguments)]
-pub fn render<M, const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn render<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -182,8 +185,8 @@ pub fn viewport() -> Result<Viewport, Error> {
 
 /// Like [`render`] with a ready draw (any mode: see `modes.rs`).
 #[allow(clippy::too_many_arguments)]
-pub fn render_draw<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn render_draw<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -242,15 +245,15 @@ pub fn render_draw<const R: usize, const V: usize>(
 }
 
 /// Scene `cube`, frame `i`: `texture` must be `T(128, 128)`.
-pub fn cube<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn cube<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let m = demo::cube();
-    render::<Lit, R, V>(
+    render::<Lit, R, V, B>(
         buf,
         texture,
         &m.mesh()?,
@@ -263,15 +266,15 @@ pub fn cube<const R: usize, const V: usize>(
 }
 
 /// Scene `sphere`, frame `i`: `texture` must be `T(256, 128)`, `mesh` the demo sphere.
-pub fn sphere<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn sphere<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    render::<Lit, R, V>(
+    render::<Lit, R, V, B>(
         buf,
         texture,
         mesh,
@@ -284,8 +287,8 @@ pub fn sphere<const R: usize, const V: usize>(
 }
 
 /// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`.
-pub fn floor<M, const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn floor<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
@@ -294,7 +297,7 @@ where
     M: fixel::pipeline::Stages + 'static,
 {
     let m = demo::floor();
-    render::<M, R, V>(
+    render::<M, R, V, B>(
         buf,
         texture,
         &m.mesh()?,
@@ -307,8 +310,8 @@ where
 }
 
 /// Scene `cube`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(128, 128)`).
-pub fn cube_with<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn cube_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     lit: bool,
     i: u32,
@@ -330,8 +333,8 @@ pub fn cube_with<const R: usize, const V: usize>(
 
 /// Scene `sphere`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(256, 128)`).
 #[allow(clippy::too_many_arguments)]
-pub fn sphere_with<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn sphere_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     lit: bool,
@@ -353,8 +356,8 @@ pub fn sphere_with<const R: usize, const V: usize>(
 
 /// Scene `floor` drawn with `draw` (unlit; texture `T(64, 64)`, with its mip chain for the
 /// mipmapped filters).
-pub fn floor_with<const R: usize, const V: usize>(
-    buf: Target<'_, R, V>,
+pub fn floor_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
