@@ -20,7 +20,7 @@ pub mod vec;
 /// The geometry scalar: I16F16 fixed point (±32768, resolution 2^-16).
 pub type Fx = fixed::types::I16F16;
 
-pub use div::{div_floor_i64, div_round_i64, div_u64};
+pub use div::{div_floor_i64, div_round_i64, div_u64, SmallDivisor, HW_DIVIDE};
 pub use mat::Mat4;
 pub use recip::{div_fx, isqrt_u32, isqrt_u64, recip_fx, reciprocal_u32};
 pub use trig::{sin_cos, Angle};

@@ -51,8 +51,8 @@ impl Binned {
     }
 }
 
-/// Conservative pixel rows of a screen triangle: every covered row `y` has
-/// `r0 <= y <= r1` (the first rows whose centres are at or below its top and bottom).
+/// Pixel rows of a screen triangle: the rasterizer draws rows `r0..r1` (`r1` excluded), the
+/// first rows whose centres are at or below its top and its bottom.
 pub(super) fn rows_of(tri: &ScreenTriangle) -> (i32, i32) {
     let top = tri[0].y.min(tri[1].y).min(tri[2].y);
     let bot = tri[0].y.max(tri[1].y).max(tri[2].y);

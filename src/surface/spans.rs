@@ -194,13 +194,14 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                         None => *bins_full = true,
                     }
                 }
+                // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
                 let (r0, r1) = rows_of(tri);
                 let last_row = *height as i32 - 1;
-                if r1 < 0 || r0 > last_row {
+                if r1 <= r0 || r1 <= 0 || r0 > last_row {
                     return; // no row of the frame
                 }
                 let band = |r: i32| r.clamp(0, last_row) as u32 / *rows;
-                let (b0, b1) = (band(r0), band(r1));
+                let (b0, b1) = (band(r0), band(r1 - 1));
                 let sat = |b: u32| b.min(LAST_BAND) as u8;
                 match ranges.get_mut(id) {
                     Some(r) => r.include(sat(b0), sat(b1)),
@@ -218,9 +219,11 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 pixels,
                 ..
             } => {
+                // Rows r0..r1 against the band's first..end (both ends excluded): a
+                // triangle that only touches the band's edge costs no set-up.
                 let (first, end) = band.row_range();
                 let (r0, r1) = rows_of(tri);
-                if r1 < first || r0 > end {
+                if r1 <= first || r0 >= end || r1 <= r0 {
                     return;
                 }
                 if let Some(d) = draws.get(usize::from(draw)) {
