@@ -52,6 +52,24 @@ pub struct CachedVertex {
     state: u8,
 }
 
+impl CachedVertex {
+    /// An empty entry (all zero bits, so arrays of it can start zeroed in place).
+    pub const EMPTY: CachedVertex = CachedVertex {
+        screen: ScreenVertex {
+            x: 0,
+            y: 0,
+            z: 0,
+            w: 0,
+            uv: [0; 2],
+            color: [0; 3],
+        },
+        mesh: 0,
+        key: 0,
+        outcode: 0,
+        state: EMPTY,
+    };
+}
+
 /// Where the walker's screen triangles go, and which triangles it should skip.
 pub trait TriangleOut {
     /// Whether triangle `id` is needed (checked before any of its vertices is touched).

@@ -26,7 +26,7 @@ pub const BINS: usize = 16;
 pub const RANGES: usize = demo::SPHERE_TRIANGLES;
 /// Prepared-vertex cache of the band firmwares (36 B each, direct-mapped): 64 entries
 /// keep the sphere's ring-to-ring vertex reuse.
-pub const CACHE: usize = 64;
+pub const CACHE: usize = 128;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
@@ -104,7 +104,7 @@ impl<const R: usize, const V: usize, const B: usize> Buffers<R, V, B> {
             depth: [0; BAND_PIXELS],
             bins: [Binned::default(); B],
             ranges: [BandRange::EMPTY; R],
-            cache: [CachedVertex::default(); V],
+            cache: [CachedVertex::EMPTY; V],
         }
     }
 }
@@ -126,7 +126,7 @@ impl Whole {
         Whole {
             color: [Rgb565::new(0, 0, 0); (W * H) as usize],
             depth: [0; (W * H) as usize],
-            cache: [CachedVertex::default(); demo::SPHERE_VERTICES],
+            cache: [CachedVertex::EMPTY; demo::SPHERE_VERTICES],
         }
     }
 }
