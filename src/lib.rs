@@ -39,8 +39,8 @@
 //! | pipeline | [`pipeline`] | per-triangle set-up; `u, v` in texels as `I16F16` bits; `q = w_min / w` as Q30; colour Q8.16; affine, subdivided, exact or adaptive (per triangle) interpolation |
 //! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |
-//! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
-//! | scene | [`scene`] | meshes, camera, per-vertex directional light |
+//! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands (screen triangles binned, or a 2-byte band range per mesh triangle for big meshes); embedded-graphics flush |
+//! | scene | [`scene`] | meshes, camera, per-vertex directional light; a geometry walker with a cache of projected vertices that culls before lighting |
 //!
 //! ## Conventions (OpenGL ES unless stated)
 //!

@@ -193,6 +193,30 @@ pub fn prepare(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
     (outcode(&a, vp.guard), project_attr(&a, vp))
 }
 
+/// [`prepare`] without the depth division: the screen vertex's `z` holds the *clip-space*
+/// `z` (I16F16 bits) until [`complete_depth`] replaces it. For passes that need only rows
+/// and winding (band binning).
+pub fn prepare_without_depth(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
+    let a = attr(v);
+    let w = a[3].max(W_MIN_BITS);
+    let (x, y) = vp.project_xy(a[0], a[1], w);
+    let c = |v: i32| v.clamp(0, i32::from(u16::MAX)) as u16;
+    let s = ScreenVertex {
+        x,
+        y,
+        z: a[2],
+        w,
+        uv: [a[4], a[5]],
+        color: [c(a[6]), c(a[7]), c(a[8])],
+    };
+    (outcode(&a, vp.guard), s)
+}
+
+/// Turns a vertex from [`prepare_without_depth`] into what [`prepare`] gives.
+pub fn complete_depth(s: &mut ScreenVertex, vp: &Viewport) {
+    s.z = vp.project_z(s.z, s.w);
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;

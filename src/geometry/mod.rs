@@ -15,6 +15,6 @@ pub mod clip;
 pub mod vertex;
 pub mod viewport;
 
-pub use clip::{clip_and_project, keeps, prepare};
+pub use clip::{clip_and_project, complete_depth, keeps, prepare, prepare_without_depth};
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

@@ -18,13 +18,13 @@
 //! followed by [`Draw::project`] gives (same transforms, same projection, same culling
 //! test), so any path drawing a mesh gives the same pixels.
 //!
-//! The cache is caller storage of [`CachedVertex`] (40 bytes each): with one entry per mesh
+//! The cache is caller storage of [`CachedVertex`] (32 bytes each): with one entry per mesh
 //! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
 //! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
 //! entries); empty, nothing is cached (each corner is prepared on its own).
 
 use crate::color::TargetColor;
-use crate::geometry::clip::{keeps, prepare};
+use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_depth};
 use crate::geometry::{ScreenTriangle, ScreenVertex};
 use crate::math::Mat4;
 use crate::pipeline::{Draw, Shading};
@@ -40,14 +40,23 @@ const PLACED: u8 = 1;
 const LIT: u8 = 2;
 /// Its position or normal overflows the fixed-point range: its triangles are skipped.
 const FAILED: u8 = 3;
+/// Placed without the depth division (binning): `z` holds the clip-space `z`.
+const NO_DEPTH: u8 = 4;
 
-/// One prepared vertex: its projection (with uv and colour), outcode and cache key.
+/// One prepared vertex: its projection (uv and one colour intensity), outcode and cache
+/// key; 32 bytes, so copies stay a few word moves.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CachedVertex {
-    screen: ScreenVertex,
-    /// The mesh's first triangle id (meshes sharing a cache have distinct ones).
-    mesh: u32,
+    x: i32,
+    y: i32,
+    z: i32,
+    w: i32,
+    uv: [i32; 2],
+    /// Colour, one channel for all three (the walker's lighting is grey).
+    color: u16,
     key: u16,
+    /// The low 16 bits of the mesh's first triangle id (meshes sharing a cache).
+    mesh: u16,
     outcode: u8,
     state: u8,
 }
@@ -55,19 +64,33 @@ pub struct CachedVertex {
 impl CachedVertex {
     /// An empty entry (all zero bits, so arrays of it can start zeroed in place).
     pub const EMPTY: CachedVertex = CachedVertex {
-        screen: ScreenVertex {
-            x: 0,
-            y: 0,
-            z: 0,
-            w: 0,
-            uv: [0; 2],
-            color: [0; 3],
-        },
-        mesh: 0,
+        x: 0,
+        y: 0,
+        z: 0,
+        w: 0,
+        uv: [0; 2],
+        color: 0,
         key: 0,
+        mesh: 0,
         outcode: 0,
         state: EMPTY,
     };
+
+    fn set_screen(&mut self, s: &ScreenVertex) {
+        (self.x, self.y, self.z, self.w, self.uv, self.color) =
+            (s.x, s.y, s.z, s.w, s.uv, s.color[0]);
+    }
+
+    fn screen(&self) -> ScreenVertex {
+        ScreenVertex {
+            x: self.x,
+            y: self.y,
+            z: self.z,
+            w: self.w,
+            uv: self.uv,
+            color: [self.color; 3],
+        }
+    }
 }
 
 /// Where the walker's screen triangles go, and which triangles it should skip.
@@ -134,12 +157,14 @@ pub fn walk_mesh<C: TargetColor>(
     } else {
         (1usize << cache.len().max(1).ilog2()) - 1
     };
-    if out.fresh() {
+    // Entries are told apart by the low 16 bits of the mesh's first id: past 65535 the
+    // cache is emptied on every call (correct, only slower).
+    if out.fresh() || first_id > usize::from(u16::MAX) {
         for c in cache.iter_mut() {
             c.state = EMPTY;
         }
     }
-    let tag = first_id as u32;
+    let tag = first_id as u16;
     let (lo, hi) = out.window();
     let len = mesh.indices.len();
     let start = lo.saturating_sub(first_id).min(len);
@@ -152,7 +177,8 @@ pub fn walk_mesh<C: TargetColor>(
         if !out.wants(id) {
             continue;
         }
-        let lit = out.attributes() && ctx.light.is_some();
+        let full = out.attributes();
+        let lit = full && ctx.light.is_some();
         // The three corners, prepared (from the cache or placed now), copied out: two
         // corners may share a direct-mapped slot.
         let mut v = [CachedVertex::default(); 3];
@@ -161,14 +187,14 @@ pub fn walk_mesh<C: TargetColor>(
             v[k] = match cache.get_mut(i & mask) {
                 Some(c) => {
                     if c.state == EMPTY || usize::from(c.key) != i || c.mesh != tag {
-                        place(&ctx, vp, i, c);
+                        place(&ctx, vp, i, c, full);
                         c.mesh = tag;
                     }
                     *c
                 }
                 None => {
                     let mut c = CachedVertex::default();
-                    place(&ctx, vp, i, &mut c);
+                    place(&ctx, vp, i, &mut c, full);
                     c
                 }
             };
@@ -183,16 +209,25 @@ pub fn walk_mesh<C: TargetColor>(
             clipped(draw, &ctx, idx, lit, id, out);
             continue;
         }
-        let mut tri = [v[0].screen, v[1].screen, v[2].screen];
+        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
         if !keeps(&tri, cull) {
             continue;
         }
-        if lit {
+        if full {
+            // Kept: complete what binning left out (depth), then light.
             let mut failed = false;
             for k in 0..3 {
-                let i = usize::from(idx[k]);
-                if v[k].state == PLACED {
-                    light_vertex(&ctx, i, &mut v[k]);
+                let before = v[k].state;
+                if v[k].state == NO_DEPTH {
+                    complete_depth(&mut tri[k], vp);
+                    v[k].z = tri[k].z;
+                    v[k].state = PLACED;
+                }
+                if lit && v[k].state == PLACED {
+                    light_vertex(&ctx, usize::from(idx[k]), &mut v[k]);
+                }
+                if v[k].state != before {
+                    let i = usize::from(idx[k]);
                     if let Some(c) = cache.get_mut(i & mask) {
                         if c.key == v[k].key && c.mesh == tag {
                             *c = v[k];
@@ -200,7 +235,7 @@ pub fn walk_mesh<C: TargetColor>(
                     }
                 }
                 failed |= v[k].state == FAILED;
-                tri[k].color = v[k].screen.color;
+                tri[k].color = [v[k].color; 3];
             }
             if failed {
                 continue;
@@ -211,15 +246,26 @@ pub fn walk_mesh<C: TargetColor>(
     first_id + mesh.indices.len()
 }
 
-/// Transforms, outcodes and projects vertex `i` into `c` (white, not lit yet).
-fn place(ctx: &Ctx<'_, '_>, vp: &crate::geometry::Viewport, i: usize, c: &mut CachedVertex) {
+/// Transforms, outcodes and projects vertex `i` into `c` (white, not lit yet; without
+/// the depth division unless `depth`).
+fn place(
+    ctx: &Ctx<'_, '_>,
+    vp: &crate::geometry::Viewport,
+    i: usize,
+    c: &mut CachedVertex,
+    depth: bool,
+) {
     c.key = i as u16;
     match vertex(ctx.mesh, i as u16, &ctx.model_view, &ctx.mvp, None) {
         Some(v) => {
-            let (outcode, screen) = prepare(&v, vp);
+            let (outcode, screen) = if depth {
+                prepare(&v, vp)
+            } else {
+                prepare_without_depth(&v, vp)
+            };
             c.outcode = outcode;
-            c.screen = screen;
-            c.state = PLACED;
+            c.set_screen(&screen);
+            c.state = if depth { PLACED } else { NO_DEPTH };
         }
         None => c.state = FAILED,
     }
@@ -232,7 +278,7 @@ fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     };
     match vertex_intensity(ctx.mesh, i, &ctx.model_view, l) {
         Some(q) => {
-            c.screen.color = [q; 3];
+            c.color = q;
             c.state = LIT;
         }
         None => c.state = FAILED,

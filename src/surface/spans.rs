@@ -21,6 +21,17 @@
 //!    every band ([`BandStats::rewalked`]); with empty `ranges` this is the plain per-band
 //!    re-walk.
 //!
+//! Storage (bytes; 32-bit targets): a screen triangle in `bins` 104, a [`BandRange`] 2, a
+//! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, plus 512 on
+//! the stack for the per-band id windows. For a 320 x 8 band with 16-bit depth (10,240):
+//!
+//! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
+//! |---|---:|---|---:|---:|
+//! | cube | 12 (6 on screen) | bins (16) | 1,664 + cache 32 x 32 = 1,024 | 18.0 KB |
+//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 128 x 32 = 4,096 | 23.9 KB |
+//! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
+//! | any | n | bins | 104 per screen triangle | |
+//!
 //! Bit-exactness: the band pass gets the very same screen triangles as a whole-frame draw
 //! (the geometry is deterministic), in the same order (triangle ids ascending within each
 //! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
