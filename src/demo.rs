@@ -141,21 +141,45 @@ pub const SPHERE_TRIANGLES: usize = 2208;
 /// The UV sphere: radius 1.5, 24 stacks by 48 slices, vertex `(i, j)` at polar angle
 /// `pi i / 24` from `+y` and azimuth `2 pi j / 48`, uv = `(j / 48, i / 24)`.
 pub fn sphere() -> MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> {
-    let (stacks, slices) = (24u16, 48u16);
+    uv_sphere(24, 48)
+}
+
+/// Vertices of [`fine_sphere`]: 65 stacks by 81 slices.
+pub const FINE_SPHERE_VERTICES: usize = 65 * 81;
+/// Triangles of [`fine_sphere`]: 10,080 (the geometry benchmark's ~10k mesh).
+pub const FINE_SPHERE_TRIANGLES: usize = 10080;
+
+/// The geometry benchmark's large mesh: the same sphere (radius 1.5) with 64 stacks by 80
+/// slices, 5,265 vertices and 10,080 triangles.
+pub fn fine_sphere() -> MeshData<FINE_SPHERE_VERTICES, FINE_SPHERE_TRIANGLES> {
+    uv_sphere(64, 80)
+}
+
+/// A UV sphere of radius 1.5 with `stacks` by `slices` quads: vertex `(i, j)` at polar
+/// angle `pi i / stacks` from `+y` and azimuth `2 pi j / slices`, uv =
+/// `(j / slices, i / stacks)`; one triangle per slice at each pole row, two elsewhere.
+/// `V` must be `(stacks + 1) (slices + 1)` and `T` `2 slices (stacks - 1)`; what does not
+/// fit is left out (never a panic).
+pub fn uv_sphere<const V: usize, const T: usize>(stacks: u16, slices: u16) -> MeshData<V, T> {
     let mut m = MeshData {
-        positions: [Vec3::ZERO; SPHERE_VERTICES],
-        normals: [Vec3::ZERO; SPHERE_VERTICES],
-        uvs: [[Fx::ZERO; 2]; SPHERE_VERTICES],
-        indices: [[0; 3]; SPHERE_TRIANGLES],
+        positions: [Vec3::ZERO; V],
+        normals: [Vec3::ZERO; V],
+        uvs: [[Fx::ZERO; 2]; V],
+        indices: [[0; 3]; T],
     };
+    let (stacks, slices) = (stacks.max(2), slices.max(3));
     let radius = Fx::from_num(1.5);
     for i in 0..=stacks {
-        // pi i / 24 = i / 48 turn; 2^-32-turn angles keep vertices on the exact sub-pixel.
-        let (st, ct) = sin_cos_fx(u32::from(i), 48);
+        // pi i / stacks = i / (2 stacks) turn; 2^-32-turn angles keep vertices on the
+        // exact sub-pixel.
+        let (st, ct) = sin_cos_fx(u32::from(i), 2 * u32::from(stacks));
         for j in 0..=slices {
-            let (sp, cp) = sin_cos_fx(u32::from(j), 48);
+            let (sp, cp) = sin_cos_fx(u32::from(j), u32::from(slices));
             let n = Vec3::new(st.saturating_mul(cp), ct, -st.saturating_mul(sp));
-            let k = usize::from(i * (slices + 1) + j);
+            let k = usize::from(i) * (usize::from(slices) + 1) + usize::from(j);
+            if k >= V {
+                continue;
+            }
             m.normals[k] = n;
             m.positions[k] = n.scale(radius);
             m.uvs[k] = [
@@ -164,21 +188,24 @@ pub fn sphere() -> MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> {
             ];
         }
     }
-    let id = |i: u16, j: u16| i * (slices + 1) + j;
+    let id = |i: u16, j: u16| i.wrapping_mul(slices + 1).wrapping_add(j);
     let mut t = 0;
+    let mut put = |tri: [u16; 3]| {
+        if let Some(slot) = m.indices.get_mut(t) {
+            *slot = tri;
+        }
+        t += 1;
+    };
     for i in 0..stacks {
         for j in 0..slices {
             let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
             if i == 0 {
-                m.indices[t] = [a, b, c];
-                t += 1;
+                put([a, b, c]);
             } else if i == stacks - 1 {
-                m.indices[t] = [a, b, d];
-                t += 1;
+                put([a, b, d]);
             } else {
-                m.indices[t] = [a, b, c];
-                m.indices[t + 1] = [a, c, d];
-                t += 2;
+                put([a, b, c]);
+                put([a, c, d]);
             }
         }
     }

@@ -52,6 +52,15 @@ pub enum Error {
     BadProjection(&'static str),
     /// A draw mode is inconsistent (for example textured shading without a texture).
     BadMode(&'static str),
+    /// A mesh has more elements than its index type can address.
+    MeshTooLarge {
+        /// What there are too many of ("vertices").
+        what: &'static str,
+        /// How many were given.
+        count: usize,
+        /// The most the index type can address.
+        limit: usize,
+    },
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -89,6 +98,10 @@ impl fmt::Display for Error {
             }
             Error::BadProjection(what) => write!(f, "bad projection: {what}"),
             Error::BadMode(what) => write!(f, "bad draw mode: {what}"),
+            Error::MeshTooLarge { what, count, limit } => write!(
+                f,
+                "mesh has {count} {what}, more than the {limit} its u16 indices can address"
+            ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")
             }

@@ -40,8 +40,8 @@
 //! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
 //! | shading | [`shading`] | the [`shading::Shader`] trait (varyings `[i32; N]`, `N <= 8`; RGB565 out or discard); [`shading::TexBinding`] (a texture, filter and wraps as a shader uses them); the built-in shaders |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |
-//! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands; embedded-graphics flush |
-//! | scene | [`scene`] | meshes, camera, per-vertex directional light |
+//! | surfaces (render targets) | [`surface`] | row slices of colour and optional 16-bit depth; bands (screen triangles binned, or a 2-byte band range per mesh triangle for big meshes); embedded-graphics flush |
+//! | scene | [`scene`] | meshes, camera, per-vertex directional light; a geometry walker with a cache of projected vertices that culls before lighting |
 //!
 //! ## Writing a shader
 //!

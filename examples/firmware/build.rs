@@ -12,22 +12,31 @@ fn main() {
     match env::var("CARGO_CFG_TARGET_ARCH").as_deref() {
         Ok("arm") => {
             // The report firmwares need a larger layout (see memory-report.x).
-            let memory: &[u8] = if env::var("FIXEL_FW_MEMORY").as_deref() == Ok("report") {
-                include_bytes!("memory-report.x")
-            } else {
-                include_bytes!("memory-default.x")
+            let memory: &[u8] = match env::var("FIXEL_FW_MEMORY").as_deref() {
+                Ok("report") => include_bytes!("memory-report.x"),
+                Ok("whole") => include_bytes!("memory-whole.x"),
+                _ => include_bytes!("memory-default.x"),
             };
             fs::write(out.join("memory.x"), memory).unwrap();
             println!("cargo:rustc-link-search={}", out.display());
             println!("cargo:rustc-link-arg=-Tlink.x");
         }
-        Ok("riscv32") => println!("cargo:rustc-link-arg=-T{dir}/link.ld"),
+        Ok("riscv32") => {
+            let script = if env::var("FIXEL_FW_MEMORY").as_deref() == Ok("whole") {
+                "link-whole.ld"
+            } else {
+                "link.ld"
+            };
+            println!("cargo:rustc-link-arg=-T{dir}/{script}");
+        }
         _ => {}
     }
     // (Not named memory.x in the crate root: the linker would find that one first, in its
     // working directory, whatever OUT_DIR holds.)
     println!("cargo:rerun-if-changed=memory-default.x");
     println!("cargo:rerun-if-changed=memory-report.x");
+    println!("cargo:rerun-if-changed=memory-whole.x");
+    println!("cargo:rerun-if-changed=link-whole.ld");
     println!("cargo:rerun-if-env-changed=FIXEL_FW_MEMORY");
     println!("cargo:rerun-if-changed=link.ld");
     println!("cargo:rerun-if-changed=build.rs");
@@ -57,6 +66,15 @@ fn main() {
     }
 
     let s = fixel::demo::sphere();
+    fs::write(out.join("sphere.rs"), mesh_source(&s)).unwrap();
+    // The geometry benchmark's ~10k-triangle mesh (flash: ~230 KB; whole-layout builds only
+    // link it).
+    let f = Box::new(fixel::demo::fine_sphere());
+    fs::write(out.join("fine_sphere.rs"), mesh_source(&f)).unwrap();
+}
+
+/// A `MeshData { … }` literal of `s` (I16F16 bits through `v`/`uv`).
+fn mesh_source<const V: usize, const T: usize>(s: &fixel::demo::MeshData<V, T>) -> String {
     let mut src = String::from("MeshData {\n positions: [");
     for p in &s.positions {
         let _ = write!(
@@ -86,5 +104,5 @@ fn main() {
         let _ = write!(src, "[{a},{b},{c}],");
     }
     src.push_str("],\n}\n");
-    fs::write(out.join("sphere.rs"), src).unwrap();
+    src
 }

@@ -13,7 +13,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
-use scenes::{Buffers, Fnv1a, FrameResult};
+use scenes::{Fnv1a, FrameResult, SmallBuffers, SphereBuffers, Target, Whole, WholeTarget};
 
 fn texture(w: u32, h: u32) -> Vec<Rgb565> {
     let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
@@ -56,15 +56,36 @@ fn print(scene: &str, r: &FrameResult) {
     );
 }
 
+/// The whole-frame firmware (`whole_<scene>`) must give the band firmware's frame.
+fn print_whole(scene: &str, r: &FrameResult, w: &FrameResult) {
+    assert_eq!(
+        (w.checksum, w.stats.pixels),
+        (r.checksum, r.stats.pixels),
+        "{scene}: the whole-frame walker differs from the bands"
+    );
+    print(&format!("whole_{scene}"), w);
+}
+
 #[test]
 fn mcu_frames() {
-    let mut buf = Box::new(Buffers::new());
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let mut small = Box::new(SmallBuffers::with_storage());
+    let mut whole_buf = Box::new(Whole::new());
     let (mut nop1, mut nop2) = (|| {}, || {});
 
     let t128 = texture(128, 128);
     let tex = Texture::new(&t128, 128, 128).unwrap();
-    let r = scenes::cube(&mut buf, tex, 0, &mut nop1, &mut nop2).unwrap();
+    let r = scenes::cube(Target::Bands(&mut *small), tex, 0, &mut nop1, &mut nop2).unwrap();
     print("cube", &r);
+    let wr = scenes::cube(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("cube", &r, &wr);
     assert!(!r.stats.rewalked);
     let cube = demo::cube();
     let w = whole::<scenes::Lit>(tex, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);
@@ -78,8 +99,27 @@ fn mcu_frames() {
     let tex = Texture::new(&t256, 256, 128).unwrap();
     let sphere = Box::new(demo::sphere());
     let mesh = sphere.mesh().unwrap();
-    let r = scenes::sphere(&mut buf, tex, &mesh, 0, &mut nop1, &mut nop2).unwrap();
+    let r = scenes::sphere(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
     print("sphere", &r);
+    assert!(r.stats.reprojected && !r.stats.rewalked, "{:?}", r.stats);
+    let wr = scenes::sphere(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("sphere", &r, &wr);
     let w = whole::<scenes::Lit>(tex, &mesh, &demo::sphere_model(0), 20, true);
     assert_eq!(
         w,
@@ -91,8 +131,22 @@ fn mcu_frames() {
     let tex = Texture::new(&t64, 64, 64).unwrap();
     let floor = demo::floor();
     let fm = floor.mesh().unwrap();
-    let r = scenes::floor::<scenes::FloorNearest>(&mut buf, tex, &mut nop1, &mut nop2).unwrap();
+    let r = scenes::floor::<scenes::FloorNearest, _, _, _>(
+        Target::Bands(&mut *small),
+        tex,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
     print("floor", &r);
+    let wr = scenes::floor::<scenes::FloorNearest, _, _, _>(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("floor", &r, &wr);
     let w = whole::<scenes::FloorNearest>(tex, &fm, &Mat4::IDENTITY, 200, false);
     assert_eq!(
         w,
@@ -100,8 +154,22 @@ fn mcu_frames() {
         "floor: bands differ from the whole frame"
     );
 
-    let r = scenes::floor::<scenes::FloorBilinear>(&mut buf, tex, &mut nop1, &mut nop2).unwrap();
+    let r = scenes::floor::<scenes::FloorBilinear, _, _, _>(
+        Target::Bands(&mut *small),
+        tex,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
     print("floor_bilinear", &r);
+    let wr = scenes::floor::<scenes::FloorBilinear, _, _, _>(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("floor_bilinear", &r, &wr);
     let w = whole::<scenes::FloorBilinear>(tex, &fm, &Mat4::IDENTITY, 200, false);
     assert_eq!(
         w,

@@ -165,33 +165,75 @@ pub fn clip_and_project_varyings<const N: usize>(
     }
     let mut screen = [ScreenVertex::<N>::default(); MAX_POLY];
     for (s, a) in screen.iter_mut().zip(&poly[..n]) {
-        let w = a.p[3].max(W_MIN_BITS);
-        let (x, y, z) = vp.project(a.p[0], a.p[1], a.p[2], w);
-        *s = ScreenVertex {
-            x,
-            y,
-            z,
-            w,
-            varyings: a.v,
-        };
+        *s = project_attr(a, vp);
     }
     for i in 1..n - 1 {
         let t = [screen[0], screen[i], screen[i + 1]];
-        let area2 = (i64::from(t[1].x) - i64::from(t[0].x))
-            * (i64::from(t[2].y) - i64::from(t[0].y))
-            - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
-        // y points down on screen, so counter-clockwise in NDC (front) has negative area.
-        let front = area2 < 0;
-        let skip = area2 == 0
-            || match cull {
-                Cull::None => false,
-                Cull::Back => !front,
-                Cull::Front => front,
-            };
-        if !skip {
+        if keeps(&t, cull) {
             emit(&t);
         }
     }
+}
+
+/// Perspective divide and viewport mapping of one clip-space vertex (`w` raised to
+/// [`W_MIN_BITS`]).
+fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
+    let w = a.p[3].max(W_MIN_BITS);
+    let (x, y, z) = vp.project(a.p[0], a.p[1], a.p[2], w);
+    ScreenVertex {
+        x,
+        y,
+        z,
+        w,
+        varyings: a.v,
+    }
+}
+
+/// Whether a projected triangle survives culling: non-zero area and, per `cull`, the
+/// wanted winding (sub-pixel coordinates, exact `i64` area).
+pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
+    let area2 = (i64::from(t[1].x) - i64::from(t[0].x)) * (i64::from(t[2].y) - i64::from(t[0].y))
+        - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
+    // y points down on screen, so counter-clockwise in NDC (front) has negative area.
+    let front = area2 < 0;
+    area2 != 0
+        && match cull {
+            Cull::None => true,
+            Cull::Back => front,
+            Cull::Front => !front,
+        }
+}
+
+/// One vertex prepared for [`clip_and_project`]'s unclipped case: its outcode (the planes
+/// it violates, 0 when inside the view volume and guard band) and its projection. When the
+/// three vertices of a triangle have outcode 0, `clip_and_project` emits exactly
+/// `[a.screen, b.screen, c.screen]` if [`keeps`] holds, so a caller that caches prepared
+/// vertices gets the same screen triangles without projecting a shared vertex again.
+pub fn prepare(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
+    let a = attr(&v.to_vertex());
+    (outcode(&a, vp.guard), project_attr(&a, vp))
+}
+
+/// [`prepare`] without the depth division: the screen vertex's `z` holds the *clip-space*
+/// `z` (I16F16 bits) until [`complete_depth`] replaces it. For passes that need only rows
+/// and winding (band binning).
+pub fn prepare_without_depth(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
+    let a = attr(&v.to_vertex());
+    let w = a.p[3].max(W_MIN_BITS);
+    let (x, y) = vp.project_xy(a.p[0], a.p[1], w);
+    let s = ScreenVertex {
+        x,
+        y,
+        z: a.p[2],
+        w,
+        varyings: a.v,
+    };
+    (outcode(&a, vp.guard), s)
+}
+
+/// Turns a vertex from [`prepare_without_depth`] into what [`prepare`] gives.
+pub fn complete_depth<const N: usize>(s: &mut ScreenVertex<N>, vp: &Viewport) {
+    s.z = vp.project_z(s.z, s.w);
 }
 
 #[cfg(test)]

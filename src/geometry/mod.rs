@@ -15,6 +15,9 @@ pub mod clip;
 pub mod vertex;
 pub mod viewport;
 
-pub use clip::{clip_and_project, clip_and_project_varyings};
+pub use clip::{
+    clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
+    prepare_without_depth,
+};
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

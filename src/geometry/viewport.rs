@@ -8,6 +8,7 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
+use crate::math::{div_floor_i64, div_round_i64};
 use crate::raster::{Rect, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_ONE};
 use crate::Error;
 
@@ -84,6 +85,12 @@ impl Viewport {
     /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)` and a
     /// depth in `0..=65535 << 14`.
     pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, i32) {
+        let (sx, sy) = self.project_xy(x, y, w);
+        (sx, sy, depth(z, i64::from(w.max(1))))
+    }
+
+    /// The screen `(x, y)` part of [`project`](Self::project).
+    pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32) {
         let w = i64::from(w.max(1));
         let one = i64::from(SUBPIXEL_ONE);
         let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
@@ -96,28 +103,36 @@ impl Viewport {
         // would snap a mesh moved by whole pixels to a different shape.
         let sx = (cx + round_half_up(i64::from(x) * hw, w)).clamp(-lim, lim);
         let sy = (cy + round_half_up(-(i64::from(y) * hh), w)).clamp(-lim, lim);
-        // depth = (z/w + 1)/2 * 65535, 14 fraction bits: 65535 * 2^13 * (z/w + 1).
-        let k = 65535i64 << 13;
-        let d = (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14);
-        (sx as i32, sy as i32, d as i32)
+        (sx as i32, sy as i32)
+    }
+
+    /// The depth part of [`project`](Self::project) alone (the walker's binning pass
+    /// needs only rows and winding, and completes the depth when a band needs it).
+    pub(crate) fn project_z(&self, z: i32, w: i32) -> i32 {
+        depth(z, i64::from(w.max(1)))
     }
 }
 
-/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`.
+/// Window depth of clip `z` at `w > 0`: `(z/w + 1)/2 * 65535` with 14 fraction bits,
+/// `65535 * 2^13 * (z/w + 1)`, rounded and clamped to `0..=65535 << 14`.
+#[inline]
+fn depth(z: i32, w: i64) -> i32 {
+    let k = 65535i64 << 13;
+    (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14) as i32
+}
+
+/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`. Exact, through
+/// the 32-bit paths of [`crate::math::div`] when the operands are small (the common case:
+/// about 3x fewer instructions on Cortex-M than a 64-bit division).
 #[inline]
 fn round_half_up(n: i64, d: i64) -> i64 {
-    (2 * n + d).div_euclid(2 * d)
+    div_floor_i64(2 * n + d, 2 * d)
 }
 
 /// `n / d` rounded to nearest, ties away from zero; `d > 0`.
 #[inline]
 pub(crate) fn div_round(n: i64, d: i64) -> i64 {
-    let half = d / 2;
-    if n >= 0 {
-        (n + half) / d
-    } else {
-        -((half - n) / d)
-    }
+    div_round_i64(n, d)
 }
 
 #[cfg(test)]

@@ -22,6 +22,7 @@
 //!   across the viewport.
 
 use super::{Rect, SUBPIXEL_BITS, SUBPIXEL_ONE};
+use crate::math::SmallDivisor;
 
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
@@ -37,6 +38,11 @@ pub struct PlaneSetup {
     /// Offset of the reference pixel centre from vertex 0, sub-pixel units.
     ref_dx: i64,
     ref_dy: i64,
+    /// `|area2|` as a reciprocal when below 2^16 (small triangles), on cores without a
+    /// divide instruction only: with one, 32-bit divisions are cheaper than the multiply
+    /// and correction (measured on Cortex-M4F).
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    small: Option<SmallDivisor>,
     /// Reference pixel.
     pub px_ref: i32,
     /// Reference row.
@@ -71,6 +77,8 @@ impl PlaneSetup {
             area2,
             ref_dx: i64::from(px_ref) * one + half - x0,
             ref_dy: i64::from(py_ref) * one + half - y0,
+            #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+            small: SmallDivisor::new(area2.unsigned_abs()),
             px_ref,
             py_ref,
         })
@@ -82,23 +90,45 @@ impl PlaneSetup {
         self.area2
     }
 
+    /// `n / area2` rounded to nearest, ties away from zero (as [`div_round`]), through the
+    /// reciprocal when the area is small.
+    #[inline]
+    fn div_round(&self, n: i64) -> i64 {
+        #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+        let small: Option<SmallDivisor> = None;
+        #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+        let small = self.small;
+        let Some(s) = small else {
+            return div_round(n, self.area2);
+        };
+        let (n, d) = if self.area2 < 0 {
+            (n.wrapping_neg(), -self.area2)
+        } else {
+            (n, self.area2)
+        };
+        let half = d / 2;
+        if n >= 0 {
+            s.div(n.wrapping_add(half) as u64) as i64
+        } else {
+            (s.div(half.wrapping_sub(n) as u64) as i64).wrapping_neg()
+        }
+    }
+
     /// The plane through the attribute values `a` at the three vertices.
     pub fn plane(&self, a: [i32; 3]) -> Plane {
         let da1 = i64::from(a[1]) - i64::from(a[0]);
         let da2 = i64::from(a[2]) - i64::from(a[0]);
         // d a / d x and d a / d y in units per sub-pixel, times area2.
-        let nx = da1 * self.dy2 - da2 * self.dy1;
-        let ny = da2 * self.dx1 - da1 * self.dx2;
+        let nx = mul(da1, self.dy2) - mul(da2, self.dy1);
+        let ny = mul(da2, self.dx1) - mul(da1, self.dx2);
         // Per pixel (<< SUBPIXEL_BITS) with EXTRA more fraction bits.
         let shift = SUBPIXEL_BITS + EXTRA;
-        let gx = div_round(nx << shift, self.area2);
-        let gy = div_round(ny << shift, self.area2);
+        let gx = self.div_round(nx << shift);
+        let gy = self.div_round(ny << shift);
         // Value at the reference centre: a0 + (gx ref_dx + gy ref_dy) / 2^(EXTRA + SUBPIXEL_BITS)
         // (gx is per pixel, ref_dx in sub-pixels).
         // Wrapping is exact modulo 2^64, hence modulo 2^32 after the shift.
-        let off = gx
-            .wrapping_mul(self.ref_dx)
-            .wrapping_add(gy.wrapping_mul(self.ref_dy));
+        let off = mul(gx, self.ref_dx).wrapping_add(mul(gy, self.ref_dy));
         let round = 1i64 << (EXTRA + SUBPIXEL_BITS - 1);
         let a_ref =
             i64::from(a[0]).wrapping_add(off.wrapping_add(round) >> (EXTRA + SUBPIXEL_BITS));
@@ -112,6 +142,37 @@ impl PlaneSetup {
 }
 
 /// `n / d` rounded to nearest (ties away from zero), `d != 0`.
+/// `a * b` (wrapping), exactly. On ARMv6-M, where a 64-bit product is a library call
+/// (`__aeabi_lmul`), the common case of `a` within `i32` and `b` within `i16` is two 32-bit
+/// multiplies: with `a = ah 2^16 + al`, `a b = (ah b) 2^16 + al b`, both products in `i32`.
+#[inline(always)]
+fn mul(a: i64, b: i64) -> i64 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        mul_split(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        a.wrapping_mul(b)
+    }
+}
+
+/// The 32-bit-multiply form of [`mul`] (compiled everywhere so every target tests it).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn mul_split(a: i64, b: i64) -> i64 {
+    if a as i32 as i64 == a && b as i16 as i64 == b {
+        let (a, b) = (a as i32, b as i32);
+        let (ah, al) = (a >> 16, a & 0xFFFF);
+        (i64::from(ah * b) << 16) + i64::from(al * b)
+    } else {
+        a.wrapping_mul(b)
+    }
+}
+
 #[inline]
 fn div_round(n: i64, d: i64) -> i64 {
     let (n, d) = if d < 0 {
@@ -119,12 +180,9 @@ fn div_round(n: i64, d: i64) -> i64 {
     } else {
         (n, d)
     };
-    let half = d / 2;
-    if n >= 0 {
-        (n + half) / d
-    } else {
-        -((half - n) / d)
-    }
+    // Exact; 32-bit divisions when the doubled area is below 2^16 (small triangles, where
+    // the set-up is most of a triangle's cost).
+    crate::math::div_round_i64(n, d)
 }
 
 /// An attribute's screen-space plane, in the attribute's own fixed-point format.
@@ -161,6 +219,35 @@ mod tests {
         let l1 = ((x - p0.0) * (p2.1 - p0.1) - (p2.0 - p0.0) * (y - p0.1)) / area;
         let l2 = ((p1.0 - p0.0) * (y - p0.1) - (x - p0.0) * (p1.1 - p0.1)) / area;
         a[0] as f64 + l1 * (a[1] as f64 - a[0] as f64) + l2 * (a[2] as f64 - a[0] as f64)
+    }
+
+    #[test]
+    fn split_multiply_is_exact() {
+        let vals = [
+            0i64,
+            1,
+            -1,
+            32767,
+            -32768,
+            32768,
+            -32769,
+            i32::MAX as i64,
+            i32::MIN as i64,
+        ];
+        for &a in vals.iter().chain(&[1 << 40, -(1 << 33) + 7]) {
+            for &b in &vals {
+                assert_eq!(mul_split(a, b), a.wrapping_mul(b), "{a} * {b}");
+            }
+        }
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let a = (x as i64) >> (x % 40);
+            let b = ((x >> 20) as i64) >> (20 + (x >> 58));
+            assert_eq!(mul_split(a, b), a.wrapping_mul(b), "{a} * {b}");
+        }
     }
 
     #[test]

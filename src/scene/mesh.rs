@@ -16,15 +16,16 @@ use super::{Camera, DirectionalLight};
 /// seen from its front.
 #[derive(Clone, Copy, Debug)]
 pub struct Mesh<'a> {
-    positions: &'a [Vec3],
-    normals: Option<&'a [Vec3]>,
-    uvs: &'a [[Fx; 2]],
-    indices: &'a [[u16; 3]],
+    pub(super) positions: &'a [Vec3],
+    pub(super) normals: Option<&'a [Vec3]>,
+    pub(super) uvs: &'a [[Fx; 2]],
+    pub(super) indices: &'a [[u16; 3]],
 }
 
 impl<'a> Mesh<'a> {
     /// Validates and wraps the slices: `normals` (if any) and `uvs` must have one entry per
-    /// position, and every index must be in range.
+    /// position, every index must be in range, and there must be at most 65536 positions
+    /// (what a `u16` index can reach: [`Error::MeshTooLarge`] otherwise).
     pub fn new(
         positions: &'a [Vec3],
         normals: Option<&'a [Vec3]>,
@@ -32,6 +33,13 @@ impl<'a> Mesh<'a> {
         indices: &'a [[u16; 3]],
     ) -> Result<Self, Error> {
         let n = positions.len();
+        if n > 1 << 16 {
+            return Err(Error::MeshTooLarge {
+                what: "vertices",
+                count: n,
+                limit: 1 << 16,
+            });
+        }
         if let Some(nm) = normals {
             if nm.len() != n {
                 return Err(Error::WrongLength {
@@ -72,7 +80,7 @@ impl<'a> Mesh<'a> {
 }
 
 /// One vertex to clip space, lit if there is a light and a normal. `None` on overflow.
-fn vertex(
+pub(super) fn vertex(
     mesh: &Mesh<'_>,
     i: u16,
     model_view: &Mat4,
@@ -82,27 +90,40 @@ fn vertex(
     let i = usize::from(i);
     let p = mvp.transform_point(*mesh.positions.get(i)?)?;
     let uv = *mesh.uvs.get(i)?;
-    let intensity = match (light, mesh.normals) {
-        (Some(l), Some(nm)) => {
-            let n = model_view.transform_vector(*nm.get(i)?)?;
-            // A rotation keeps unit normals unit: renormalise (a square root and a
-            // reciprocal) only when the length is off by more than 2^-12, which changes
-            // the intensity by less than its Q8 step.
-            let off = (n.length_squared_bits() as i64 - (1i64 << 32)).unsigned_abs();
-            let n = if off < 1 << 20 {
-                n
-            } else {
-                n.normalize().unwrap_or(Vec3::ZERO)
-            };
-            l.intensity(n)
-        }
-        _ => COLOR_ONE,
+    let intensity = match light {
+        Some(l) => vertex_intensity(mesh, i, model_view, l)?,
+        None => COLOR_ONE,
     };
     Some(ClipVertex {
         position: [p.x, p.y, p.z, p.w],
         uv,
         color: [intensity; 3],
     })
+}
+
+/// Per-vertex Gouraud intensity of vertex `i` (Q8, `0..=256`) under `light`, its normal
+/// taken to view space by `model_view`; [`COLOR_ONE`] when the mesh has no normals. `None`
+/// when the normal overflows the fixed-point range (its triangles are skipped).
+pub fn vertex_intensity(
+    mesh: &Mesh<'_>,
+    i: usize,
+    model_view: &Mat4,
+    light: &DirectionalLight,
+) -> Option<u16> {
+    let Some(nm) = mesh.normals else {
+        return Some(COLOR_ONE);
+    };
+    let n = model_view.transform_vector(*nm.get(i)?)?;
+    // A rotation keeps unit normals unit: renormalise (a square root and a
+    // reciprocal) only when the length is off by more than 2^-12, which changes
+    // the intensity by less than its Q8 step.
+    let off = (n.length_squared_bits() as i64 - (1i64 << 32)).unsigned_abs();
+    let n = if off < 1 << 20 {
+        n
+    } else {
+        n.normalize().unwrap_or(Vec3::ZERO)
+    };
+    Some(light.intensity(n))
 }
 
 /// Like [`mesh_triangles`], but transforms and lights each vertex once into `cache`

@@ -32,7 +32,11 @@
 mod camera;
 mod light;
 mod mesh;
+mod walk;
 
 pub use camera::Camera;
 pub use light::DirectionalLight;
-pub use mesh::{draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, Mesh};
+pub use mesh::{
+    draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
+};
+pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};

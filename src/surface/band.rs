@@ -28,9 +28,35 @@ use crate::Error;
 /// One binned triangle: screen vertices, the draw it belongs to, and its pixel rows.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Binned {
-    tri: ScreenTriangle,
-    draw: u8,
-    rows: (i16, i16),
+    pub(super) tri: ScreenTriangle,
+    pub(super) draw: u8,
+    pub(super) rows: (i16, i16),
+}
+
+impl Binned {
+    /// `tri` of draw `draw`, with its conservative pixel-row range.
+    pub(super) fn new(draw: u8, tri: &ScreenTriangle) -> Self {
+        let (r0, r1) = rows_of(tri);
+        let c = |r: i32| r.clamp(i16::MIN.into(), i16::MAX.into()) as i16;
+        Binned {
+            tri: *tri,
+            draw,
+            rows: (c(r0), c(r1)),
+        }
+    }
+
+    /// Whether the triangle may cover a row of `first..=last`.
+    pub(super) fn meets(&self, first: i32, last: i32) -> bool {
+        i32::from(self.rows.1) >= first && i32::from(self.rows.0) <= last
+    }
+}
+
+/// Pixel rows of a screen triangle: the rasterizer draws rows `r0..r1` (`r1` excluded), the
+/// first rows whose centres are at or below its top and its bottom.
+pub(super) fn rows_of(tri: &ScreenTriangle) -> (i32, i32) {
+    let top = tri[0].y.min(tri[1].y).min(tri[2].y);
+    let bot = tri[0].y.max(tri[1].y).max(tri[2].y);
+    (first_row_at_or_below(top), first_row_at_or_below(bot))
 }
 
 /// What a frame cost, for reports.
@@ -40,8 +66,13 @@ pub struct BandStats {
     pub bands: u32,
     /// Screen triangles binned (after clipping and culling).
     pub triangles: u32,
-    /// True when the bins overflowed and the geometry ran once per band instead.
+    /// True when the storage overflowed and (some of) the geometry ran in every band: with
+    /// [`BandRenderer::render`], the bins were full; with [`BandRenderer::render_spans`],
+    /// triangles past the end of the band-range storage.
     pub rewalked: bool,
+    /// True when [`BandRenderer::render_spans`] could not keep the screen triangles in the
+    /// bins and re-projected each triangle in the bands its stored range covers.
+    pub reprojected: bool,
     /// Pixels written (with a depth test: that passed it).
     pub pixels: u32,
 }
@@ -77,15 +108,7 @@ impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
                 overflow,
             } => {
                 if let Some(slot) = bins.get_mut(*len) {
-                    let top = tri[0].y.min(tri[1].y).min(tri[2].y);
-                    let bot = tri[0].y.max(tri[1].y).max(tri[2].y);
-                    let r0 = first_row_at_or_below(top).clamp(i16::MIN.into(), i16::MAX.into());
-                    let r1 = first_row_at_or_below(bot).clamp(i16::MIN.into(), i16::MAX.into());
-                    *slot = Binned {
-                        tri: *tri,
-                        draw,
-                        rows: (r0 as i16, r1 as i16),
-                    };
+                    *slot = Binned::new(draw, tri);
                     *len += 1;
                 } else {
                     *overflow = true;
@@ -110,8 +133,8 @@ pub struct BandRenderer<'b, C> {
     color: &'b mut [C],
     depth: Option<&'b mut [u16]>,
     width: u32,
-    rows: u32,
-    height: u32,
+    pub(super) rows: u32,
+    pub(super) height: u32,
 }
 
 impl<'b, C: TargetColor> BandRenderer<'b, C> {
@@ -196,8 +219,49 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
             triangles: len as u32,
             ..BandStats::default()
         };
+        self.each_band(&mut stats, clear, &mut flush, |band, _| {
+            if overflow {
+                let mut s = TriangleSink {
+                    mode: SinkMode::Immediate {
+                        draws,
+                        band,
+                        pixels: 0,
+                    },
+                };
+                geometry(&mut s);
+                match s.mode {
+                    SinkMode::Immediate { pixels, .. } => pixels,
+                    SinkMode::Bin { .. } => 0,
+                }
+            } else {
+                let (r0, r1) = band.row_range();
+                let mut pixels = 0;
+                for b in bins[..len].iter() {
+                    if !b.meets(r0, r1) {
+                        continue;
+                    }
+                    if let Some(d) = draws.get(usize::from(b.draw)) {
+                        pixels += d.screen_triangle(&b.tri, band);
+                    }
+                }
+                pixels
+            }
+        })?;
+        Ok(stats)
+    }
+
+    /// Runs `draw_band` on each band in turn (band index from 0, frame rows `y0..`), after
+    /// clearing it to `clear`, then flushes it; counts bands and pixels in `stats`.
+    pub(super) fn each_band<E>(
+        &mut self,
+        stats: &mut BandStats,
+        clear: C,
+        flush: &mut impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+        mut draw_band: impl FnMut(&mut Frame<'_, C>, u32) -> u32,
+    ) -> Result<(), E> {
         let need = self.width as usize * self.rows as usize;
         let mut y0 = 0;
+        let mut index = 0;
         while y0 < self.height {
             let rows = self.rows.min(self.height - y0);
             let n = self.width as usize * rows as usize;
@@ -213,34 +277,13 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
             }
             let mut band = band.at_row(y0);
             band.clear(clear);
-            if overflow {
-                let mut s = TriangleSink {
-                    mode: SinkMode::Immediate {
-                        draws,
-                        band: &mut band,
-                        pixels: 0,
-                    },
-                };
-                geometry(&mut s);
-                if let SinkMode::Immediate { pixels, .. } = s.mode {
-                    stats.pixels += pixels;
-                }
-            } else {
-                let (r0, r1) = band.row_range();
-                for b in bins[..len].iter() {
-                    if i32::from(b.rows.1) < r0 || i32::from(b.rows.0) > r1 {
-                        continue;
-                    }
-                    if let Some(d) = draws.get(usize::from(b.draw)) {
-                        stats.pixels += d.screen_triangle(&b.tri, &mut band);
-                    }
-                }
-            }
+            stats.pixels += draw_band(&mut band, index);
             flush(&band)?;
             stats.bands += 1;
+            index += 1;
             y0 += rows;
         }
-        Ok(stats)
+        Ok(())
     }
 }
 

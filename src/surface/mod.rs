@@ -9,12 +9,15 @@
 //!   framebuffer; with fewer rows it is a *band* (see [`band`]).
 //! * [`band`]: draws a frame as horizontal bands through a small buffer and flushes each to
 //!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
+//! * [`spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 
 pub mod band;
 pub mod frame;
+pub mod spans;
 
 pub use band::{BandRenderer, DrawTargetFlush};
 pub use frame::{Frame, DEPTH_CLEAR};
+pub use spans::{BandRange, MeshSink};
 
 use crate::color::TargetColor;
 

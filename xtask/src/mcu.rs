@@ -31,11 +31,13 @@ const MCUS: [Mcu; 3] = [
         machine: &["-machine", "mps2-an386"],
         core: "m4",
     },
+    // mps2-an386 rather than the microbit (nRF51: 16K of RAM, below the 24K band bar);
+    // ARMv6-M code runs unchanged on the M4 model and counts depend on the instructions only.
     Mcu {
         label: "Cortex-M0+",
         triple: "thumbv6m-none-eabi",
         qemu: "qemu-system-arm",
-        machine: &["-machine", "microbit"],
+        machine: &["-machine", "mps2-an386"],
         core: "m0plus",
     },
     Mcu {
@@ -49,6 +51,109 @@ const MCUS: [Mcu; 3] = [
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
 const SCENES: [&str; 4] = ["cube", "sphere", "floor", "floor_bilinear"];
+
+/// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
+/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers.
+const WHOLE_SCENES: [&str; 4] = [
+    "whole_cube",
+    "whole_sphere",
+    "whole_floor",
+    "whole_floor_bilinear",
+];
+
+/// The whole-frame firmwares' machines: `mps2-an386` (4M + 4M SSRAM) for both Arm builds
+/// (ARMv6-M code runs unchanged on the M4 model; counts depend on the instruction stream
+/// only) and RV32 `virt` (128 MB).
+const WHOLE_MCUS: [Mcu; 3] = [
+    Mcu {
+        label: "Cortex-M4F",
+        triple: "thumbv7em-none-eabihf",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m4",
+    },
+    Mcu {
+        label: "Cortex-M0+",
+        triple: "thumbv6m-none-eabi",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m0plus",
+    },
+    Mcu {
+        label: "RV32IMC",
+        triple: "riscv32imc-unknown-none-elf",
+        qemu: "qemu-system-riscv32",
+        machine: &["-machine", "virt", "-bios", "none"],
+        core: "rv32",
+    },
+];
+
+/// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
+/// directory so the default build's artefacts stay).
+fn build_whole(td: &Path) -> Result<(), String> {
+    let mut cmd = Command::new("cargo");
+    cmd.current_dir(firmware_dir())
+        .args(["build", "--release", "--features", "whole"])
+        .arg("--target-dir")
+        .arg(td)
+        .env("FIXEL_FW_MEMORY", "whole")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("CARGO_TARGET_DIR");
+    for b in WHOLE_SCENES.iter().chain(&["geometry"]) {
+        cmd.args(["--bin", b]);
+    }
+    for m in &WHOLE_MCUS {
+        cmd.args(["--target", m.triple]);
+    }
+    run_visible(
+        &mut cmd,
+        "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
+         --target-dir target/whole --bin whole_* --bin geometry --target <3 MCU targets>)",
+    )
+}
+
+/// The geometry firmware on each MCU: a table of instructions per item and stage.
+fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, String> {
+    let mut per: BTreeMap<(String, String), Vec<String>> = BTreeMap::new();
+    let mut order: Vec<(String, String)> = Vec::new();
+    let mut items: BTreeMap<(String, String), u64> = BTreeMap::new();
+    for m in &WHOLE_MCUS {
+        let v = measure_modes(llvm, plugin, m, &elf(td, m, "geometry"))?;
+        for c in v {
+            let key = (c.scene.clone(), c.mode.clone());
+            if !order.contains(&key) {
+                order.push(key.clone());
+            }
+            items.insert(key.clone(), c.pixels);
+            per.entry(key).or_default().push(format!(
+                "{:.1}",
+                c.instructions as f64 / c.pixels.max(1) as f64
+            ));
+        }
+    }
+    let mut t = String::from(
+        "| mesh | stage | per | items | Cortex-M4F | Cortex-M0+ | RV32IMC |\n|---|---|---|---:|---:|---:|---:|\n",
+    );
+    for key in &order {
+        let unit = match key.1.as_str() {
+            "transform" | "lighting" | "project" => "vertex",
+            "cull" | "walk" => "mesh triangle",
+            "clip" => "crossing triangle",
+            _ => "kept triangle",
+        };
+        let v = per.get(key).cloned().unwrap_or_default();
+        t.push_str(&format!(
+            "| {} | {} | {unit} | {} | {} |\n",
+            key.0,
+            key.1,
+            items.get(key).copied().unwrap_or(0),
+            v.join(" | ")
+        ));
+    }
+    Ok(t)
+}
 
 /// Size firmwares, in the order of the table.
 const SIZES: [(&str, &str); 7] = [
@@ -394,11 +499,11 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
             m.insert(s.to_string(), (c.to_string(), p));
         }
     }
-    if m.len() != SCENES.len() {
+    if m.len() != SCENES.len() + WHOLE_SCENES.len() {
         return Err(format!(
             "host test printed {} expected checksums, wanted {}",
             m.len(),
-            SCENES.len()
+            SCENES.len() + WHOLE_SCENES.len()
         ));
     }
     Ok(m)
@@ -611,6 +716,10 @@ pub fn mcu(rest: &[String]) -> ExitCode {
         }
     }
     let td = firmware_dir().join("target");
+    let td_whole = firmware_dir().join("target").join("whole");
+    if let Err(e) = build_whole(&td_whole) {
+        return fail(e);
+    }
 
     let mut report = String::new();
     let mut problems = Vec::new();
@@ -627,9 +736,14 @@ pub fn mcu(rest: &[String]) -> ExitCode {
         report.push_str("---:|");
     }
     report.push('\n');
-    for scene in SCENES {
-        for m in &MCUS {
-            let e = elf(&td, m, scene);
+    let mut per_px: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
+    let sets = SCENES
+        .iter()
+        .map(|s| (*s, &MCUS, &td))
+        .chain(WHOLE_SCENES.iter().map(|s| (*s, &WHOLE_MCUS, &td_whole)));
+    for (scene, mcus, td) in sets {
+        for m in mcus.iter() {
+            let e = elf(td, m, scene);
             let (r, seen) = match measure(&llvm, &plugin, m, &e, flags.runs) {
                 Ok(x) => x,
                 Err(err) => {
@@ -662,6 +776,7 @@ pub fn mcu(rest: &[String]) -> ExitCode {
                     .join(" | ")
             ));
             let px = r.pixels.max(1) as f64;
+            per_px.insert((scene.to_string(), m.label), r.net as f64 / px);
             report.push_str(&format!(
                 "| {scene}{} | {} | {:.2} | {:.1} | {} | {} | {} | {} | {} ({} + {}) |",
                 if r.rewalked { " (rewalk)" } else { "" },
@@ -677,9 +792,13 @@ pub fn mcu(rest: &[String]) -> ExitCode {
                 r.stack,
             ));
             if flags.opt_s {
-                let f = sizes(&llvm, &elf(&opt_s_dir, m, scene))
-                    .map(|(f, _)| f.to_string())
-                    .unwrap_or_else(|_| "?".into());
+                let f = if *td == td_whole {
+                    "-".to_string()
+                } else {
+                    sizes(&llvm, &elf(&opt_s_dir, m, scene))
+                        .map(|(f, _)| f.to_string())
+                        .unwrap_or_else(|_| "?".into())
+                };
                 report.push_str(&format!(" {f} |"));
             }
             report.push('\n');
@@ -709,6 +828,28 @@ pub fn mcu(rest: &[String]) -> ExitCode {
          flash); RAM = data + bss + measured stack high-water mark (band buffers are on the stack).\n"
     );
     print!("{report}");
+    println!(
+        "\nwhole_* = the same frame drawn into one 320x240 frame (colour + 16-bit depth, \
+         300 KiB) with one prepared vertex per mesh vertex, on mps2-an386 (both Arm builds) \
+         and RV32 virt: the figures to set beside whole-frame renderers.\n"
+    );
+    println!("| scene | target | bands insns/px | whole insns/px | bands / whole |\n|---|---|---:|---:|---:|");
+    for scene in SCENES {
+        for m in &MCUS {
+            let b = per_px.get(&(scene.to_string(), m.label));
+            let w = per_px.get(&(format!("whole_{scene}"), m.label));
+            if let (Some(b), Some(w)) = (b, w) {
+                println!("| {scene} | {} | {b:.2} | {w:.2} | {:.3} |", m.label, b / w);
+            }
+        }
+    }
+    match geometry_table(&llvm, &plugin, &td_whole) {
+        Ok(t) => println!(
+            "\nGeometry on its own (`geometry` firmware, sphere camera, frame 0): instructions \
+             per item and stage\n\n{t}"
+        ),
+        Err(e) => problems.push(format!("geometry firmware: {e}")),
+    }
     println!("\n{CYCLE_MODEL}\n");
     println!(
         "Repeatability ({} runs each, instruction counts):\n{repeat}",

@@ -2,7 +2,9 @@
 //! host's runtime values bit for bit). The linker keeps only the ones a binary uses.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
+use fixel::demo::{
+    MeshData, FINE_SPHERE_TRIANGLES, FINE_SPHERE_VERTICES, SPHERE_TRIANGLES, SPHERE_VERTICES,
+};
 use fixel::math::{Fx, Vec3};
 use fixel::texture::{MipTexture, Texture};
 
@@ -57,3 +59,8 @@ const fn uv(u: i32, v: i32) -> [Fx; 2] {
 /// The benchmark sphere (`fixel::demo::sphere()`), ~52 KB of flash.
 pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/sphere.rs"));
+
+/// The geometry benchmark's fine sphere (`fixel::demo::fine_sphere()`: 5,265 vertices,
+/// 10,080 triangles), ~230 KB of flash: linked by the whole-layout `geometry` firmware only.
+pub static FINE_SPHERE: MeshData<FINE_SPHERE_VERTICES, FINE_SPHERE_TRIANGLES> =
+    include!(concat!(env!("OUT_DIR"), "/fine_sphere.rs"));

@@ -8,8 +8,9 @@ use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
 use fixel::pipeline::{DepthLess, ModulateIntensity, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
-use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
+use fixel::scene::{draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh};
 use fixel::surface::band::{BandStats, Binned};
+use fixel::surface::BandRange;
 use fixel::texture::{Bilinear, Nearest, Repeat};
 
 /// Frame size of every scene.
@@ -19,8 +20,13 @@ pub const H: u32 = demo::HEIGHT;
 /// Rows per band: colour + depth band = 320 * 8 * 4 B = 10 KiB.
 pub const ROWS: u32 = 8;
 /// Binned screen triangles (~104 B each). The cube and floor fit; the sphere overflows and
-/// the renderer runs its geometry once per band instead (reported as `rewalked`).
+/// the renderer keeps a 2-byte band range per triangle instead (`reprojected`).
 pub const BINS: usize = 16;
+/// Band ranges of the sphere firmware: one per sphere triangle (2 B each, 4.4 KB).
+pub const RANGES: usize = demo::SPHERE_TRIANGLES;
+/// Prepared-vertex cache of the band firmwares (36 B each, direct-mapped): 64 entries
+/// keep the sphere's ring-to-ring vertex reuse.
+pub const CACHE: usize = 128;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
@@ -56,15 +62,26 @@ impl Fnv1a {
     }
 }
 
-/// Buffers a band renderer needs: colour band, depth band, triangle bins.
-pub struct Buffers {
+/// Buffers a band renderer needs: colour band, depth band, triangle bins, `R` band ranges
+/// and a cache of `V` prepared vertices.
+pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE, const B: usize = BINS> {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
     /// Depth band.
     pub depth: [u16; BAND_PIXELS],
     /// Triangle bins.
-    pub bins: [Binned; BINS],
+    pub bins: [Binned; B],
+    /// Band range per triangle (when the bins overflow).
+    pub ranges: [BandRange; R],
+    /// Prepared-vertex cache.
+    pub cache: [CachedVertex; V],
 }
+
+/// Buffers of the scenes whose triangles fit the bins (cube, floor): no band ranges.
+pub type SmallBuffers = Buffers<0, 32>;
+/// Buffers of the sphere firmware: band ranges and a vertex cache, no bins (its ~650
+/// screen triangles would need 68 KB of them). 10 KiB band + 4.4 KB ranges + 2.5 KB cache.
+pub type SphereBuffers = Buffers<RANGES, CACHE, 0>;
 
 impl Default for Buffers {
     fn default() -> Self {
@@ -73,14 +90,62 @@ impl Default for Buffers {
 }
 
 impl Buffers {
-    /// Zeroed buffers.
+    /// Zeroed buffers with the sphere's storage.
     pub fn new() -> Self {
+        Self::with_storage()
+    }
+}
+
+impl<const R: usize, const V: usize, const B: usize> Buffers<R, V, B> {
+    /// Zeroed buffers.
+    pub fn with_storage() -> Self {
         Buffers {
             color: [Rgb565::new(0, 0, 0); BAND_PIXELS],
             depth: [0; BAND_PIXELS],
-            bins: [Binned::default(); BINS],
+            bins: [Binned::default(); B],
+            ranges: [BandRange::EMPTY; R],
+            cache: [CachedVertex::EMPTY; V],
         }
     }
+}
+
+/// Buffers of a whole-frame renderer: a 320 x 240 colour and depth frame (300 KiB) and
+/// one prepared vertex per sphere vertex (44 KB). For the boards with the RAM for it.
+pub struct Whole {
+    /// Colour frame.
+    pub color: [Rgb565; (W * H) as usize],
+    /// Depth frame.
+    pub depth: [u16; (W * H) as usize],
+    /// Prepared-vertex cache.
+    pub cache: [CachedVertex; demo::SPHERE_VERTICES],
+}
+
+impl Whole {
+    /// Zeroed buffers.
+    pub fn new() -> Self {
+        Whole {
+            color: [Rgb565::new(0, 0, 0); (W * H) as usize],
+            depth: [0; (W * H) as usize],
+            cache: [CachedVertex::EMPTY; demo::SPHERE_VERTICES],
+        }
+    }
+}
+
+impl Default for Whole {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// A whole-frame [`Target`] (its band storage parameters are unused).
+pub type WholeTarget<'b> = Target<'b, 0, 0, 0>;
+
+/// Where a frame is drawn: in bands through `Buffers`, or whole.
+pub enum Target<'b, const R: usize, const V: usize, const B: usize = BINS> {
+    /// Band by band.
+    Bands(&'b mut Buffers<R, V, B>),
+    /// One whole frame.
+    Whole(&'b mut Whole),
 }
 
 /// What a frame produced.
@@ -96,8 +161,8 @@ pub struct FrameResult {
 /// before each band's checksum and `resume` after it, so an instruction counter can leave
 /// the (harness-only) checksum out of the renderer's count.
 #[allow(clippy::too_many_arguments)]
-pub fn render<M>(
-    buf: &mut Buffers,
+pub fn render<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -120,8 +185,8 @@ pub fn viewport() -> Result<Viewport, Error> {
 
 /// Like [`render`] with a ready draw (any mode: see `modes.rs`).
 #[allow(clippy::too_many_arguments)]
-pub fn render_draw(
-    buf: &mut Buffers,
+pub fn render_draw<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -134,16 +199,36 @@ pub fn render_draw(
     let light = DirectionalLight::default();
     let light = if lit { Some(&light) } else { None };
     let mut sum = Fnv1a::default();
+    let buf = match buf {
+        Target::Bands(b) => b,
+        Target::Whole(w) => {
+            let mut frame = Frame::new(&mut w.color, W, H)?.with_depth(&mut w.depth)?;
+            frame.clear(Rgb565::new(0, 0, 0));
+            let pixels =
+                draw_mesh_walked(draw, mesh, model, &camera, light, &mut w.cache, &mut frame);
+            pause();
+            sum.pixels(frame.pixels());
+            resume();
+            return Ok(FrameResult {
+                checksum: sum.0,
+                stats: BandStats {
+                    bands: 1,
+                    pixels,
+                    ..BandStats::default()
+                },
+            });
+        }
+    };
     let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let cache = &mut buf.cache;
     let stats = bands
-        .render(
+        .render_spans(
             &[draw],
             &mut buf.bins,
+            &mut buf.ranges,
             Rgb565::new(0, 0, 0),
             |sink| {
-                mesh_triangles(mesh, model, &camera, light, |t| {
-                    draw.project(t, &mut |s| sink.push(0, s))
-                })
+                mesh_to_sink(draw, 0, mesh, model, &camera, light, cache, 0, sink);
             },
             |band| {
                 pause();
@@ -160,15 +245,15 @@ pub fn render_draw(
 }
 
 /// Scene `cube`, frame `i`: `texture` must be `T(128, 128)`.
-pub fn cube(
-    buf: &mut Buffers,
+pub fn cube<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let m = demo::cube();
-    render::<Lit>(
+    render::<Lit, R, V, B>(
         buf,
         texture,
         &m.mesh()?,
@@ -181,15 +266,15 @@ pub fn cube(
 }
 
 /// Scene `sphere`, frame `i`: `texture` must be `T(256, 128)`, `mesh` the demo sphere.
-pub fn sphere(
-    buf: &mut Buffers,
+pub fn sphere<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    render::<Lit>(
+    render::<Lit, R, V, B>(
         buf,
         texture,
         mesh,
@@ -202,8 +287,8 @@ pub fn sphere(
 }
 
 /// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`.
-pub fn floor<M>(
-    buf: &mut Buffers,
+pub fn floor<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
@@ -212,7 +297,7 @@ where
     M: fixel::pipeline::Stages + 'static,
 {
     let m = demo::floor();
-    render::<M>(
+    render::<M, R, V, B>(
         buf,
         texture,
         &m.mesh()?,
@@ -225,8 +310,8 @@ where
 }
 
 /// Scene `cube`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(128, 128)`).
-pub fn cube_with(
-    buf: &mut Buffers,
+pub fn cube_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     lit: bool,
     i: u32,
@@ -248,8 +333,8 @@ pub fn cube_with(
 
 /// Scene `sphere`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(256, 128)`).
 #[allow(clippy::too_many_arguments)]
-pub fn sphere_with(
-    buf: &mut Buffers,
+pub fn sphere_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     lit: bool,
@@ -271,8 +356,8 @@ pub fn sphere_with(
 
 /// Scene `floor` drawn with `draw` (unlit; texture `T(64, 64)`, with its mip chain for the
 /// mipmapped filters).
-pub fn floor_with(
-    buf: &mut Buffers,
+pub fn floor_with<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
     draw: &Draw<'_, Rgb565>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),

@@ -241,12 +241,27 @@ fn band_checksum(scene: Scene, m: &Mode, tex: &Tex, meshes: &Meshes) -> (String,
     let vp = scenes::viewport().expect("viewport");
     let draw = m.draw(tex.mip(), vp).expect("draw");
     let r = match scene {
-        Scene::Cube => scenes::cube_with(&mut buf, &draw, m.lit, 0, &mut a, &mut b),
+        Scene::Cube => scenes::cube_with(
+            scenes::Target::Bands(&mut buf),
+            &draw,
+            m.lit,
+            0,
+            &mut a,
+            &mut b,
+        ),
         Scene::Sphere => {
             let mesh = meshes.mesh(scene);
-            scenes::sphere_with(&mut buf, &draw, &mesh, m.lit, 0, &mut a, &mut b)
+            scenes::sphere_with(
+                scenes::Target::Bands(&mut buf),
+                &draw,
+                &mesh,
+                m.lit,
+                0,
+                &mut a,
+                &mut b,
+            )
         }
-        Scene::Floor => scenes::floor_with(&mut buf, &draw, &mut a, &mut b),
+        Scene::Floor => scenes::floor_with(scenes::Target::Bands(&mut buf), &draw, &mut a, &mut b),
     }
     .expect("band frame");
     (format!("0x{:08x}", r.checksum), u64::from(r.stats.pixels))

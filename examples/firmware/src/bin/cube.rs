@@ -5,10 +5,16 @@
 use fixel_firmware::{data, report, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
+    let mut buf = scenes::SmallBuffers::with_storage();
     let frame = core::hint::black_box(0);
     report("cube", |pause, resume| {
-        scenes::cube(&mut buf, data::T128, frame, pause, resume)
+        scenes::cube(
+            scenes::Target::Bands(&mut buf),
+            data::T128,
+            frame,
+            pause,
+            resume,
+        )
     })
 }
 

@@ -5,10 +5,10 @@
 use fixel_firmware::{data, report, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
+    let mut buf = scenes::SmallBuffers::with_storage();
     report("floor", |pause, resume| {
-        scenes::floor::<scenes::FloorNearest>(
-            &mut buf,
+        scenes::floor::<scenes::FloorNearest, _, _, _>(
+            scenes::Target::Bands(&mut buf),
             core::hint::black_box(data::T64),
             pause,
             resume,

@@ -17,7 +17,7 @@ fn run() -> bool {
         [0 1 2 3 4 5 6 7 8 9 10 11 12 13],
         |m, pause, resume| {
             let draw = m.draw(core::hint::black_box(data::t64_mips()), vp)?;
-            scenes::floor_with(&mut buf, &draw, pause, resume)
+            scenes::floor_with(scenes::Target::Bands(&mut buf), &draw, pause, resume)
         }
     )
 }

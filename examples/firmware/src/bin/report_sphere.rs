@@ -20,7 +20,7 @@ fn run() -> bool {
         [0 1 2],
         |m, pause, resume| {
             let draw = m.draw(MipTexture::single(data::T256X128), vp)?;
-            scenes::sphere_with(&mut buf, &draw, &mesh, m.lit, frame, pause, resume)
+            scenes::sphere_with(scenes::Target::Bands(&mut buf), &draw, &mesh, m.lit, frame, pause, resume)
         }
     )
 }

@@ -1,18 +1,26 @@
 //! Scene `sphere`, frame 0: 2208 triangles (mesh in flash), lit, bilinear, perspective-correct,
-//! depth-tested. The bins overflow, so the geometry runs once per band.
+//! depth-tested, in 320x8 bands: one binning pass stores each triangle's band range (2 B),
+//! then each band re-projects only the triangles that meet it.
 #![no_std]
 #![no_main]
 
 use fixel_firmware::{data, report, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
+    let mut buf = scenes::SphereBuffers::with_storage();
     let frame = core::hint::black_box(0);
     let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
         return false;
     };
     report("sphere", |pause, resume| {
-        scenes::sphere(&mut buf, data::T256X128, &mesh, frame, pause, resume)
+        scenes::sphere(
+            scenes::Target::Bands(&mut buf),
+            data::T256X128,
+            &mesh,
+            frame,
+            pause,
+            resume,
+        )
     })
 }
 

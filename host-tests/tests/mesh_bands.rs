@@ -1,0 +1,212 @@
+//! Every way of drawing a mesh gives the same pixels (issue 10): random meshes (vertices
+//! behind the camera, off screen and on it; random normals, uvs and indices), two meshes
+//! with two draws in random modes, drawn
+//!
+//! * whole-frame through `draw_mesh` (clip-space triangles, the reference path),
+//! * whole-frame through the prepared-vertex walker `draw_mesh_walked`, with a vertex cache
+//!   of any length (none, direct-mapped, one per vertex),
+//! * in bands of any height through `BandRenderer::render_spans`, with bins, band ranges
+//!   and vertex cache of any length: bins big enough (geometry once), ranges big enough
+//!   (re-projection per band), ranges too short (partial re-walk), none at all;
+//!
+//! must agree bit for bit, and the storage flags must say which rung was used.
+
+mod common;
+
+use common::*;
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::geometry::Viewport;
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{Draw, DrawMode, Projection, Shading};
+use fixel::prelude::Cull;
+use fixel::scene::{
+    draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh,
+};
+use fixel::surface::band::Binned;
+use fixel::surface::{BandRange, BandRenderer, Frame};
+use fixel::texture::{Filter, Wrap};
+use proptest::prelude::*;
+
+/// A random mesh's arrays.
+#[derive(Clone, Debug)]
+struct MeshArrays {
+    positions: Vec<Vec3>,
+    normals: Vec<Vec3>,
+    uvs: Vec<[Fx; 2]>,
+    indices: Vec<[u16; 3]>,
+}
+
+impl MeshArrays {
+    fn mesh(&self) -> Mesh<'_> {
+        Mesh::new(
+            &self.positions,
+            Some(&self.normals),
+            &self.uvs,
+            &self.indices,
+        )
+        .unwrap()
+    }
+}
+
+fn mesh_arrays() -> impl Strategy<Value = MeshArrays> {
+    (3usize..40).prop_flat_map(|n| {
+        let p = (-2.5f64..2.5, -2.0f64..2.0, -3.0f64..4.5);
+        let nm = (-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0);
+        (
+            prop::collection::vec(p, n),
+            prop::collection::vec(nm, n),
+            prop::collection::vec((-2.0f64..2.0, -2.0f64..2.0), n),
+            prop::collection::vec([0..n as u16, 0..n as u16, 0..n as u16], 1..90),
+        )
+            .prop_map(|(p, nm, uv, indices)| MeshArrays {
+                positions: p
+                    .into_iter()
+                    .map(|(x, y, z)| Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z)))
+                    .collect(),
+                normals: nm
+                    .into_iter()
+                    .map(|(x, y, z)| Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z)))
+                    .collect(),
+                uvs: uv
+                    .into_iter()
+                    .map(|(u, v)| [Fx::from_num(u), Fx::from_num(v)])
+                    .collect(),
+                indices,
+            })
+    })
+}
+
+fn mode() -> impl Strategy<Value = DrawMode> {
+    (
+        prop::sample::select(vec![Projection::Affine, Projection::Exact]),
+        prop::sample::select(vec![Filter::Nearest, Filter::Bilinear]),
+        prop::sample::select(vec![
+            Shading::Replace,
+            Shading::Modulate,
+            Shading::ModulateIntensity,
+            Shading::Gouraud,
+            Shading::Flat,
+        ]),
+        prop::sample::select(vec![Cull::None, Cull::Back, Cull::Front]),
+    )
+        .prop_map(|(projection, filter, shading, cull)| DrawMode {
+            projection,
+            filter,
+            shading,
+            cull,
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat],
+            ..DrawMode::default()
+        })
+}
+
+fn model(turn: u16) -> Mat4 {
+    let a = Angle::from_turns(turn);
+    Mat4::translation(Vec3::from_num(0, 0, -5)) * (Mat4::rotation_x(a) * Mat4::rotation_y(a))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 160, ..ProptestConfig::default() })]
+
+    #[test]
+    fn every_path_draws_the_same_pixels(
+        meshes in (mesh_arrays(), mesh_arrays()),
+        modes in (mode(), mode()),
+        turn in any::<u16>(),
+        (w, h) in (1usize..40, prop_oneof![3 => 1usize..60, 1 => 250usize..300]),
+        rows in prop_oneof![2 => Just(1u32), 3 => 1u32..20],
+        bins_len in 0usize..24,
+        ranges_len in prop_oneof![Just(0usize), 0usize..200, Just(10_000)],
+        cache_len in prop_oneof![Just(0usize), 1usize..70, Just(100)],
+        lit in any::<bool>(),
+    ) {
+        let tex = noise_texture(8, 16, 5);
+        let texels = host_tests::adapter::texels(&tex);
+        let t = texture(&tex, &texels);
+        let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+        let d0 = Draw::dynamic(modes.0, Some(t), vp).unwrap();
+        let d1 = Draw::dynamic(modes.1, Some(t), vp).unwrap().with_flat_color(raw(0x07E0));
+        let draws = [&d0, &d1];
+        let (ma, mb) = (meshes.0.mesh(), meshes.1.mesh());
+        let (model_a, model_b) = (model(turn), model(turn.wrapping_mul(3)));
+        let camera = demo::camera(20);
+        let light = DirectionalLight::default();
+        let light = lit.then_some(&light);
+        let clear = raw(0x1234);
+
+        // Reference: clip-space triangles, whole frame.
+        let mut color = vec![Rgb565::default(); w * h];
+        let mut depth = vec![0u16; w * h];
+        let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
+        f.clear(clear);
+        let px_ref = draw_mesh(&d0, &ma, &model_a, &camera, light, &mut f)
+            + draw_mesh(&d1, &mb, &model_b, &camera, light, &mut f);
+        let expected: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+
+        // The walker, whole frame.
+        let mut cache = vec![CachedVertex::default(); cache_len];
+        let mut color = vec![Rgb565::default(); w * h];
+        let mut depth = vec![0u16; w * h];
+        let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
+        f.clear(clear);
+        let px_walk = draw_mesh_walked(&d0, &ma, &model_a, &camera, light, &mut cache, &mut f)
+            + draw_mesh_walked(&d1, &mb, &model_b, &camera, light, &mut cache, &mut f);
+        let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+        prop_assert_eq!(px_walk, px_ref);
+        prop_assert!(walked == expected, "walker differs from draw_mesh");
+
+        // Bands through render_spans.
+        let rows = rows.min(h as u32);
+        let mut bins = vec![Binned::default(); bins_len];
+        let mut ranges = vec![BandRange::EMPTY; ranges_len];
+        let mut cbuf = vec![Rgb565::default(); w * rows as usize];
+        let mut dbuf = vec![0u16; w * rows as usize];
+        let mut band = BandRenderer::new(&mut cbuf, w as u32, rows, h as u32)
+            .unwrap()
+            .with_depth(&mut dbuf)
+            .unwrap();
+        let mut got = vec![0u16; w * h];
+        let stats = band
+            .render_spans(
+                &draws,
+                &mut bins,
+                &mut ranges,
+                clear,
+                |sink| {
+                    let next = mesh_to_sink(&d0, 0, &ma, &model_a, &camera, light, &mut cache, 0, sink);
+                    mesh_to_sink(&d1, 1, &mb, &model_b, &camera, light, &mut cache, next, sink);
+                },
+                |b| {
+                    let start = b.first_row() as usize * w;
+                    for (o, &c) in got[start..start + b.pixels().len()].iter_mut().zip(b.pixels()) {
+                        *o = bits(c);
+                    }
+                    Ok::<(), ()>(())
+                },
+            )
+            .unwrap();
+        let ids = ma.triangles() + mb.triangles();
+        prop_assert_eq!(stats.pixels, px_ref);
+        prop_assert_eq!(stats.reprojected, stats.triangles as usize > bins_len);
+        // Re-walk only with some triangle id past the stored ranges, and only off the bins.
+        prop_assert!(!stats.rewalked || (stats.reprojected && ranges_len < ids));
+        prop_assert!(got == expected, "bands differ from the whole frame ({:?})", stats);
+    }
+}
+
+/// A mesh whose index points past its vertices, or with more vertices than a `u16` index
+/// reaches, is refused when it is built, with a message saying what is wrong.
+#[test]
+fn bad_meshes_are_errors() {
+    let p = [Vec3::ZERO; 3];
+    let uv = [[Fx::ZERO; 2]; 3];
+    let e = Mesh::new(&p, None, &uv, &[[0, 1, 3]]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "index 3 at position 2 is out of range for 3 vertices"
+    );
+    let big = vec![Vec3::ZERO; 65537];
+    let big_uv = vec![[Fx::ZERO; 2]; 65537];
+    let e = Mesh::new(&big, None, &big_uv, &[[0, 1, 2]]).unwrap_err();
+    assert!(e.to_string().contains("65537 vertices"), "{e}");
+}

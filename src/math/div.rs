@@ -1,0 +1,254 @@
+//! Exact 64-bit by 64-bit unsigned division that takes 32-bit paths when the operands
+//! allow: the geometry's projections and the raster set-up's plane gradients divide 64-bit
+//! numerators by small divisors (`w`, a triangle's doubled area), and a full 64-bit
+//! division is a library call of a few hundred instructions on 32-bit cores (Cortex-M4F:
+//! `__aeabi_uldivmod`, ~250 instructions measured; Cortex-M0+: more, it has no divide
+//! instruction at all). The result is always the exact `n / d` (tested against `u64` `/`
+//! on random and edge operands), so callers stay bit-identical.
+//!
+//! Paths, by operand size:
+//!
+//! * `n < 2^32`, `d < 2^32`: one 32-bit division (one `udiv` on Cortex-M4F and RV32IM);
+//! * `d < 2^16`: schoolbook long division in base 2^16 (the high word, then two 16-bit
+//!   digits): three 32-bit divisions, each of a value below `d * 2^16 < 2^32`;
+//! * otherwise: the 64-bit division.
+//!
+//! [`SmallDivisor`] divides many numerators by one divisor below 2^16 with a reciprocal.
+
+/// True on cores with a 32-bit divide instruction (Cortex-M3/M4/M7, RV32IM, hosts); false on
+/// ARMv6-M (Cortex-M0/M0+), where [`SmallDivisor`] beats the library division.
+pub const HW_DIVIDE: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+
+/// `n / d` rounded towards zero, exactly; `d` must not be zero (then `0` is returned, never
+/// a panic).
+#[inline]
+pub fn div_u64(n: u64, d: u64) -> u64 {
+    if d == 0 {
+        return 0;
+    }
+    if d >> 16 == 0 {
+        let d = d as u32;
+        let hi = (n >> 32) as u32;
+        let lo = n as u32;
+        if hi == 0 {
+            return u64::from(lo / d);
+        }
+        let q1 = hi / d;
+        let r1 = hi - q1 * d; // < d < 2^16
+        let t2 = (r1 << 16) | (lo >> 16); // < d * 2^16
+        let q2 = t2 / d;
+        let r2 = t2 - q2 * d;
+        let t3 = (r2 << 16) | (lo & 0xFFFF);
+        let q3 = t3 / d;
+        return (u64::from(q1) << 32) | (u64::from(q2) << 16) | u64::from(q3);
+    }
+    if (n | d) >> 32 == 0 {
+        return u64::from(n as u32 / d as u32);
+    }
+    n / d
+}
+
+/// `n / d` for signed `n` and positive `d`, rounded to nearest with ties away from zero
+/// (`d <= 0` gives 0). The same result as `(n + d/2) / d` for `n >= 0` and
+/// `-((d/2 - n) / d)` below, in `i64` (with the same wrapping at the ends of the range).
+#[inline]
+pub fn div_round_i64(n: i64, d: i64) -> i64 {
+    if d <= 0 {
+        return 0;
+    }
+    let half = d / 2;
+    if n >= 0 {
+        div_u64(n.wrapping_add(half) as u64, d as u64) as i64
+    } else {
+        (div_u64(half.wrapping_sub(n) as u64, d as u64) as i64).wrapping_neg()
+    }
+}
+
+/// `floor(n / d)` for signed `n` and positive `d` (`i64::div_euclid` for `d > 0`); `d <= 0`
+/// gives 0.
+#[inline]
+pub fn div_floor_i64(n: i64, d: i64) -> i64 {
+    if d <= 0 {
+        return 0;
+    }
+    if n >= 0 {
+        div_u64(n as u64, d as u64) as i64
+    } else {
+        // floor(n / d) = -ceil(-n / d) = -((-n + d - 1) / d)
+        let m = n.unsigned_abs() + (d as u64 - 1);
+        (div_u64(m, d as u64) as i64).wrapping_neg()
+    }
+}
+
+/// Exact division of many numerators by one divisor below 2^16 (a triangle's doubled area
+/// in the raster set-up): a 32-bit reciprocal, so each 32-bit step is a multiply and a
+/// correction instead of a division (Cortex-M0+ has no divide instruction: its library
+/// division costs about 80 instructions).
+#[derive(Clone, Copy, Debug)]
+pub struct SmallDivisor {
+    d: u32,
+    /// `floor((2^32 - 1) / d)`.
+    m: u32,
+}
+
+impl SmallDivisor {
+    /// `None` unless `0 < d < 2^16`.
+    #[inline]
+    pub fn new(d: u64) -> Option<Self> {
+        if d == 0 || d >> 16 != 0 {
+            return None;
+        }
+        let d = d as u32;
+        Some(SmallDivisor { d, m: u32::MAX / d })
+    }
+
+    /// `(t / d, t % d)`, exactly.
+    #[inline(always)]
+    fn div32(&self, t: u32) -> (u32, u32) {
+        // t m / 2^32 > t / d - 2: at most two corrections.
+        let mut q = mul_hi(t, self.m);
+        let mut r = t.wrapping_sub(q.wrapping_mul(self.d));
+        while r >= self.d {
+            q += 1;
+            r -= self.d;
+        }
+        (q, r)
+    }
+
+    /// `n / d` rounded towards zero, exactly (base 2^16 long division as [`div_u64`]).
+    #[inline]
+    pub fn div(&self, n: u64) -> u64 {
+        let hi = (n >> 32) as u32;
+        let lo = n as u32;
+        if hi == 0 {
+            return u64::from(self.div32(lo).0);
+        }
+        let (q1, r1) = self.div32(hi);
+        let (q2, r2) = self.div32((r1 << 16) | (lo >> 16));
+        let (q3, _) = self.div32((r2 << 16) | (lo & 0xFFFF));
+        (u64::from(q1) << 32) | (u64::from(q2) << 16) | u64::from(q3)
+    }
+}
+
+/// High word of the 64-bit product `a b`: one `umull` where there is one; four 16x16
+/// products on ARMv6-M (the library's `__aeabi_lmul` is about 25 instructions and a call).
+#[inline(always)]
+fn mul_hi(a: u32, b: u32) -> u32 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        mul_hi_split(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        ((u64::from(a) * u64::from(b)) >> 32) as u32
+    }
+}
+
+/// The 32-bit-multiply form of [`mul_hi`] (compiled everywhere so every target tests it).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn mul_hi_split(a: u32, b: u32) -> u32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let (mid1, mid2) = (ah * bl, al * bh);
+    let carry = ((al * bl) >> 16) + (mid1 & 0xFFFF) + (mid2 & 0xFFFF);
+    ah * bh + (mid1 >> 16) + (mid2 >> 16) + (carry >> 16)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn small_divisor_equals_the_plain_division() {
+        let mut x: u64 = 0x1234_5678_9ABC_DEF1;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for d in (1u64..70).chain([255, 256, 4095, 65534, 65535]) {
+            let s = SmallDivisor::new(d).unwrap();
+            for n in [
+                0u64,
+                1,
+                d - 1,
+                d,
+                u32::MAX as u64,
+                1 << 32,
+                u64::MAX,
+                u64::MAX - 1,
+            ] {
+                assert_eq!(s.div(n), n / d, "{n} / {d}");
+            }
+        }
+        for _ in 0..200_000 {
+            let d = (next() >> 48).max(1);
+            let n = next() >> (next() % 64);
+            assert_eq!(SmallDivisor::new(d).unwrap().div(n), n / d, "{n} / {d}");
+            let (a, b) = (next() as u32, next() as u32);
+            assert_eq!(
+                mul_hi_split(a, b),
+                ((u64::from(a) * u64::from(b)) >> 32) as u32
+            );
+        }
+        assert!(SmallDivisor::new(0).is_none() && SmallDivisor::new(1 << 16).is_none());
+    }
+
+    #[test]
+    fn equals_the_plain_division() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let ds = [
+            1u64,
+            2,
+            3,
+            255,
+            256,
+            65535,
+            65536,
+            65537,
+            1 << 31,
+            u32::MAX as u64,
+        ];
+        let ns = [
+            0u64,
+            1,
+            u32::MAX as u64,
+            1 << 32,
+            u64::MAX,
+            u64::MAX - 1,
+            1 << 63,
+        ];
+        for &d in &ds {
+            for &n in &ns {
+                assert_eq!(div_u64(n, d), n / d, "{n} / {d}");
+            }
+        }
+        for _ in 0..200_000 {
+            let n = next() >> (next() % 64);
+            let d = (next() >> (next() % 64)).max(1);
+            assert_eq!(div_u64(n, d), n / d, "{n} / {d}");
+            let (sn, sd) = (n as i64, (d >> 1).max(1) as i64);
+            assert_eq!(div_floor_i64(sn, sd), sn.div_euclid(sd), "{sn} / {sd}");
+            let half = sd / 2;
+            let want = if sn >= 0 {
+                sn.wrapping_add(half) / sd
+            } else {
+                -(half.wrapping_sub(sn) / sd)
+            };
+            if sn.checked_add(half).is_some() && half.checked_sub(sn).is_some() {
+                assert_eq!(div_round_i64(sn, sd), want, "{sn} / {sd}");
+            }
+        }
+    }
+}

@@ -1,0 +1,386 @@
+//! The geometry stage for meshes, done once per vertex where it can be: a cache of
+//! *prepared* vertices (transformed, outcoded and projected), culling before lighting, and
+//! a triangle filter that runs before any transform (for bands).
+//!
+//! Per triangle, in mesh order:
+//!
+//! 1. `wants(id)` (a band renderer says whether the triangle meets the band): if not, skip;
+//! 2. its three vertices from the cache, or transformed by the model-view-projection
+//!    matrix, outcoded against the view volume and guard band, and projected (3 `i64`
+//!    divisions), then cached;
+//! 3. all three outside one plane: skip. All three inside (the common case): the screen
+//!    triangle is the three cached projections; cull it by its exact sub-pixel area, and
+//!    only then light its vertices (a normal transform and a dot product, once per vertex,
+//!    cached). Otherwise: the full clipper (`clip_and_project`) on freshly transformed and
+//!    lit vertices.
+//!
+//! Every screen triangle is bit-identical to what [`mesh_triangles`](super::mesh_triangles)
+//! followed by [`Draw::project`] gives (same transforms, same projection, same culling
+//! test), so any path drawing a mesh gives the same pixels.
+//!
+//! The cache is caller storage of [`CachedVertex`] (32 bytes each): with one entry per mesh
+//! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
+//! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
+//! entries); empty, nothing is cached (each corner is prepared on its own).
+
+use crate::color::TargetColor;
+use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_depth};
+use crate::geometry::{ScreenTriangle, ScreenVertex, COLOR_ONE};
+use crate::math::Mat4;
+use crate::pipeline::{Draw, Shading};
+use crate::surface::{MeshSink, RenderTarget};
+
+use super::mesh::{vertex, vertex_intensity};
+use super::{Camera, DirectionalLight, Mesh};
+
+const EMPTY: u8 = 0;
+/// Transformed and projected; colour still white.
+const PLACED: u8 = 1;
+/// Placed and lit.
+const LIT: u8 = 2;
+/// Its position or normal overflows the fixed-point range: its triangles are skipped.
+const FAILED: u8 = 3;
+/// Placed without the depth division (binning): `z` holds the clip-space `z`.
+const NO_DEPTH: u8 = 4;
+
+/// One prepared vertex: its projection (uv and one colour intensity), outcode and cache
+/// key; 32 bytes, so copies stay a few word moves.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CachedVertex {
+    x: i32,
+    y: i32,
+    z: i32,
+    w: i32,
+    uv: [i32; 2],
+    /// Colour, one channel for all three (the walker's lighting is grey).
+    color: u16,
+    key: u16,
+    /// The low 16 bits of the mesh's first triangle id (meshes sharing a cache).
+    mesh: u16,
+    outcode: u8,
+    state: u8,
+}
+
+impl CachedVertex {
+    /// An empty entry (all zero bits, so arrays of it can start zeroed in place).
+    pub const EMPTY: CachedVertex = CachedVertex {
+        x: 0,
+        y: 0,
+        z: 0,
+        w: 0,
+        uv: [0; 2],
+        color: 0,
+        key: 0,
+        mesh: 0,
+        outcode: 0,
+        state: EMPTY,
+    };
+
+    fn set_screen(&mut self, s: &ScreenVertex) {
+        let [u, v, r, ..] = s.varyings;
+        (self.x, self.y, self.z, self.w, self.uv, self.color) =
+            (s.x, s.y, s.z, s.w, [u, v], (r >> 16) as u16);
+    }
+
+    fn screen(&self) -> ScreenVertex {
+        let c = i32::from(self.color.min(COLOR_ONE)) << 16;
+        ScreenVertex {
+            x: self.x,
+            y: self.y,
+            z: self.z,
+            w: self.w,
+            varyings: [self.uv[0], self.uv[1], c, c, c],
+        }
+    }
+}
+
+/// Where the walker's screen triangles go, and which triangles it should skip.
+pub trait TriangleOut {
+    /// Whether triangle `id` is needed (checked before any of its vertices is touched).
+    fn wants(&self, id: usize) -> bool;
+    /// The ids that may be wanted, `lo..=hi` (the others are skipped without asking).
+    fn window(&self) -> (usize, usize) {
+        (0, usize::MAX)
+    }
+    /// Whether the cache must be emptied first (a new frame). When `false` the cache is
+    /// trusted to hold this frame's vertices of this mesh (a band pass after the binning
+    /// pass of the same frame).
+    fn fresh(&self) -> bool {
+        true
+    }
+    /// Whether pushed triangles need lighting (else their colour may stay white).
+    fn attributes(&self) -> bool;
+    /// One screen triangle of triangle `id`.
+    fn triangle(&mut self, id: usize, tri: &ScreenTriangle);
+}
+
+/// The matrices and options of one mesh draw.
+struct Ctx<'m, 'l> {
+    mesh: &'m Mesh<'m>,
+    model_view: Mat4,
+    mvp: Mat4,
+    light: Option<&'l DirectionalLight>,
+}
+
+/// Walks the triangles of `mesh` (ids `first_id..`), preparing vertices through `cache`,
+/// and hands every visible screen triangle of `draw`'s viewport and culling to `out`.
+/// Lighting is skipped when `draw` does not use vertex colours. Returns the id after the
+/// last triangle (`first_id + mesh.triangles()`).
+#[allow(clippy::too_many_arguments)]
+pub fn walk_mesh<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    first_id: usize,
+    out: &mut impl TriangleOut,
+) -> usize {
+    let model_view = camera.view.mul(model);
+    let mvp = camera.projection.mul(&model_view);
+    let coloured = matches!(
+        draw.mode().shading,
+        Shading::Modulate | Shading::ModulateIntensity | Shading::Gouraud
+    );
+    let ctx = Ctx {
+        mesh,
+        model_view,
+        mvp,
+        light: light.filter(|_| coloured),
+    };
+    let vp = draw.viewport();
+    let cull = draw.mode().cull;
+    let n = mesh.positions.len();
+    // Slot of vertex i: i itself when every vertex has one, else i mod 2^k.
+    let mask = if cache.len() >= n {
+        usize::MAX
+    } else {
+        (1usize << cache.len().max(1).ilog2()) - 1
+    };
+    // Entries are told apart by the low 16 bits of the mesh's first id: past 65535 the
+    // cache is emptied on every call (correct, only slower).
+    if out.fresh() || first_id > usize::from(u16::MAX) {
+        for c in cache.iter_mut() {
+            c.state = EMPTY;
+        }
+    }
+    let tag = first_id as u16;
+    let (lo, hi) = out.window();
+    let len = mesh.indices.len();
+    let start = lo.saturating_sub(first_id).min(len);
+    let end = match hi.checked_sub(first_id) {
+        Some(h) => h.saturating_add(1).min(len),
+        None => 0,
+    };
+    for (t, idx) in mesh.indices.iter().enumerate().take(end).skip(start) {
+        let id = first_id + t;
+        if !out.wants(id) {
+            continue;
+        }
+        let full = out.attributes();
+        let lit = full && ctx.light.is_some();
+        // The three corners, prepared (from the cache or placed now), copied out: two
+        // corners may share a direct-mapped slot.
+        let mut v = [CachedVertex::default(); 3];
+        for k in 0..3 {
+            let i = usize::from(idx[k]);
+            v[k] = match cache.get_mut(i & mask) {
+                Some(c) => {
+                    if c.state == EMPTY || usize::from(c.key) != i || c.mesh != tag {
+                        place(&ctx, vp, i, c, full);
+                        c.mesh = tag;
+                    }
+                    *c
+                }
+                None => {
+                    let mut c = CachedVertex::default();
+                    place(&ctx, vp, i, &mut c, full);
+                    c
+                }
+            };
+        }
+        if v.iter().any(|c| c.state == FAILED) {
+            continue;
+        }
+        if v[0].outcode & v[1].outcode & v[2].outcode != 0 {
+            continue; // wholly outside one plane
+        }
+        if v[0].outcode | v[1].outcode | v[2].outcode != 0 {
+            clipped(draw, &ctx, idx, lit, id, out);
+            continue;
+        }
+        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
+        if !keeps(&tri, cull) {
+            continue;
+        }
+        if full {
+            // Kept: complete what binning left out (depth), then light.
+            let mut failed = false;
+            for k in 0..3 {
+                let before = v[k].state;
+                if v[k].state == NO_DEPTH {
+                    complete_depth(&mut tri[k], vp);
+                    v[k].z = tri[k].z;
+                    v[k].state = PLACED;
+                }
+                if lit && v[k].state == PLACED {
+                    light_vertex(&ctx, usize::from(idx[k]), &mut v[k]);
+                }
+                if v[k].state != before {
+                    let i = usize::from(idx[k]);
+                    if let Some(c) = cache.get_mut(i & mask) {
+                        if c.key == v[k].key && c.mesh == tag {
+                            *c = v[k];
+                        }
+                    }
+                }
+                failed |= v[k].state == FAILED;
+                let c = i32::from(v[k].color.min(COLOR_ONE)) << 16;
+                tri[k].varyings[2..].fill(c);
+            }
+            if failed {
+                continue;
+            }
+        }
+        out.triangle(id, &tri);
+    }
+    first_id + mesh.indices.len()
+}
+
+/// Transforms, outcodes and projects vertex `i` into `c` (white, not lit yet; without
+/// the depth division unless `depth`).
+fn place(
+    ctx: &Ctx<'_, '_>,
+    vp: &crate::geometry::Viewport,
+    i: usize,
+    c: &mut CachedVertex,
+    depth: bool,
+) {
+    c.key = i as u16;
+    match vertex(ctx.mesh, i as u16, &ctx.model_view, &ctx.mvp, None) {
+        Some(v) => {
+            let (outcode, screen) = if depth {
+                prepare(&v, vp)
+            } else {
+                prepare_without_depth(&v, vp)
+            };
+            c.outcode = outcode;
+            c.set_screen(&screen);
+            c.state = if depth { PLACED } else { NO_DEPTH };
+        }
+        None => c.state = FAILED,
+    }
+}
+
+/// Lights a placed vertex (its colour becomes the light's intensity on all channels).
+fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
+    let Some(l) = ctx.light else {
+        return;
+    };
+    match vertex_intensity(ctx.mesh, i, &ctx.model_view, l) {
+        Some(q) => {
+            c.color = q;
+            c.state = LIT;
+        }
+        None => c.state = FAILED,
+    }
+}
+
+/// A triangle that crosses a clip plane: the full clipper on fresh vertices.
+fn clipped<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    ctx: &Ctx<'_, '_>,
+    idx: &[u16; 3],
+    lit: bool,
+    id: usize,
+    out: &mut impl TriangleOut,
+) {
+    let light = if lit { ctx.light } else { None };
+    let v = |k: usize| vertex(ctx.mesh, idx[k], &ctx.model_view, &ctx.mvp, light);
+    if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+        draw.project(&[a, b, c], &mut |s| out.triangle(id, s));
+    }
+}
+
+/// Sends a mesh's triangles to a band renderer's sink (see
+/// [`BandRenderer::render_spans`](crate::surface::BandRenderer::render_spans)): triangles
+/// the band does not need are skipped before their vertices are transformed. `draw` must be
+/// `draws[draw_index]` of the renderer. Returns the next free triangle id.
+#[allow(clippy::too_many_arguments)]
+pub fn mesh_to_sink<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    draw_index: u8,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    first_id: usize,
+    sink: &mut MeshSink<'_, '_, '_, C>,
+) -> usize {
+    struct ToSink<'x, 's, 'f, 'a, C: TargetColor> {
+        sink: &'x mut MeshSink<'s, 'f, 'a, C>,
+        draw: u8,
+    }
+    impl<C: TargetColor> TriangleOut for ToSink<'_, '_, '_, '_, C> {
+        fn wants(&self, id: usize) -> bool {
+            self.sink.wants(id)
+        }
+        fn window(&self) -> (usize, usize) {
+            self.sink.window()
+        }
+        fn fresh(&self) -> bool {
+            self.sink.fresh()
+        }
+        fn attributes(&self) -> bool {
+            self.sink.attributes()
+        }
+        fn triangle(&mut self, id: usize, tri: &ScreenTriangle) {
+            self.sink.push(id, self.draw, tri);
+        }
+    }
+    let mut out = ToSink {
+        sink,
+        draw: draw_index,
+    };
+    walk_mesh(draw, mesh, model, camera, light, cache, first_id, &mut out)
+}
+
+/// Draws `mesh` into `target` through the vertex cache (`cache`: one entry per vertex for
+/// a single pass per vertex; any length works); returns the pixels written. Same pixels as
+/// [`draw_mesh`](super::draw_mesh).
+pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
+    draw: &Draw<'_, C>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cache: &mut [CachedVertex],
+    target: &mut T,
+) -> u32 {
+    struct ToTarget<'x, 'd, 'a, C: TargetColor, T> {
+        draw: &'d Draw<'a, C>,
+        target: &'x mut T,
+        pixels: u32,
+    }
+    impl<C: TargetColor, T: RenderTarget<Color = C>> TriangleOut for ToTarget<'_, '_, '_, C, T> {
+        fn wants(&self, _: usize) -> bool {
+            true
+        }
+        fn attributes(&self) -> bool {
+            true
+        }
+        fn triangle(&mut self, _: usize, tri: &ScreenTriangle) {
+            let p = self.draw.screen_triangle(tri, self.target);
+            self.pixels = self.pixels.wrapping_add(p);
+        }
+    }
+    let mut out = ToTarget {
+        draw,
+        target,
+        pixels: 0,
+    };
+    walk_mesh(draw, mesh, model, camera, light, cache, 0, &mut out);
+    out.pixels
+}

@@ -1,0 +1,358 @@
+//! Band rendering for meshes of any size: two bytes per triangle instead of a screen
+//! triangle per bin.
+//!
+//! [`BandRenderer::render`] keeps every screen triangle of the frame (about 100 bytes each);
+//! a mesh of a thousand visible triangles does not fit a small part's RAM, and the fallback
+//! runs the whole geometry once per band. [`BandRenderer::render_spans`] keeps, per mesh
+//! triangle, only the range of bands it touches ([`BandRange`], 2 bytes), found by one
+//! geometry pass over the frame; each band then runs the geometry again for the triangles
+//! whose range covers it and skips the others *before transforming anything* (the
+//! geometry asks [`MeshSink::wants`] per triangle). With 8-row bands a small triangle is
+//! re-projected in one or two bands, so the geometry costs about two whole-frame passes
+//! instead of one per band.
+//!
+//! Ladder of storage (same pixels on every rung, tested):
+//!
+//! 1. the frame's screen triangles fit `bins`: they are drawn from the bins, the geometry runs
+//!    once (as [`BandRenderer::render`]);
+//! 2. they do not, but every triangle id has a [`BandRange`]: one binning pass, then each
+//!    band re-projects the triangles it meets ([`BandStats::reprojected`]);
+//! 3. triangle ids past the end of `ranges` have no stored range: they are projected in
+//!    every band ([`BandStats::rewalked`]); with empty `ranges` this is the plain per-band
+//!    re-walk.
+//!
+//! Storage (bytes; 32-bit targets): a screen triangle in `bins` 104, a [`BandRange`] 2, a
+//! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, plus 512 on
+//! the stack for the per-band id windows. For a 320 x 8 band with 16-bit depth (10,240):
+//!
+//! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
+//! |---|---:|---|---:|---:|
+//! | cube | 12 (6 on screen) | bins (16) | 1,664 + cache 32 x 32 = 1,024 | 18.0 KB |
+//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 128 x 32 = 4,096 | 23.9 KB |
+//! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
+//! | any | n | bins | 104 per screen triangle | |
+//!
+//! Bit-exactness: the band pass gets the very same screen triangles as a whole-frame draw
+//! (the geometry is deterministic), in the same order (triangle ids ascending within each
+//! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
+//! viewport only.
+
+use super::band::{rows_of, BandStats, Binned};
+use super::{BandRenderer, Frame, RenderTarget};
+use crate::color::TargetColor;
+use crate::geometry::ScreenTriangle;
+use crate::pipeline::Draw;
+
+/// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
+/// triangle below band 254 is then looked at in every band from 254 on: conservative).
+/// [`BandRange::EMPTY`] (the default, all zero bits so arrays of it start zeroed) when the
+/// triangle emits nothing visible.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BandRange {
+    first: u8,
+    end: u8,
+}
+
+impl Default for BandRange {
+    fn default() -> Self {
+        BandRange::EMPTY
+    }
+}
+
+/// Largest band index a range stores; later bands share it.
+const LAST_BAND: u32 = 254;
+
+impl BandRange {
+    /// No band (culled, clipped away or outside the frame's rows).
+    pub const EMPTY: BandRange = BandRange { first: 0, end: 0 };
+
+    /// True when no band is covered.
+    pub fn is_empty(self) -> bool {
+        self.first >= self.end
+    }
+
+    /// Whether band `index` (saturated at 254) is covered.
+    #[inline]
+    pub fn covers(self, index: u32) -> bool {
+        let b = index.min(LAST_BAND) as u8;
+        self.first <= b && b < self.end
+    }
+
+    /// Grows the range to include bands `first..=last` (each at most 254).
+    fn include(&mut self, first: u8, last: u8) {
+        let end = last.saturating_add(1);
+        if self.is_empty() {
+            *self = BandRange { first, end };
+        } else {
+            self.first = self.first.min(first);
+            self.end = self.end.max(end);
+        }
+    }
+}
+
+/// Receives the screen triangles of a frame's geometry, tagged with a triangle id (the
+/// triangle's index in its mesh plus the mesh's first id) and the index of their draw.
+#[derive(Debug)]
+pub struct MeshSink<'s, 'f, 'a, C: TargetColor> {
+    pass: Pass<'s, 'f, 'a, C>,
+}
+
+#[derive(Debug)]
+enum Pass<'s, 'f, 'a, C: TargetColor> {
+    /// The binning pass: screen triangles to `bins` while they fit, band ranges always.
+    Bin {
+        windows: &'s mut Windows,
+        bins: &'s mut [Binned],
+        len: usize,
+        bins_full: bool,
+        ranges: &'s mut [BandRange],
+        ranges_short: bool,
+        rows: u32,
+        height: u32,
+        triangles: u32,
+    },
+    /// One band: draw what covers it.
+    Band {
+        window: (usize, usize),
+        draws: &'s [&'s Draw<'a, C>],
+        band: &'s mut Frame<'f, C>,
+        ranges: &'s [BandRange],
+        index: u32,
+        pixels: u32,
+    },
+}
+
+/// Per group of bands, the lowest and highest triangle id that meets it (so a band pass
+/// need not ask about the ids outside). 64 groups of `group` consecutive bands.
+#[derive(Debug)]
+struct Windows {
+    ids: [(usize, usize); WINDOWS],
+    group: u32,
+}
+
+const WINDOWS: usize = 64;
+
+impl Windows {
+    fn window(&self, band: u32) -> (usize, usize) {
+        self.ids
+            .get((band / self.group) as usize)
+            .copied()
+            .unwrap_or((0, usize::MAX))
+    }
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// The triangle ids this pass may want, `lo..=hi` (the whole range in the binning
+    /// pass; in a band pass, the ids of the triangles that met the band's group). The
+    /// geometry may skip the ids outside without asking [`wants`](Self::wants).
+    #[inline]
+    pub fn window(&self) -> (usize, usize) {
+        match &self.pass {
+            Pass::Bin { .. } => (0, usize::MAX),
+            Pass::Band { window, .. } => *window,
+        }
+    }
+
+    /// True in the binning pass, which starts a frame: caches of transformed vertices
+    /// kept across the band passes must be emptied then (the matrices may have changed).
+    #[inline]
+    pub fn fresh(&self) -> bool {
+        matches!(self.pass, Pass::Bin { .. })
+    }
+
+    /// Whether triangle `id` must be projected in this pass; when `false` the geometry
+    /// should skip it before transforming its vertices.
+    #[inline]
+    pub fn wants(&self, id: usize) -> bool {
+        match &self.pass {
+            Pass::Bin { .. } => true,
+            Pass::Band { ranges, index, .. } => ranges.get(id).is_none_or(|r| r.covers(*index)),
+        }
+    }
+
+    /// Whether the screen triangles pushed now need their attributes (texture coordinates
+    /// and lighting): `false` in the binning pass once the bins are full, where only their
+    /// rows count, so the geometry may skip per-vertex lighting.
+    #[inline]
+    pub fn attributes(&self) -> bool {
+        match &self.pass {
+            Pass::Bin { bins_full, .. } => !*bins_full,
+            Pass::Band { .. } => true,
+        }
+    }
+
+    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]`.
+    pub fn push(&mut self, id: usize, draw: u8, tri: &ScreenTriangle) {
+        match &mut self.pass {
+            Pass::Bin {
+                windows,
+                bins,
+                len,
+                bins_full,
+                ranges,
+                ranges_short,
+                rows,
+                height,
+                triangles,
+            } => {
+                *triangles += 1;
+                if !*bins_full {
+                    match bins.get_mut(*len) {
+                        Some(slot) => {
+                            *slot = Binned::new(draw, tri);
+                            *len += 1;
+                        }
+                        None => *bins_full = true,
+                    }
+                }
+                // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
+                let (r0, r1) = rows_of(tri);
+                let last_row = *height as i32 - 1;
+                if r1 <= r0 || r1 <= 0 || r0 > last_row {
+                    return; // no row of the frame
+                }
+                let band = |r: i32| r.clamp(0, last_row) as u32 / *rows;
+                let (b0, b1) = (band(r0), band(r1 - 1));
+                let sat = |b: u32| b.min(LAST_BAND) as u8;
+                match ranges.get_mut(id) {
+                    Some(r) => r.include(sat(b0), sat(b1)),
+                    None => *ranges_short = true,
+                }
+                for g in b0 / windows.group..=b1 / windows.group {
+                    if let Some(w) = windows.ids.get_mut(g as usize) {
+                        *w = (w.0.min(id), w.1.max(id));
+                    }
+                }
+            }
+            Pass::Band {
+                draws,
+                band,
+                pixels,
+                ..
+            } => {
+                // Rows r0..r1 against the band's first..end (both ends excluded): a
+                // triangle that only touches the band's edge costs no set-up.
+                let (first, end) = band.row_range();
+                let (r0, r1) = rows_of(tri);
+                if r1 <= first || r0 >= end || r1 <= r0 {
+                    return;
+                }
+                if let Some(d) = draws.get(usize::from(draw)) {
+                    *pixels += d.screen_triangle(tri, *band);
+                }
+            }
+        }
+    }
+}
+
+impl<C: TargetColor> BandRenderer<'_, C> {
+    /// Draws one frame of meshes of any size (see the module docs). `geometry` is called
+    /// once for binning and then once per band; it must push the same screen triangles in
+    /// the same order each time (for each triangle id it [`wants`](MeshSink::wants)),
+    /// usually through [`crate::scene::mesh_to_sink`]. `bins` holds screen triangles while
+    /// they fit (may be empty); `ranges` one [`BandRange`] per triangle id (may be shorter
+    /// than the frame: see [`BandStats::rewalked`]). Each band is cleared to `clear`, drawn
+    /// and passed to `flush`; the first flush error stops the frame and is returned.
+    pub fn render_spans<E>(
+        &mut self,
+        draws: &[&Draw<'_, C>],
+        bins: &mut [Binned],
+        ranges: &mut [BandRange],
+        clear: C,
+        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+        mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+    ) -> Result<BandStats, E> {
+        ranges.fill(BandRange::EMPTY);
+        let rows = self.rows.max(1);
+        let mut windows = Windows {
+            ids: [(usize::MAX, 0); WINDOWS],
+            group: self.height.div_ceil(rows).div_ceil(WINDOWS as u32).max(1),
+        };
+        let mut sink = MeshSink {
+            pass: Pass::Bin {
+                windows: &mut windows,
+                bins,
+                len: 0,
+                bins_full: false,
+                ranges,
+                ranges_short: false,
+                rows,
+                height: self.height,
+                triangles: 0,
+            },
+        };
+        geometry(&mut sink);
+        let Pass::Bin {
+            windows,
+            bins,
+            len,
+            bins_full,
+            ranges,
+            ranges_short,
+            triangles,
+            ..
+        } = sink.pass
+        else {
+            return Ok(BandStats::default());
+        };
+        let mut stats = BandStats {
+            triangles,
+            reprojected: bins_full,
+            rewalked: bins_full && ranges_short,
+            ..BandStats::default()
+        };
+        let ranges: &[BandRange] = ranges;
+        let windows: &Windows = windows;
+        self.each_band(&mut stats, clear, &mut flush, |band, index| {
+            if bins_full {
+                let mut s = MeshSink {
+                    pass: Pass::Band {
+                        // Ids without a stored range are wanted in every band.
+                        window: if ranges_short {
+                            (0, usize::MAX)
+                        } else {
+                            windows.window(index)
+                        },
+                        draws,
+                        band,
+                        ranges,
+                        index,
+                        pixels: 0,
+                    },
+                };
+                geometry(&mut s);
+                match s.pass {
+                    Pass::Band { pixels, .. } => pixels,
+                    Pass::Bin { .. } => 0,
+                }
+            } else {
+                let (r0, r1) = band.row_range();
+                let mut pixels = 0;
+                for b in bins[..len].iter().filter(|b| b.meets(r0, r1)) {
+                    if let Some(d) = draws.get(usize::from(b.draw)) {
+                        pixels += d.screen_triangle(&b.tri, band);
+                    }
+                }
+                pixels
+            }
+        })?;
+        Ok(stats)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_grow_and_saturate() {
+        let mut r = BandRange::EMPTY;
+        assert!(r.is_empty() && !r.covers(0));
+        r.include(3, 4);
+        r.include(2, 2);
+        assert!(r.covers(2) && r.covers(4) && !r.covers(5) && !r.covers(1));
+        let mut far = BandRange::EMPTY;
+        far.include(254, 254);
+        assert!(far.covers(300) && far.covers(254) && !far.covers(253));
+    }
+}
