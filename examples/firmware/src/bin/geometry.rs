@@ -52,7 +52,7 @@ impl TriangleOut for Count {
         self.1 = self
             .1
             .wrapping_mul(31)
-            .wrapping_add(tri[0].x as u32 ^ tri[2].color[0] as u32);
+            .wrapping_add(tri[0].x as u32 ^ tri[2].varyings[2] as u32);
     }
 }
 
