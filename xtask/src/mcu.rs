@@ -819,11 +819,12 @@ pub fn mcu(rest: &[String]) -> ExitCode {
         qemu_version()
     );
     println!(
-        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band, \
-         16 triangle bins), one frame per run (QEMU is deterministic: one frame is enough).\n\
+        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band; \
+         16 triangle bins for the cube and floor, a 2-byte band range per triangle for the \
+         sphere; 24 KB of RAM), one frame per run (QEMU is deterministic: one frame is enough).\n\
          insns/px = instructions executed by the renderer (geometry, binning, band clears, \
          raster) / pixels that passed the depth test; the harness's checksum of each band is \
-         outside the counted region. (rewalk) = bins overflowed, geometry ran once per band.\n\
+         outside the counted region. (rewalk) = storage overflowed, some geometry ran once per band.\n\
          flash = vector table + text + rodata + data (textures and the sphere mesh are in \
          flash); RAM = data + bss + measured stack high-water mark (band buffers are on the stack).\n"
     );
