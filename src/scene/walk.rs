@@ -21,7 +21,10 @@
 //! The cache is caller storage of [`CachedVertex`] (32 bytes each): with one entry per mesh
 //! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
 //! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
-//! entries); empty, nothing is cached (each corner is prepared on its own).
+//! entries); empty, nothing is cached (each corner is prepared on its own). A band
+//! renderer's sink keeps the cache across its band passes ([`TriangleOut::fresh`]), and its
+//! binning pass places vertices without the depth division (completed for the triangles a
+//! band draws).
 
 use crate::color::TargetColor;
 use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_depth};
@@ -123,8 +126,10 @@ struct Ctx<'m, 'l> {
 
 /// Walks the triangles of `mesh` (ids `first_id..`), preparing vertices through `cache`,
 /// and hands every visible screen triangle of `draw`'s viewport and culling to `out`.
-/// Lighting is skipped when `draw` does not use vertex colours. Returns the id after the
-/// last triangle (`first_id + mesh.triangles()`).
+/// Lighting is skipped when `draw` does not use vertex colours (then, unlike `draw_mesh`, a
+/// normal that overflows the fixed-point range does not drop its triangles: unit normals
+/// under a rotation never do). Returns the id after the last triangle
+/// (`first_id + mesh.triangles()`).
 #[allow(clippy::too_many_arguments)]
 pub fn walk_mesh<C: TargetColor>(
     draw: &Draw<'_, C>,
