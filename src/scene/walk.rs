@@ -57,9 +57,9 @@ pub struct CachedVertex {
     uv: [i32; 2],
     /// Colour, one channel for all three (the walker's lighting is grey).
     color: u16,
-    key: u16,
-    /// The low 16 bits of the mesh's first triangle id (meshes sharing a cache).
-    mesh: u16,
+    /// Vertex index in the low 16 bits, the low 16 bits of the mesh's first triangle id
+    /// (meshes sharing a cache) in the high ones: one compare finds a hit.
+    key: u32,
     outcode: u8,
     state: u8,
 }
@@ -74,7 +74,6 @@ impl CachedVertex {
         uv: [0; 2],
         color: 0,
         key: 0,
-        mesh: 0,
         outcode: 0,
         state: EMPTY,
     };
@@ -169,7 +168,7 @@ pub fn walk_mesh<C: TargetColor>(
             c.state = EMPTY;
         }
     }
-    let tag = first_id as u16;
+    let tag = (first_id as u32 & 0xFFFF) << 16;
     let (lo, hi) = out.window();
     let len = mesh.indices.len();
     let start = lo.saturating_sub(first_id).min(len);
@@ -191,9 +190,10 @@ pub fn walk_mesh<C: TargetColor>(
             let i = usize::from(idx[k]);
             v[k] = match cache.get_mut(i & mask) {
                 Some(c) => {
-                    if c.state == EMPTY || usize::from(c.key) != i || c.mesh != tag {
+                    let key = i as u32 | tag;
+                    if c.key != key || c.state == EMPTY {
                         place(&ctx, vp, i, c, full);
-                        c.mesh = tag;
+                        c.key = key;
                     }
                     *c
                 }
@@ -234,7 +234,7 @@ pub fn walk_mesh<C: TargetColor>(
                 if v[k].state != before {
                     let i = usize::from(idx[k]);
                     if let Some(c) = cache.get_mut(i & mask) {
-                        if c.key == v[k].key && c.mesh == tag {
+                        if c.key == v[k].key {
                             *c = v[k];
                         }
                     }
@@ -260,7 +260,6 @@ fn place(
     c: &mut CachedVertex,
     depth: bool,
 ) {
-    c.key = i as u16;
     match vertex(ctx.mesh, i as u16, &ctx.model_view, &ctx.mvp, None) {
         Some(v) => {
             let (outcode, screen) = if depth {
