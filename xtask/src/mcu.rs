@@ -174,7 +174,7 @@ est. cycles = static model over the exact per-PC histogram of the counted region
   Cortex-M4F: ALU/MUL/MLA 1, load/store 2 (1 when following another), LDM/STM/PUSH/POP 1+N,
               taken branch 1+P (P=2), VFP 1 (VMLA 3, VDIV 14), SDIV/UDIV 7 (worst 12)
   Cortex-M0+: ALU 1, single-cycle MULS (RP2040/STM32G0 class), load/store 2, taken branch 2,
-              BL 3, PUSH/POP 1+N (+2 with PC); QEMU runs ARMv6-M on its Cortex-M0
+              BL 3, PUSH/POP 1+N (+2 with PC); QEMU runs the ARMv6-M code on mps2-an386
   RV32IMC:    generic single-issue in-order (SiFive E31-like): ALU/MUL 1, load 2, store 1,
               DIV/REM 33, taken branch/jump 3, not-taken 1
 Real parts add flash wait states (hidden by caches on some) and contention: an estimate.";
