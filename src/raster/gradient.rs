@@ -245,7 +245,7 @@ mod tests {
             x ^= x >> 7;
             x ^= x << 17;
             let a = (x as i64) >> (x % 40);
-            let b = ((x >> 20) as i64) >> (20 + (x >> 58));
+            let b = ((x >> 20) as i64) >> (20 + (x >> 60));
             assert_eq!(mul_split(a, b), a.wrapping_mul(b), "{a} * {b}");
         }
     }

@@ -21,7 +21,10 @@
 //! The cache is caller storage of [`CachedVertex`] (32 bytes each): with one entry per mesh
 //! vertex each vertex is prepared once; shorter, it is direct-mapped (`index mod 2^k`),
 //! which keeps the reuse of a mesh stored in strips (the demo sphere's rings need 64
-//! entries); empty, nothing is cached (each corner is prepared on its own).
+//! entries); empty, nothing is cached (each corner is prepared on its own). A band
+//! renderer's sink keeps the cache across its band passes ([`TriangleOut::fresh`]), and its
+//! binning pass places vertices without the depth division (completed for the triangles a
+//! band draws).
 
 use crate::color::TargetColor;
 use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_depth};
@@ -54,9 +57,9 @@ pub struct CachedVertex {
     uv: [i32; 2],
     /// Colour, one channel for all three (the walker's lighting is grey).
     color: u16,
-    key: u16,
-    /// The low 16 bits of the mesh's first triangle id (meshes sharing a cache).
-    mesh: u16,
+    /// Vertex index in the low 16 bits, the low 16 bits of the mesh's first triangle id
+    /// (meshes sharing a cache) in the high ones: one compare finds a hit.
+    key: u32,
     outcode: u8,
     state: u8,
 }
@@ -71,7 +74,6 @@ impl CachedVertex {
         uv: [0; 2],
         color: 0,
         key: 0,
-        mesh: 0,
         outcode: 0,
         state: EMPTY,
     };
@@ -124,8 +126,10 @@ struct Ctx<'m, 'l> {
 
 /// Walks the triangles of `mesh` (ids `first_id..`), preparing vertices through `cache`,
 /// and hands every visible screen triangle of `draw`'s viewport and culling to `out`.
-/// Lighting is skipped when `draw` does not use vertex colours. Returns the id after the
-/// last triangle (`first_id + mesh.triangles()`).
+/// Lighting is skipped when `draw` does not use vertex colours (then, unlike `draw_mesh`, a
+/// normal that overflows the fixed-point range does not drop its triangles: unit normals
+/// under a rotation never do). Returns the id after the last triangle
+/// (`first_id + mesh.triangles()`).
 #[allow(clippy::too_many_arguments)]
 pub fn walk_mesh<C: TargetColor>(
     draw: &Draw<'_, C>,
@@ -165,7 +169,7 @@ pub fn walk_mesh<C: TargetColor>(
             c.state = EMPTY;
         }
     }
-    let tag = first_id as u16;
+    let tag = (first_id as u32 & 0xFFFF) << 16;
     let (lo, hi) = out.window();
     let len = mesh.indices.len();
     let start = lo.saturating_sub(first_id).min(len);
@@ -187,9 +191,10 @@ pub fn walk_mesh<C: TargetColor>(
             let i = usize::from(idx[k]);
             v[k] = match cache.get_mut(i & mask) {
                 Some(c) => {
-                    if c.state == EMPTY || usize::from(c.key) != i || c.mesh != tag {
+                    let key = i as u32 | tag;
+                    if c.key != key || c.state == EMPTY {
                         place(&ctx, vp, i, c, full);
-                        c.mesh = tag;
+                        c.key = key;
                     }
                     *c
                 }
@@ -230,7 +235,7 @@ pub fn walk_mesh<C: TargetColor>(
                 if v[k].state != before {
                     let i = usize::from(idx[k]);
                     if let Some(c) = cache.get_mut(i & mask) {
-                        if c.key == v[k].key && c.mesh == tag {
+                        if c.key == v[k].key {
                             *c = v[k];
                         }
                     }
@@ -257,7 +262,6 @@ fn place(
     c: &mut CachedVertex,
     depth: bool,
 ) {
-    c.key = i as u16;
     match vertex(ctx.mesh, i as u16, &ctx.model_view, &ctx.mvp, None) {
         Some(v) => {
             let (outcode, screen) = if depth {

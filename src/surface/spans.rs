@@ -78,6 +78,12 @@ impl BandRange {
         self.first <= b && b < self.end
     }
 
+    /// Whether band `b` (already saturated at 254) is covered.
+    #[inline]
+    fn covers_saturated(self, b: u8) -> bool {
+        self.first <= b && b < self.end
+    }
+
     /// Grows the range to include bands `first..=last` (each at most 254).
     fn include(&mut self, first: u8, last: u8) {
         let end = last.saturating_add(1);
@@ -95,6 +101,8 @@ impl BandRange {
 #[derive(Debug)]
 pub struct MeshSink<'s, 'f, 'a, C: TargetColor> {
     pass: Pass<'s, 'f, 'a, C>,
+    /// What [`MeshSink::attributes`] says (false once the binning pass's bins are full).
+    attributes: bool,
 }
 
 #[derive(Debug)]
@@ -117,7 +125,8 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
         draws: &'s [&'s Draw<'a, C>],
         band: &'s mut Frame<'f, C>,
         ranges: &'s [BandRange],
-        index: u32,
+        /// Band index, saturated at 254 as the ranges are.
+        index: u8,
         pixels: u32,
     },
 }
@@ -166,7 +175,9 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     pub fn wants(&self, id: usize) -> bool {
         match &self.pass {
             Pass::Bin { .. } => true,
-            Pass::Band { ranges, index, .. } => ranges.get(id).is_none_or(|r| r.covers(*index)),
+            Pass::Band { ranges, index, .. } => {
+                ranges.get(id).is_none_or(|r| r.covers_saturated(*index))
+            }
         }
     }
 
@@ -175,10 +186,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     /// rows count, so the geometry may skip per-vertex lighting.
     #[inline]
     pub fn attributes(&self) -> bool {
-        match &self.pass {
-            Pass::Bin { bins_full, .. } => !*bins_full,
-            Pass::Band { .. } => true,
-        }
+        self.attributes
     }
 
     /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]`.
@@ -202,7 +210,10 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                             *slot = Binned::new(draw, tri);
                             *len += 1;
                         }
-                        None => *bins_full = true,
+                        None => {
+                            *bins_full = true;
+                            self.attributes = false;
+                        }
                     }
                 }
                 // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
@@ -280,6 +291,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 height: self.height,
                 triangles: 0,
             },
+            attributes: true,
         };
         geometry(&mut sink);
         let Pass::Bin {
@@ -316,9 +328,10 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                         draws,
                         band,
                         ranges,
-                        index,
+                        index: index.min(LAST_BAND) as u8,
                         pixels: 0,
                     },
+                    attributes: true,
                 };
                 geometry(&mut s);
                 match s.pass {

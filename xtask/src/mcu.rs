@@ -174,7 +174,7 @@ est. cycles = static model over the exact per-PC histogram of the counted region
   Cortex-M4F: ALU/MUL/MLA 1, load/store 2 (1 when following another), LDM/STM/PUSH/POP 1+N,
               taken branch 1+P (P=2), VFP 1 (VMLA 3, VDIV 14), SDIV/UDIV 7 (worst 12)
   Cortex-M0+: ALU 1, single-cycle MULS (RP2040/STM32G0 class), load/store 2, taken branch 2,
-              BL 3, PUSH/POP 1+N (+2 with PC); QEMU runs ARMv6-M on its Cortex-M0
+              BL 3, PUSH/POP 1+N (+2 with PC); QEMU runs the ARMv6-M code on mps2-an386
   RV32IMC:    generic single-issue in-order (SiFive E31-like): ALU/MUL 1, load 2, store 1,
               DIV/REM 33, taken branch/jump 3, not-taken 1
 Real parts add flash wait states (hidden by caches on some) and contention: an estimate.";
@@ -819,11 +819,12 @@ pub fn mcu(rest: &[String]) -> ExitCode {
         qemu_version()
     );
     println!(
-        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band, \
-         16 triangle bins), one frame per run (QEMU is deterministic: one frame is enough).\n\
+        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band; \
+         16 triangle bins for the cube and floor, a 2-byte band range per triangle for the \
+         sphere; 24 KB of RAM), one frame per run (QEMU is deterministic: one frame is enough).\n\
          insns/px = instructions executed by the renderer (geometry, binning, band clears, \
          raster) / pixels that passed the depth test; the harness's checksum of each band is \
-         outside the counted region. (rewalk) = bins overflowed, geometry ran once per band.\n\
+         outside the counted region. (rewalk) = storage overflowed, some geometry ran once per band.\n\
          flash = vector table + text + rodata + data (textures and the sphere mesh are in \
          flash); RAM = data + bss + measured stack high-water mark (band buffers are on the stack).\n"
     );
