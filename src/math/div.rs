@@ -11,6 +11,10 @@
 //! * `n < 2^32`, `d < 2^32`: one 32-bit division (one `udiv` on Cortex-M4F and RV32IM);
 //! * `d < 2^16`: schoolbook long division in base 2^16 (the high word, then two 16-bit
 //!   digits): three 32-bit divisions, each of a value below `d * 2^16 < 2^32`;
+//! * `d < 2^32` and a quotient below 2^32 (`n < d * 2^32`, the set-up's `w_min / w` and most
+//!   plane gradients): two 16-bit quotient digits on the normalized divisor (Knuth's
+//!   algorithm D as in Hacker's Delight's `divlu`): two 32-bit divisions and at most two
+//!   corrections each;
 //! * otherwise: the 64-bit division.
 //!
 //! [`SmallDivisor`] divides many numerators by one divisor below 2^16 with a reciprocal.
@@ -45,7 +49,47 @@ pub fn div_u64(n: u64, d: u64) -> u64 {
     if (n | d) >> 32 == 0 {
         return u64::from(n as u32 / d as u32);
     }
+    if d >> 32 == 0 && n >> 32 < d {
+        return u64::from(div_64_32(n, d as u32));
+    }
     n / d
+}
+
+/// `n / d` for `2^16 <= d < 2^32` and `n < d * 2^32` (so the quotient fits `u32`), exactly:
+/// two base-2^16 digits of long division on the normalized divisor, each estimated by a
+/// 32-bit division by the divisor's high half and corrected at most twice.
+#[inline]
+fn div_64_32(n: u64, d: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let s = d.leading_zeros();
+    let v = d << s;
+    let (vh, vl) = (v >> 16, v & 0xFFFF);
+    // n < d 2^32, so n << s < v 2^32 <= 2^64: no bits are lost.
+    let n = n << s;
+    let (un32, un10) = ((n >> 32) as u32, n as u32);
+    let (un1, un0) = (un10 >> 16, un10 & 0xFFFF);
+    // First digit. vh >= 2^15 (v is normalized), so the estimate is at most 2 too large.
+    let mut q1 = un32 / vh;
+    let mut rhat = un32 - q1 * vh;
+    while q1 >= B || q1 * vl > (rhat << 16 | un1) {
+        q1 -= 1;
+        rhat += vh;
+        if rhat >= B {
+            break;
+        }
+    }
+    // The partial remainder (< v) modulo 2^32.
+    let un21 = (un32 << 16 | un1).wrapping_sub(q1.wrapping_mul(v));
+    let mut q0 = un21 / vh;
+    let mut rhat = un21 - q0 * vh;
+    while q0 >= B || q0 * vl > (rhat << 16 | un0) {
+        q0 -= 1;
+        rhat += vh;
+        if rhat >= B {
+            break;
+        }
+    }
+    q1 << 16 | q0
 }
 
 /// `n / d` for signed `n` and positive `d`, rounded to nearest with ties away from zero
@@ -161,6 +205,41 @@ fn mul_hi_split(a: u32, b: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_two_digit_path_equals_the_plain_division() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let check = |n: u64, d: u64| assert_eq!(div_u64(n, d), n / d, "{n} / {d}");
+        for d in [
+            1u64 << 16,
+            (1 << 16) + 1,
+            0x8000_0000,
+            0xFFFF_FFFF,
+            0x1_0000_0001,
+            123_456_789,
+        ] {
+            for n in [0, 1, d - 1, d, d * 0xFFFF_FFFF, (d << 32) - 1, u64::MAX] {
+                check(n, d);
+            }
+        }
+        for _ in 0..500_000 {
+            let d = (next() >> (next() % 48)).max(1);
+            let n = next() >> (next() % 64);
+            check(n, d);
+            // Quotients just below 2^32, where the digit estimates need their corrections.
+            let q = next() >> 32;
+            let r = next() % d;
+            if let Some(n) = d.checked_mul(q).and_then(|m| m.checked_add(r)) {
+                check(n, d);
+            }
+        }
+    }
 
     #[test]
     fn small_divisor_equals_the_plain_division() {
