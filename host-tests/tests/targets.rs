@@ -438,3 +438,53 @@ fn bad_input_gives_the_documented_errors() {
         assert_error(d.with_subdivision(log2_n), sub_err, &["log2_n"]);
     }
 }
+
+/// The frame's depth floor (a one-value hierarchical depth buffer) lets spans wholly nearer
+/// than everything stored skip reading depth; it must never let a farther span through.
+#[test]
+fn depth_floor_never_lets_a_farther_span_through() {
+    use fixel::math::Fx;
+    use fixel::pipeline::DepthTest;
+    use fixel::surface::RenderTarget;
+    let quad = |z: f32| -> [[ClipVertex; 3]; 2] {
+        let v = |x: f32, y: f32| {
+            ClipVertex::new(
+                [Fx::from_num(x), Fx::from_num(y), Fx::from_num(z), Fx::ONE],
+                [Fx::ZERO; 2],
+            )
+        };
+        let (a, b, c, d) = (v(-0.9, -0.9), v(0.9, -0.9), v(0.9, 0.9), v(-0.9, 0.9));
+        [[a, b, c], [a, c, d]]
+    };
+    let mode = DrawMode {
+        shading: Shading::Flat,
+        depth: DepthTest::Less,
+        ..DrawMode::default()
+    };
+    let vp = Viewport::new(0, 0, 40, 30).unwrap();
+    let draw = Draw::<Rgb565>::dynamic(mode, None, vp).unwrap();
+    let (mut color, mut depth) = ([Rgb565::new(0, 0, 0); 40 * 30], [0u16; 40 * 30]);
+    let mut frame = Frame::new(&mut color, 40, 30)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    // Before a clear the stored depths are unknown: no bound, nothing skipped.
+    assert_eq!(frame.depth_floor(), 0);
+    assert_eq!(
+        draw.clip_triangles(&quad(0.5), &mut frame),
+        0,
+        "zeros in depth: nothing passes"
+    );
+    frame.clear(Rgb565::new(0, 0, 0));
+    assert_eq!(frame.depth_floor(), u16::MAX);
+    let near = draw.clip_triangles(&quad(-0.5), &mut frame);
+    assert!(near > 800, "{near}");
+    let floor = frame.depth_floor();
+    assert!(floor < u16::MAX && floor > 0, "{floor}");
+    // Farther than what is stored: every pixel fails, though the floor is below it.
+    assert_eq!(draw.clip_triangles(&quad(0.5), &mut frame), 0);
+    // Nearer than everything: all pass (the skipped-read path), and the floor drops.
+    assert_eq!(draw.clip_triangles(&quad(-0.8), &mut frame), near);
+    assert!(frame.depth_floor() < floor);
+    assert_eq!(draw.clip_triangles(&quad(-0.5), &mut frame), 0);
+}

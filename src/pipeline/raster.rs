@@ -8,7 +8,7 @@
 
 use super::interp::lambda_at;
 use super::setup::setup;
-use super::span::{span, Scratch, SpanCtx};
+use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -68,9 +68,26 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
 {
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
+        let floor = self.target.depth_floor();
+        let mut bound = DepthBound {
+            floor,
+            lowest: u16::MAX,
+        };
         if let Some((row, depth)) = self.target.row_mut(y) {
-            let n = span::<S, P, D, C>(&self.ctx, &mut self.scratch, y, x0, x1, row, depth);
+            let n = span::<S, P, D, C>(
+                &self.ctx,
+                &mut bound,
+                &mut self.scratch,
+                y,
+                x0,
+                x1,
+                row,
+                depth,
+            );
             self.pixels = self.pixels.wrapping_add(n);
+        }
+        if bound.lowest < floor {
+            self.target.lower_depth_floor(bound.lowest);
         }
     }
 }

@@ -225,15 +225,54 @@ fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
 
 /// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels).
 #[inline(always)]
-fn chunk_mask<S: Shader, const Z: bool>(z: i32, dz: i32, zc: &mut [u16], n: usize) -> u32 {
+fn chunk_mask<S: Shader, const Z: bool>(
+    z: i32,
+    dz: i32,
+    zc: &mut [u16],
+    n: usize,
+    bound: &mut DepthBound,
+) -> u32 {
     if !Z {
-        low_bits(n)
-    } else if S::DISCARDS {
+        return low_bits(n);
+    }
+    // Depth is linear along the chunk: its extremes are at the ends.
+    let z_end = z.wrapping_add(dz.wrapping_mul(n as i32 - 1));
+    let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
+    let (d_lo, d_hi) = (d(z.min(z_end)), d(z.max(z_end)));
+    let mask = if S::DISCARDS {
         // Test only: depth is written for the pixels the shader keeps.
         depth_chunk::<false>(z, dz, zc) & low_bits(n)
+    } else if d_hi < bound.floor {
+        // Nearer than everything stored: every pixel passes, no depth is read.
+        depth_fill(z, dz, zc);
+        low_bits(n)
     } else {
         depth_chunk::<true>(z, dz, zc) & low_bits(n)
+    };
+    if mask != 0 {
+        bound.lowest = bound.lowest.min(d_lo);
     }
+    mask
+}
+
+/// Writes the chunk's depths (all of them pass the test).
+#[inline(never)]
+fn depth_fill(z0: i32, dz: i32, zrow: &mut [u16]) {
+    let mut z = z0;
+    for zb in zrow.iter_mut() {
+        *zb = (z >> 14).clamp(0, 0xFFFF) as u16;
+        z = z.wrapping_add(dz);
+    }
+}
+
+/// The target's depth floor for one span (see `RenderTarget::depth_floor`) and the lowest
+/// depth the span may have written.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DepthBound {
+    /// Every stored depth is at least this when the span starts.
+    pub floor: u16,
+    /// A lower bound of the depths this span wrote (`u16::MAX` when none).
+    pub lowest: u16,
 }
 
 /// Affine and subdivided spans: per chunk, the depth mask, then each linear piece of the
@@ -241,6 +280,7 @@ fn chunk_mask<S: Shader, const Z: bool>(z: i32, dz: i32, zc: &mut [u16], n: usiz
 #[inline(always)]
 fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
     ctx: &SpanCtx<S>,
+    bound: &mut DepthBound,
     x: i32,
     y: i32,
     out: &mut [C],
@@ -271,7 +311,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
             (&mut [][..], &mut [][..])
         };
         zs = zrest;
-        let mask = chunk_mask::<S, Z>(z, dz, zc, n);
+        let mask = chunk_mask::<S, Z>(z, dz, zc, n, bound);
         let mut off = 0usize;
         while off < n {
             let Some(p) = it.piece(s, n - off, spec) else {
@@ -352,6 +392,7 @@ fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i
 #[inline(always)]
 fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
     ctx: &SpanCtx<S>,
+    bound: &mut DepthBound,
     scratch: &mut Scratch<S::Varyings>,
     x: i32,
     y: i32,
@@ -389,7 +430,7 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
         };
         zs = zrest;
         let mask = if depth {
-            chunk_mask::<S, true>(z, dz, zc, n)
+            chunk_mask::<S, true>(z, dz, zc, n, bound)
         } else {
             low_bits(n)
         };
@@ -425,8 +466,10 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
 /// emitted, and returns the pixels written. Out-of-range spans are ignored (they cannot
 /// happen; this keeps it panic-free).
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
     ctx: &SpanCtx<S>,
+    bound: &mut DepthBound,
     scratch: &mut Scratch<S::Varyings>,
     y: i32,
     x0: i32,
@@ -462,30 +505,32 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     };
     match (kind, affine, zrow) {
         (_, true, Some(z)) if S::SMALL => {
-            run::<S, C, L<S, false>, true>(ctx, scratch, x0, y, out, z)
+            run::<S, C, L<S, false>, true>(ctx, bound, scratch, x0, y, out, z)
         }
         (_, true, None) if S::SMALL => {
-            run::<S, C, L<S, false>, true>(ctx, scratch, x0, y, out, &mut [])
+            run::<S, C, L<S, false>, true>(ctx, bound, scratch, x0, y, out, &mut [])
         }
-        (_, true, Some(z)) => run_linear::<S, C, false, true>(ctx, x0, y, out, z),
-        (_, true, None) => run_linear::<S, C, false, false>(ctx, x0, y, out, &mut []),
+        (_, true, Some(z)) => run_linear::<S, C, false, true>(ctx, bound, x0, y, out, z),
+        (_, true, None) => run_linear::<S, C, false, false>(ctx, bound, x0, y, out, &mut []),
         (ProjKind::Subdivided, _, Some(z)) if long => {
-            run_linear::<S, C, true, true>(ctx, x0, y, out, z)
+            run_linear::<S, C, true, true>(ctx, bound, x0, y, out, z)
         }
         (ProjKind::Subdivided, _, None) if long => {
-            run_linear::<S, C, true, false>(ctx, x0, y, out, &mut [])
+            run_linear::<S, C, true, false>(ctx, bound, x0, y, out, &mut [])
         }
         (ProjKind::Subdivided, _, Some(z)) => {
-            run::<S, C, L<S, true>, true>(ctx, scratch, x0, y, out, z)
+            run::<S, C, L<S, true>, true>(ctx, bound, scratch, x0, y, out, z)
         }
         (ProjKind::Subdivided, _, None) if S::SMALL => {
-            run::<S, C, L<S, true>, true>(ctx, scratch, x0, y, out, &mut [])
+            run::<S, C, L<S, true>, true>(ctx, bound, scratch, x0, y, out, &mut [])
         }
         (ProjKind::Subdivided, _, None) => {
-            run::<S, C, L<S, true>, false>(ctx, scratch, x0, y, out, &mut [])
+            run::<S, C, L<S, true>, false>(ctx, bound, scratch, x0, y, out, &mut [])
         }
-        (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, scratch, x0, y, out, z),
-        (_, _, None) if S::SMALL => run::<S, C, E<S>, true>(ctx, scratch, x0, y, out, &mut []),
-        (_, _, None) => run::<S, C, E<S>, false>(ctx, scratch, x0, y, out, &mut []),
+        (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, bound, scratch, x0, y, out, z),
+        (_, _, None) if S::SMALL => {
+            run::<S, C, E<S>, true>(ctx, bound, scratch, x0, y, out, &mut [])
+        }
+        (_, _, None) => run::<S, C, E<S>, false>(ctx, bound, scratch, x0, y, out, &mut []),
     }
 }

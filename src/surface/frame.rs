@@ -28,6 +28,8 @@ pub struct Frame<'a, C> {
     width: u32,
     height: u32,
     y0: i32,
+    /// Every stored depth is at least this (0 until a `clear` makes it known).
+    depth_floor: u16,
 }
 
 impl<'a, C: TargetColor> Frame<'a, C> {
@@ -53,6 +55,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
             width,
             height,
             y0: 0,
+            depth_floor: 0,
         })
     }
 
@@ -65,6 +68,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
             });
         }
         self.depth = Some(depth);
+        self.depth_floor = 0;
         Ok(self)
     }
 
@@ -90,6 +94,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         if let Some(d) = self.depth.as_deref_mut() {
             d.fill(DEPTH_CLEAR);
         }
+        self.depth_floor = DEPTH_CLEAR;
     }
 
     /// The colour pixels, row-major.
@@ -112,6 +117,16 @@ impl<C: TargetColor> RenderTarget for Frame<'_, C> {
 
     fn row_range(&self) -> (i32, i32) {
         (self.y0, self.y0 + self.height as i32)
+    }
+
+    #[inline]
+    fn depth_floor(&self) -> u16 {
+        self.depth_floor
+    }
+
+    #[inline]
+    fn lower_depth_floor(&mut self, z: u16) {
+        self.depth_floor = self.depth_floor.min(z);
     }
 
     #[inline]

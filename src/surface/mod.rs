@@ -35,4 +35,20 @@ pub trait RenderTarget {
     /// The colour row `y` (frame coordinates) and its depth row, if the target has a depth
     /// buffer. `None` when `y` is outside [`row_range`](Self::row_range).
     fn row_mut(&mut self, y: i32) -> Option<Row<'_, Self::Color>>;
+
+    /// A lower bound of every depth value stored in the target (a one-value hierarchical
+    /// depth buffer): a span whose depths all lie below it passes the depth test without
+    /// reading the buffer. `0`, the default, means unknown and skips nothing; [`Frame`]
+    /// keeps a real bound from its [`Frame::clear`] on.
+    #[inline]
+    fn depth_floor(&self) -> u16 {
+        0
+    }
+
+    /// Lowers the bound of [`RenderTarget::depth_floor`] after depths of at least `z` were
+    /// written. The default does nothing.
+    #[inline]
+    fn lower_depth_floor(&mut self, z: u16) {
+        let _ = z;
+    }
 }
