@@ -73,12 +73,13 @@ const FILTS: [Filt; 5] = [
 ];
 
 /// Every [`Proj`], for parsing names (`proj_listed` fails to compile when one is missing).
-const PROJS: [Proj; 7] = [
+const PROJS: [Proj; 8] = [
     Proj::Affine,
     Proj::Sub4,
     Proj::Sub8,
     Proj::Sub16,
     Proj::Sub32,
+    Proj::Sub64,
     Proj::Exact,
     Proj::Adaptive,
 ];
@@ -102,6 +103,7 @@ const fn proj_listed(p: Proj) {
         | Proj::Sub8
         | Proj::Sub16
         | Proj::Sub32
+        | Proj::Sub64
         | Proj::Exact
         | Proj::Adaptive => {}
     }

@@ -73,7 +73,7 @@ fn low_bits(n: usize) -> u32 {
 
 /// Depth test of one chunk (`GL_LESS`, depth `z >> 14` saturated to 16 bits): bit `k` of
 /// the result is set when pixel `k` passes. With `WRITE`, passing depths are written.
-#[inline(never)]
+#[inline(always)]
 fn depth_chunk<const WRITE: bool>(z0: i32, dz: i32, zrow: &mut [u16]) -> u32 {
     let mut z = z0;
     let mut m = 0u32;
@@ -256,7 +256,7 @@ fn chunk_mask<S: Shader, const Z: bool>(
 }
 
 /// Writes the chunk's depths (all of them pass the test).
-#[inline(never)]
+#[inline(always)]
 fn depth_fill(z0: i32, dz: i32, zrow: &mut [u16]) {
     let mut z = z0;
     for zb in zrow.iter_mut() {

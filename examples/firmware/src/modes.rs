@@ -29,6 +29,8 @@ pub enum Proj {
     Sub16,
     /// Exact every 32 pixels (`Subdivided`, `log2_n = 5`).
     Sub32,
+    /// Exact every 64 pixels (`Subdivided`, `log2_n = 6`).
+    Sub64,
     /// Exact at every pixel (`Exact`).
     Exact,
     /// Affine or exact per triangle from an error budget of 1/4 texel
@@ -101,6 +103,7 @@ impl Mode {
             Proj::Sub8 => "sub8",
             Proj::Sub16 => "sub16",
             Proj::Sub32 => "sub32",
+            Proj::Sub64 => "sub64",
             Proj::Exact => "exact",
             Proj::Adaptive => "adaptive",
         }
@@ -155,6 +158,7 @@ impl Mode {
             Proj::Sub8 => by_filter!(Subdivided)?.with_subdivision(3)?,
             Proj::Sub16 => by_filter!(Subdivided)?.with_subdivision(4)?,
             Proj::Sub32 => by_filter!(Subdivided)?.with_subdivision(5)?,
+            Proj::Sub64 => by_filter!(Subdivided)?.with_subdivision(6)?,
             Proj::Exact => by_filter!(Exact)?,
             Proj::Adaptive => by_filter!(Adaptive)?.with_adaptive_budget(64),
         };
@@ -169,12 +173,13 @@ impl Mode {
     }
 }
 
-const PROJS: [Proj; 7] = [
+const PROJS: [Proj; 8] = [
     Proj::Affine,
     Proj::Sub4,
     Proj::Sub8,
     Proj::Sub16,
     Proj::Sub32,
+    Proj::Sub64,
     Proj::Exact,
     Proj::Adaptive,
 ];
@@ -211,11 +216,11 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
 
 /// Modes of the lit scenes (cube, sphere): lit and unlit, nearest and bilinear, every
 /// projection.
-pub const LIT_SCENE_MODES: [Mode; 28] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
+pub const LIT_SCENE_MODES: [Mode; 32] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
 /// projection.
-pub const FLOOR_MODES: [Mode; 35] = matrix(
+pub const FLOOR_MODES: [Mode; 40] = matrix(
     &[false],
     &[
         Filt::Nearest,
@@ -227,10 +232,10 @@ pub const FLOOR_MODES: [Mode; 35] = matrix(
 );
 
 /// The floor's unmipmapped modes (firmware `report_floor`).
-pub const FLOOR_PLAIN_MODES: [Mode; 14] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+pub const FLOOR_PLAIN_MODES: [Mode; 16] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// The floor's mipmapped modes (firmware `report_floor_mip`).
-pub const FLOOR_MIP_MODES: [Mode; 21] = matrix(
+pub const FLOOR_MIP_MODES: [Mode; 24] = matrix(
     &[false],
     &[Filt::NearestMip, Filt::Trilinear, Filt::TrilinearSpan],
 );

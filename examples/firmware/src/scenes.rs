@@ -34,9 +34,9 @@ pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 /// `cube` and `sphere`: lit, bilinear, perspective-correct, repeat, depth-tested.
 pub type Lit = Pipeline<SubdividedBy<2>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 /// `floor` with nearest filtering (unlit).
-pub type FloorNearest = Pipeline<SubdividedBy<5>, Nearest, Repeat, Repeat, Replace, DepthLess>;
+pub type FloorNearest = Pipeline<SubdividedBy<6>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).
-pub type FloorBilinear = Pipeline<SubdividedBy<5>, Bilinear, Repeat, Repeat, Replace, DepthLess>;
+pub type FloorBilinear = Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, Replace, DepthLess>;
 
 /// FNV-1a (32 bit) over the RGB565 values as little-endian bytes, rows top to bottom.
 #[derive(Clone, Copy, Debug)]

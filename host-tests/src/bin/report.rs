@@ -502,6 +502,7 @@ fn proj_colour(p: Proj) -> plotters::style::RGBColor {
         Proj::Sub8 => RGBColor(255, 127, 14),
         Proj::Sub16 => RGBColor(188, 160, 0),
         Proj::Sub32 => RGBColor(140, 86, 75),
+        Proj::Sub64 => RGBColor(127, 127, 127),
         Proj::Exact => RGBColor(31, 119, 180),
         Proj::Adaptive => RGBColor(44, 160, 44),
     }
@@ -631,6 +632,7 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
             Proj::Sub8,
             Proj::Sub16,
             Proj::Sub32,
+            Proj::Sub64,
             Proj::Exact,
             Proj::Adaptive,
         ]
