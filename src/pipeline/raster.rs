@@ -58,6 +58,9 @@ impl RasterParams {
 struct Writer<'t, S: Shader, P, D, C> {
     ctx: SpanCtx<S>,
     scratch: Scratch<S::Varyings>,
+    /// The target's depth floor, read once per triangle: a triangle writes each pixel at
+    /// most once, so its own writes never matter to its later spans. Lowered once, after.
+    bound: DepthBound,
     target: &'t mut dyn RenderTarget<Color = C>,
     pixels: u32,
     _stages: core::marker::PhantomData<(P, D)>,
@@ -68,15 +71,10 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
 {
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        let floor = self.target.depth_floor();
-        let mut bound = DepthBound {
-            floor,
-            lowest: u16::MAX,
-        };
         if let Some((row, depth)) = self.target.row_mut(y) {
             let n = span::<S, P, D, C>(
                 &self.ctx,
-                &mut bound,
+                &mut self.bound,
                 &mut self.scratch,
                 y,
                 x0,
@@ -85,9 +83,6 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
                 depth,
             );
             self.pixels = self.pixels.wrapping_add(n);
-        }
-        if bound.lowest < floor {
-            self.target.lower_depth_floor(bound.lowest);
         }
     }
 }
@@ -159,6 +154,10 @@ where
     let mut w = Writer::<S, P, D, C> {
         ctx,
         scratch: Scratch::new(),
+        bound: DepthBound {
+            floor: target.depth_floor(),
+            lowest: u16::MAX,
+        },
         target,
         pixels: 0,
         _stages: core::marker::PhantomData,
@@ -175,5 +174,8 @@ where
         clip,
         sink,
     );
+    if w.bound.lowest < w.bound.floor {
+        w.target.lower_depth_floor(w.bound.lowest);
+    }
     w.pixels
 }
