@@ -15,6 +15,7 @@
 
 use super::recip::{Q_FLOOR, Q_ONE};
 use super::stages::ProjKind;
+use crate::math::div_u64;
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{Plane, Rect};
 use crate::shading::Varyings;
@@ -104,8 +105,11 @@ pub(crate) fn setup<V: Varyings>(
         ],
         viewport,
     )?;
-    let cx = (i64::from(pos[0].0) + i64::from(pos[1].0) + i64::from(pos[2].0)) / 48;
-    let cy = (i64::from(pos[0].1) + i64::from(pos[1].1) + i64::from(pos[2].1)) / 48;
+    // Sub-pixel coordinates lie in the guard band (|x|, |y| <= 2^16), so the sums fit i32
+    // (a 64-bit division by a constant is still a library call on 32-bit cores).
+    let sum = |k: fn(&SetupVertex) -> i32| pos.iter().map(k).fold(0i32, i32::wrapping_add);
+    let cx = sum(|p| p.0) / 48;
+    let cy = sum(|p| p.1) / 48;
     let centroid = (
         (cx as i32).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
         (cy as i32).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
@@ -129,7 +133,9 @@ pub(crate) fn setup<V: Varyings>(
         let wmin = i64::from(pos[0].3.min(pos[1].3).min(pos[2].3).max(1));
         pos.map(|v| {
             let w = i64::from(v.3.max(1));
-            ((wmin << 30) / w).clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
+            // Both positive: the exact 32-bit-path division of `math::div`.
+            (div_u64((wmin << 30) as u64, w as u64) as i64)
+                .clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
         })
     } else {
         [i64::from(Q_ONE); 3]
