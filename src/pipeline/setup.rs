@@ -111,8 +111,8 @@ pub(crate) fn setup<V: Varyings>(
     let cx = sum(|p| p.0) / 48;
     let cy = sum(|p| p.1) / 48;
     let centroid = (
-        (cx as i32).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
-        (cy as i32).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
+        cx.clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
+        cy.clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
     );
     let mut s = TriSetup {
         px_ref: ps.px_ref,
