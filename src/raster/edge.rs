@@ -13,6 +13,7 @@
 //! remainder fits `i32`; the one `i64` division is at [`EdgeWalker::new`].
 
 use super::SUBPIXEL_ONE;
+use crate::math::div_floor_i64;
 
 /// Walks one edge row by row; see the module docs for the arithmetic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,11 +30,14 @@ pub struct EdgeWalker {
     den: i32,
 }
 
-/// `ceil(n / d)` and the non-negative remainder `ceil * d - n`, for `d > 0`.
+/// `ceil(n / d)` and the non-negative remainder `ceil * d - n`, for `d > 0`. The floor
+/// division goes through `math::div` (exact, 32-bit paths: a 64-bit library division per
+/// edge and band was a visible share of small triangles' cost on Cortex-M).
 #[inline]
 fn ceil_div_rem(n: i64, d: i64) -> (i64, i64) {
-    let q = n.div_euclid(d);
-    let r = n.rem_euclid(d);
+    let q = div_floor_i64(n, d);
+    // floor division: 0 <= r < d.
+    let r = n.wrapping_sub(q.wrapping_mul(d));
     if r == 0 {
         (q, 0)
     } else {
