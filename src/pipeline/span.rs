@@ -49,14 +49,15 @@ pub(crate) const CHUNK: usize = 32;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Scratch<V> {
     vals: [V; CHUNK],
-    lambdas: [i32; CHUNK],
+    /// Only for shaders that read a per-pixel level of detail (not zeroed otherwise).
+    lambdas: Option<[i32; CHUNK]>,
 }
 
 impl<V: Varyings> Scratch<V> {
     pub fn new() -> Self {
         Scratch {
             vals: [V::zero(); CHUNK],
-            lambdas: [0; CHUNK],
+            lambdas: None,
         }
     }
 }
@@ -413,6 +414,9 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
     let mut px = x;
     let mut written = 0u32;
     let Scratch { vals, lambdas } = scratch;
+    if spec.lod && lambdas.is_none() {
+        *lambdas = Some([0; CHUNK]);
+    }
     // `Z` links the depth code; an empty depth row switches it off at run time (the small
     // span loops use one instance for both).
     let depth = Z && !zrow.is_empty();
@@ -434,7 +438,11 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
         } else {
             low_bits(n)
         };
-        let (Some(vs), Some(ls)) = (vals.get_mut(..n), lambdas.get_mut(..n)) else {
+        let ls: &mut [i32] = match lambdas {
+            Some(l) => l.get_mut(..n).unwrap_or_default(),
+            None => &mut [],
+        };
+        let Some(vs) = vals.get_mut(..n) else {
             break;
         };
         it.fill(s, vs, ls, mask, spec);
