@@ -120,7 +120,7 @@ fn mcu_frames() {
     )
     .unwrap();
     print_whole("sphere", &r, &wr);
-    let w = whole::<scenes::Lit>(tex, &mesh, &demo::sphere_model(0), 20, true);
+    let w = whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true);
     assert_eq!(
         w,
         (r.checksum, r.stats.pixels),
