@@ -73,16 +73,7 @@ const FILTS: [Filt; 5] = [
 ];
 
 /// Every [`Proj`], for parsing names (`proj_listed` fails to compile when one is missing).
-const PROJS: [Proj; 8] = [
-    Proj::Affine,
-    Proj::Sub4,
-    Proj::Sub8,
-    Proj::Sub16,
-    Proj::Sub32,
-    Proj::Sub64,
-    Proj::Exact,
-    Proj::Adaptive,
-];
+const PROJS: [Proj; 8] = modes::PROJS;
 
 /// Exhaustive: a new [`Filt`] variant must be added here and to [`FILTS`].
 const fn filt_listed(f: Filt) {

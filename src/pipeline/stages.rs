@@ -188,51 +188,34 @@ impl ProjectionStage for Exact {
     const KIND: ProjKind = ProjKind::Exact;
 }
 
-/// Replace-shading marker.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Replace;
-impl ShadingStage for Replace {
-    const KIND: Shading = Shading::Replace;
-    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
-        shading::Replace<'a, F, WU, WV>;
-    #[inline(always)]
-    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
-        tex: TexBinding<'a, F, WU, WV>,
-        _: u16,
-    ) -> Self::Shader<'a, F, WU, WV> {
-        shading::Replace { tex }
-    }
+/// A textured classic shading: its marker type and the built-in shader it names.
+macro_rules! textured_stage {
+    ($(#[$doc:meta] $name:ident),* $(,)?) => {$(
+        #[$doc]
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        pub struct $name;
+        impl ShadingStage for $name {
+            const KIND: Shading = Shading::$name;
+            type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
+                shading::$name<'a, F, WU, WV>;
+            #[inline(always)]
+            fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
+                tex: TexBinding<'a, F, WU, WV>,
+                _: u16,
+            ) -> Self::Shader<'a, F, WU, WV> {
+                shading::$name { tex }
+            }
+        }
+    )*};
 }
-/// Modulate-by-colour marker.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Modulate;
-impl ShadingStage for Modulate {
-    const KIND: Shading = Shading::Modulate;
-    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
-        shading::Modulate<'a, F, WU, WV>;
-    #[inline(always)]
-    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
-        tex: TexBinding<'a, F, WU, WV>,
-        _: u16,
-    ) -> Self::Shader<'a, F, WU, WV> {
-        shading::Modulate { tex }
-    }
-}
-/// Modulate-by-intensity marker (lit textures).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ModulateIntensity;
-impl ShadingStage for ModulateIntensity {
-    const KIND: Shading = Shading::ModulateIntensity;
-    type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a> =
-        shading::ModulateIntensity<'a, F, WU, WV>;
-    #[inline(always)]
-    fn shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>(
-        tex: TexBinding<'a, F, WU, WV>,
-        _: u16,
-    ) -> Self::Shader<'a, F, WU, WV> {
-        shading::ModulateIntensity { tex }
-    }
-}
+textured_stage!(
+    /// Replace-shading marker.
+    Replace,
+    /// Modulate-by-colour marker.
+    Modulate,
+    /// Modulate-by-intensity marker (lit textures).
+    ModulateIntensity,
+);
 /// Untextured Gouraud marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Gouraud;

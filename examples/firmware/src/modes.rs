@@ -173,7 +173,8 @@ impl Mode {
     }
 }
 
-const PROJS: [Proj; 8] = [
+/// Every projection of the report, in the order of its matrices and legends.
+pub const PROJS: [Proj; 8] = [
     Proj::Affine,
     Proj::Sub4,
     Proj::Sub8,

@@ -626,19 +626,7 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 .map_err(|e| e.to_string())?;
         }
         // Legend: projection colours.
-        for (k, p) in [
-            Proj::Affine,
-            Proj::Sub4,
-            Proj::Sub8,
-            Proj::Sub16,
-            Proj::Sub32,
-            Proj::Sub64,
-            Proj::Exact,
-            Proj::Adaptive,
-        ]
-        .into_iter()
-        .enumerate()
-        {
+        for (k, p) in modes::PROJS.into_iter().enumerate() {
             let m = Mode {
                 lit: false,
                 filter: Filt::Nearest,
