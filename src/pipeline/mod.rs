@@ -1,8 +1,10 @@
-//! The pipeline: from a validated draw mode to the fused per-pixel loop.
+//! The pipeline: from a draw (a shader, a projection, a depth stage) to the per-pixel loop.
 //!
-//! [`stages`] names the choices (as enums and as marker types), [`Draw`] binds a mode to
-//! its texture and viewport and selects the span loop once, and the private `setup`,
-//! `interp` and `span` modules hold the per-triangle set-up and the per-pixel code.
+//! [`ShadedDraw`] draws any [`Shader`](crate::shading::Shader); [`stages`] names the
+//! classic choices (as enums and as marker types) and [`Draw`] binds them to built-in
+//! shaders, selecting the span loop once. The private `raster` module runs one triangle
+//! (shader hook, set-up, edge walk), `setup` builds its planes, `interp` interpolates the
+//! varyings and `span` is the chunked per-pixel loop (depth mask, varyings, shading).
 
 mod draw;
 mod interp;
