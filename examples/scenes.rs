@@ -13,7 +13,9 @@ use fixel::demo;
 use fixel::pipeline::{Affine, DepthLess, Exact, ModulateIntensity, Pipeline, Replace};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight};
-use fixel::texture::{generate_mips, mip, Bilinear, MipTexture, Nearest, Repeat, Trilinear};
+use fixel::texture::{
+    chain_len, full_levels, generate_mips, Bilinear, MipTexture, Nearest, Repeat, Trilinear,
+};
 
 type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 type FloorNearest = Pipeline<Exact, Nearest, Repeat, Repeat, Replace, DepthLess>;
@@ -35,11 +37,9 @@ fn main() -> Result<(), Error> {
                       mesh: &fixel::scene::Mesh<'_>,
                       model: &Mat4,
                       far: i32,
-                      lit: bool| {
-        let mut frame = Frame::new(&mut color, w, h)
-            .unwrap()
-            .with_depth(&mut depth)
-            .unwrap();
+                      lit: bool|
+     -> Result<(), Error> {
+        let mut frame = Frame::new(&mut color, w, h)?.with_depth(&mut depth)?;
         frame.clear(Rgb565::new(0, 0, 0));
         let camera = demo::camera(far);
         let pixels = draw_mesh(
@@ -49,10 +49,11 @@ fn main() -> Result<(), Error> {
             &camera,
             lit.then_some(&light),
             &mut frame,
-        );
+        )?;
         let path = dir.join(format!("{name}.png"));
         common::write_png(&path, w, h, frame.pixels());
         println!("{name:>16}: {pixels:6} pixels drawn -> {}", path.display());
+        Ok(())
     };
 
     let mut t128 = vec![Rgb565::new(0, 0, 0); 128 * 128];
@@ -66,7 +67,7 @@ fn main() -> Result<(), Error> {
         &demo::cube_model(0),
         20,
         true,
-    );
+    )?;
 
     let mut t256 = vec![Rgb565::new(0, 0, 0); 256 * 128];
     demo::checker_texture(256, 128, &mut t256)?;
@@ -79,7 +80,7 @@ fn main() -> Result<(), Error> {
         &demo::sphere_model(0),
         20,
         true,
-    );
+    )?;
 
     let mut t64 = vec![Rgb565::new(0, 0, 0); 64 * 64];
     demo::checker_texture(64, 64, &mut t64)?;
@@ -92,7 +93,7 @@ fn main() -> Result<(), Error> {
         &Mat4::IDENTITY,
         200,
         false,
-    );
+    )?;
     render(
         "floor-bilinear",
         &Draw::new::<FloorBilinear>(Some(tex), vp, Cull::Back)?,
@@ -100,12 +101,12 @@ fn main() -> Result<(), Error> {
         &Mat4::IDENTITY,
         200,
         false,
-    );
+    )?;
 
     // The floor with a full mip chain (64 x 64 down to 1 x 1, 4/3 of the base) and trilinear
     // filtering.
-    let levels = mip::full_levels(64, 64);
-    let mut chain = vec![Rgb565::new(0, 0, 0); mip::chain_len(64, 64, levels)];
+    let levels = full_levels(64, 64);
+    let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(64, 64, levels)];
     chain[..64 * 64].copy_from_slice(&t64);
     generate_mips(&mut chain, 64, 64, levels)?;
     let mips = MipTexture::new(&chain, 64, 64, levels)?;
@@ -117,6 +118,6 @@ fn main() -> Result<(), Error> {
         &Mat4::IDENTITY,
         200,
         false,
-    );
+    )?;
     Ok(())
 }

@@ -17,7 +17,7 @@ use fixel::demo;
 use fixel::geometry::ClipVertex;
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
-use fixel::surface::band::Binned;
+use fixel::surface::Binned;
 use fixel::surface::DrawTargetFlush;
 
 /// A display in RAM: what `embedded-graphics-simulator` would be, without a window.
@@ -160,25 +160,23 @@ fn main() -> Result<(), Error> {
     let mut bins = vec![Binned::default(); 64];
     let mut renderer = BandRenderer::new(&mut band, w, 16, h)?.with_depth(&mut depth)?;
     let mut flush = DrawTargetFlush(&mut display);
-    let stats = renderer
-        .render(
-            &draws,
-            &mut bins,
-            Rgb565::new(2, 4, 6),
-            |sink| {
-                for (k, q) in quads.iter().enumerate() {
-                    for t in q {
-                        draws[k].project(t, &mut |s| sink.push(k as u8, s));
-                    }
+    let stats = renderer.render(
+        &draws,
+        &mut bins,
+        Rgb565::new(2, 4, 6),
+        |sink| {
+            for (k, q) in quads.iter().enumerate() {
+                for t in q {
+                    draws[k].project(t, &mut |s| sink.push(k as u8, s));
                 }
-                mesh_triangles(&cube_mesh, &cube_model, &camera, Some(&light), |t| {
-                    cube_draw.project(t, &mut |s| sink.push(4, s));
-                });
-                gouraud.project(&tri, &mut |s| sink.push(5, s));
-            },
-            |b| flush.flush(b),
-        )
-        .unwrap_or_default();
+            }
+            mesh_triangles(&cube_mesh, &cube_model, &camera, Some(&light), |t| {
+                cube_draw.project(t, &mut |s| sink.push(4, s));
+            });
+            gouraud.project(&tri, &mut |s| sink.push(5, s));
+        },
+        |b| flush.flush(b),
+    )?;
     let path = common::out_dir().join("showcase.png");
     common::write_png(&path, w, h, &display.pixels);
     println!(

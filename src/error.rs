@@ -66,6 +66,24 @@ pub enum Error {
         /// Its capacity.
         capacity: usize,
     },
+    /// A depth-testing draw was given a target without a depth buffer (attach one with
+    /// `Frame::with_depth` or `BandRenderer::with_depth`, or draw with `DepthTest::Off`).
+    NoDepthBuffer,
+    /// A triangle was pushed with a draw index past the end of the draws given to the band
+    /// renderer.
+    BadDrawIndex {
+        /// The index pushed.
+        index: u8,
+        /// How many draws there are.
+        draws: usize,
+    },
+    /// A vector that must have a direction is zero (for example a light direction).
+    ZeroVector(&'static str),
+    /// A number converted into fixed point is NaN or outside the format's range.
+    OutOfRange {
+        /// What was converted.
+        what: &'static str,
+    },
 }
 
 impl fmt::Display for Error {
@@ -105,8 +123,27 @@ impl fmt::Display for Error {
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")
             }
+            Error::NoDepthBuffer => {
+                write!(f, "the draw tests depth but the target has no depth buffer")
+            }
+            Error::BadDrawIndex { index, draws } => write!(
+                f,
+                "draw index {index} is past the {draws} draws given to the renderer"
+            ),
+            Error::ZeroVector(what) => write!(f, "{what} is a zero vector"),
+            Error::OutOfRange { what } => {
+                write!(f, "{what} is NaN or outside the fixed-point range")
+            }
         }
     }
 }
 
 impl core::error::Error for Error {}
+
+/// `Result<_, Infallible>` (for example a band flush into an in-memory display) converts
+/// into any `Result<_, Error>` with `?`.
+impl From<core::convert::Infallible> for Error {
+    fn from(never: core::convert::Infallible) -> Self {
+        match never {}
+    }
+}

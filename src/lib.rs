@@ -10,7 +10,7 @@
 //! use fixel::pipeline::{DepthLess, Exact, ModulateIntensity};
 //! use fixel::scene::{draw_mesh, DirectionalLight};
 //! use fixel::texture::{Bilinear, Repeat};
-//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use fixel::Rgb565;
 //!
 //! // Stages chosen as types: only this span loop is compiled into the firmware.
 //! type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
@@ -24,7 +24,7 @@
 //! frame.clear(Rgb565::default());
 //! let cube = demo::cube();
 //! let drawn = draw_mesh(&draw, &cube.mesh()?, &demo::cube_model(0), &demo::camera(20),
-//!                       Some(&DirectionalLight::default()), &mut frame);
+//!                       Some(&DirectionalLight::default()), &mut frame)?;
 //! assert!(drawn > 500);
 //! # Ok::<(), fixel::Error>(())
 //! ```
@@ -52,7 +52,7 @@
 //! [`shading::Shader::shade`]. [`pipeline::ShadedDraw`] draws it from clip-space
 //! [`geometry::Vertex`] triangles in any projection mode; the span loop is monomorphised for
 //! the shader, so a varying it does not declare costs nothing. The classic
-//! [`pipeline::Draw`] API is built on the same stage ([`shading::builtin`]).
+//! [`pipeline::Draw`] API is built on the same stage ([`shading::Classic`]).
 //!
 //! A light-mapped wall: a base texture times a second, smaller light map with its own
 //! coordinates, dimmed by an extra varying (`k`, Q8.16):
@@ -63,7 +63,7 @@
 //! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 //! use fixel::shading::{Fragment, Shader, TexBinding, TexTriangle};
 //! use fixel::texture::{Bilinear, ClampToEdge, Lod, MipTexture, Repeat};
-//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use fixel::Rgb565;
 //!
 //! #[derive(Clone, Copy, Debug)]
 //! struct LightMapped<'a> {
@@ -115,7 +115,7 @@
 //! let (mut color, mut depth) = ([Rgb565::default(); 64 * 48], [0u16; 64 * 48]);
 //! let mut frame = Frame::new(&mut color, 64, 48)?.with_depth(&mut depth)?;
 //! frame.clear(Rgb565::default());
-//! let drawn = draw.clip_triangles(&[[wall[0], wall[1], wall[2]], [wall[0], wall[2], wall[3]]], &mut frame);
+//! let drawn = draw.clip_triangles(&[[wall[0], wall[1], wall[2]], [wall[0], wall[2], wall[3]]], &mut frame)?;
 //! assert!(drawn > 2000);
 //! # Ok::<(), fixel::Error>(())
 //! ```
@@ -165,7 +165,17 @@ pub mod texture;
 
 pub use error::Error;
 
-/// The names most programs need, in one import.
+/// The colour types fixel draws in (from `embedded-graphics-core`, re-exported so that a
+/// program needs no extra dependency to name them), and the trait that gives `Rgb565` its
+/// named colours (`Rgb565::BLACK`) and channels.
+pub use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888, RgbColor};
+
+/// The `embedded-graphics-core` crate fixel is built on (its `DrawTarget` is what
+/// [`surface::DrawTargetFlush`] writes to), at the version fixel uses.
+pub use embedded_graphics_core;
+
+/// The names most programs need, in one import: the colour types, the draw, target,
+/// geometry and math types, and the shader trait.
 pub mod prelude {
     pub use crate::geometry::{ClipVertex, Cull, Vertex, Viewport};
     pub use crate::math::{Angle, Fx, Mat4, Vec3};
@@ -176,4 +186,5 @@ pub mod prelude {
     pub use crate::surface::{BandRenderer, Frame, RenderTarget};
     pub use crate::texture::{Filter, Texture, Wrap};
     pub use crate::Error;
+    pub use crate::{Rgb565, RgbColor};
 }

@@ -24,7 +24,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
-use fixel::texture::mip::{chain_len, full_levels};
+use fixel::texture::{chain_len, full_levels};
 use fixel::texture::{generate_mips, MipTexture};
 
 /// A benchmark scene.
@@ -270,7 +270,8 @@ impl Bench {
                 light,
                 &mut cache,
                 &mut frame,
-            );
+            )
+            .unwrap();
             total += u64::from(n);
         }
         total

@@ -53,7 +53,7 @@ fn main() {
 
     // `T(64, 64)` with its full mip chain (7 levels, fixel's own 2 x 2 box filter).
     {
-        use fixel::texture::mip::{chain_len, full_levels};
+        use fixel::texture::{chain_len, full_levels};
         let levels = full_levels(64, 64);
         let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(64, 64, levels)];
         fixel::demo::checker_texture(64, 64, &mut chain[..64 * 64]).unwrap();

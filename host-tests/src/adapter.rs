@@ -9,7 +9,7 @@ use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::surface::Frame;
-use fixel::texture::mip::{chain_len, full_levels};
+use fixel::texture::{chain_len, full_levels};
 use fixel::texture::{
     generate_mips, Filter, Lod, LodGranularity, MipFilter, MipTexture, Texture, Wrap,
 };
@@ -199,7 +199,7 @@ pub fn render_tex(
         .unwrap();
     frame.clear(Rgb565::new(0, 0, 0));
     let draw = Draw::dynamic_mip(mode, tex, vp).expect("draw mode");
-    let written = draw.clip_triangles(tris, &mut frame);
+    let written = draw.clip_triangles(tris, &mut frame).unwrap();
     let pixels: Vec<u16> = color
         .iter()
         .map(|&c| RawU16::from(c).into_inner())
@@ -215,7 +215,7 @@ pub fn render_tex(
     let cov_draw = Draw::dynamic(cov_mode, None, vp)
         .unwrap()
         .with_flat_color(Rgb565::new(31, 63, 31));
-    cov_draw.clip_triangles(tris, &mut cov_frame);
+    cov_draw.clip_triangles(tris, &mut cov_frame).unwrap();
     let covered = cov.iter().map(|&c| c != Rgb565::new(0, 0, 0)).collect();
     FixelImage {
         width,

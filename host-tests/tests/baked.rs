@@ -3,7 +3,7 @@
 //! xtask's own test.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::texture::mip::chain_len;
+use fixel::texture::chain_len;
 use fixel::texture::{generate_mips, MipTexture};
 use std::io::BufReader;
 

@@ -43,7 +43,8 @@ where
         &demo::camera(far),
         lit.then_some(&light),
         &mut frame,
-    );
+    )
+    .unwrap();
     let mut f = Fnv1a::default();
     f.pixels(frame.pixels());
     (f.0, px)

@@ -23,7 +23,7 @@ use fixel::prelude::Cull;
 use fixel::scene::{
     draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh,
 };
-use fixel::surface::band::Binned;
+use fixel::surface::Binned;
 use fixel::surface::{BandRange, BandRenderer, Frame};
 use fixel::texture::{Filter, Wrap};
 use proptest::prelude::*;
@@ -139,8 +139,8 @@ proptest! {
         let mut depth = vec![0u16; w * h];
         let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
         f.clear(clear);
-        let px_ref = draw_mesh(&d0, &ma, &model_a, &camera, light, &mut f)
-            + draw_mesh(&d1, &mb, &model_b, &camera, light, &mut f);
+        let px_ref = draw_mesh(&d0, &ma, &model_a, &camera, light, &mut f).unwrap()
+            + draw_mesh(&d1, &mb, &model_b, &camera, light, &mut f).unwrap();
         let expected: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
 
         // The walker, whole frame.
@@ -149,8 +149,8 @@ proptest! {
         let mut depth = vec![0u16; w * h];
         let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
         f.clear(clear);
-        let px_walk = draw_mesh_walked(&d0, &ma, &model_a, &camera, light, &mut cache, &mut f)
-            + draw_mesh_walked(&d1, &mb, &model_b, &camera, light, &mut cache, &mut f);
+        let px_walk = draw_mesh_walked(&d0, &ma, &model_a, &camera, light, &mut cache, &mut f).unwrap()
+            + draw_mesh_walked(&d1, &mb, &model_b, &camera, light, &mut cache, &mut f).unwrap();
         let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
         prop_assert_eq!(px_walk, px_ref);
         prop_assert!(walked == expected, "walker differs from draw_mesh");

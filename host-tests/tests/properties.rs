@@ -16,7 +16,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
-use fixel::surface::band::Binned;
+use fixel::surface::Binned;
 use fixel::surface::{BandRenderer, Frame};
 use fixel::texture::{Filter, Wrap};
 use proptest::prelude::*;
@@ -147,7 +147,7 @@ proptest! {
         let vp = Viewport::new(vp_off.0, vp_off.1, vp_off.2, vp_off.3).unwrap();
         let draw = Draw::dynamic(mode, Some(t), vp).unwrap();
         let mut g = Guarded::new(w, h, mode.depth == DepthTest::Less);
-        let n = draw.clip_triangles(&tris, &mut g);
+        let n = draw.clip_triangles(&tris, &mut g).unwrap();
         g.check("any triangle");
         prop_assert!(n as usize <= 4 * w * h * tris.len());
         if mode.depth == DepthTest::Off {
@@ -265,7 +265,9 @@ fn whole(
         .unwrap();
     f.clear(raw(0x1234));
     for (d, t) in tris {
-        draws[usize::from(*d)].clip_triangles(std::slice::from_ref(t), &mut f);
+        draws[usize::from(*d)]
+            .clip_triangles(std::slice::from_ref(t), &mut f)
+            .unwrap();
     }
     color.iter().map(|&c| bits(c)).collect()
 }

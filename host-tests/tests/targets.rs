@@ -22,7 +22,7 @@ use embedded_graphics_core::Pixel;
 use fixel::color::TargetColor;
 use fixel::geometry::{ClipVertex, Viewport};
 use fixel::pipeline::{Draw, DrawMode, Projection, Shading};
-use fixel::surface::band::Binned;
+use fixel::surface::Binned;
 use fixel::surface::{BandRenderer, DrawTargetFlush, Frame};
 use fixel::texture::Texture;
 use fixel::Error;
@@ -74,7 +74,7 @@ fn whole<C: TargetColor>(s: &Scene) -> Vec<C> {
         .with_depth(&mut depth)
         .unwrap();
     frame.clear(C::from_rgb565(0));
-    draw::<C>(s).clip_triangles(&s.tris, &mut frame);
+    draw::<C>(s).clip_triangles(&s.tris, &mut frame).unwrap();
     color
 }
 
@@ -85,7 +85,7 @@ fn banded(
     rows: u32,
     bins: usize,
     flush: &mut dyn FnMut(&Frame<'_, Rgb565>) -> Result<(), Infallible>,
-) -> fixel::surface::band::BandStats {
+) -> fixel::surface::BandStats {
     let d = draw::<Rgb565>(s);
     let mut color = vec![BLACK; (W * rows) as usize];
     let mut depth = vec![0u16; (W * rows) as usize];
@@ -468,23 +468,19 @@ fn depth_floor_never_lets_a_farther_span_through() {
         .unwrap()
         .with_depth(&mut depth)
         .unwrap();
-    // Before a clear the stored depths are unknown: no bound, nothing skipped.
-    assert_eq!(frame.depth_floor(), 0);
-    assert_eq!(
-        draw.clip_triangles(&quad(0.5), &mut frame),
-        0,
-        "zeros in depth: nothing passes"
-    );
+    // Attaching depth fills it with the far plane: the bound is known from the start.
+    assert_eq!(frame.depth_floor(), u16::MAX);
+    assert!(frame.depth().unwrap().iter().all(|&d| d == u16::MAX));
     frame.clear(Rgb565::new(0, 0, 0));
     assert_eq!(frame.depth_floor(), u16::MAX);
-    let near = draw.clip_triangles(&quad(-0.5), &mut frame);
+    let near = draw.clip_triangles(&quad(-0.5), &mut frame).unwrap();
     assert!(near > 800, "{near}");
     let floor = frame.depth_floor();
     assert!(floor < u16::MAX && floor > 0, "{floor}");
     // Farther than what is stored: every pixel fails, though the floor is below it.
-    assert_eq!(draw.clip_triangles(&quad(0.5), &mut frame), 0);
+    assert_eq!(draw.clip_triangles(&quad(0.5), &mut frame).unwrap(), 0);
     // Nearer than everything: all pass (the skipped-read path), and the floor drops.
-    assert_eq!(draw.clip_triangles(&quad(-0.8), &mut frame), near);
+    assert_eq!(draw.clip_triangles(&quad(-0.8), &mut frame).unwrap(), near);
     assert!(frame.depth_floor() < floor);
-    assert_eq!(draw.clip_triangles(&quad(-0.5), &mut frame), 0);
+    assert_eq!(draw.clip_triangles(&quad(-0.5), &mut frame).unwrap(), 0);
 }

@@ -289,7 +289,7 @@ fn draw_fixel<P: ProjectionStage>(
         .with_depth(&mut depth)
         .unwrap();
     frame.clear(Rgb565::default());
-    let written = draw.clip_triangles(tris, &mut frame);
+    let written = draw.clip_triangles(tris, &mut frame).unwrap();
     let px = frame.pixels().iter().map(|&c| bits(c)).collect();
     let cov = frame
         .depth()
@@ -478,7 +478,7 @@ fn draw_guarded<P: ProjectionStage>(tris: &[[Vertex<VARYINGS>; 3]], cull: Cull) 
     let vp = Viewport::new(0, 0, 48, 40).unwrap();
     let draw = ShadedDraw::<_, P, DepthLess>::new(shader, vp, cull).unwrap();
     let mut g = Guarded::new(48, 40, true);
-    let n = draw.clip_triangles(tris, &mut g);
+    let n = draw.clip_triangles(tris, &mut g).unwrap();
     assert!(n <= 48 * 40 * tris.len() as u32 * 8);
     g.check("user shader");
 }

@@ -1,23 +1,23 @@
 //! Geometry stage: clip-space triangles in, screen-space triangles out.
 //!
-//! * [`vertex`]: the clip-space vertex (the low-level entry point's input) and the screen
+//! * [`Vertex`], [`ClipVertex`], [`ScreenVertex`]: the clip-space vertex (the low-level entry point's input) and the screen
 //!   vertex (the rasterizer's input).
-//! * [`clip`]: homogeneous clipping against the near and far planes, a minimum `w`, and the
+//! * [`clip_and_project`]: homogeneous clipping against the near and far planes, a minimum `w`, and the
 //!   guard band, so nothing behind the camera or absurdly far off screen reaches the
 //!   raster math.
-//! * [`viewport`]: the viewport, perspective divide and mapping to sub-pixel coordinates,
+//! * [`Viewport`]: the viewport, perspective divide and mapping to sub-pixel coordinates,
 //!   back-face culling.
 //!
 //! Clip space follows OpenGL: a point is visible when `-w <= x, y, z <= w`; NDC z in
 //! `[-1, 1]` maps to depth `[0, 1]`; NDC y up maps to screen y down.
 
-pub mod clip;
-pub mod vertex;
-pub mod viewport;
+pub(crate) mod clip;
+pub(crate) mod vertex;
+pub(crate) mod viewport;
 
 pub use clip::{
     clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
-    prepare_without_depth,
+    prepare_without_depth, W_MIN_BITS,
 };
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

@@ -39,6 +39,12 @@ impl Viewport {
     /// Errors with [`Error::BadViewport`] when a side is zero or the rectangle does not fit in
     /// `0..2048` on either axis.
     ///
+    /// A viewport is independent of the target it is drawn into, as in GL. When it is
+    /// larger than the target or lies partly outside it, the pixels outside the target are
+    /// not drawn (they are cropped, never wrapped or written out of bounds), and those inside
+    /// are exactly the pixels a target of the viewport's full size would get (tested in
+    /// `host-tests/tests/misuse.rs`). To fill a 320x240 display, use a 320x240 viewport.
+    ///
     /// ```
     /// use fixel::geometry::Viewport;
     /// let vp = Viewport::new(0, 0, 320, 240).unwrap();
@@ -47,7 +53,11 @@ impl Viewport {
     /// ```
     pub fn new(x0: u32, y0: u32, width: u32, height: u32) -> Result<Self, Error> {
         let max = MAX_VIEWPORT_PX;
-        if width == 0 || height == 0 || x0 + width > max || y0 + height > max {
+        if width == 0
+            || height == 0
+            || x0.saturating_add(width) > max
+            || y0.saturating_add(height) > max
+        {
             return Err(Error::BadViewport { width, height });
         }
         let rect = Rect {

@@ -60,10 +60,22 @@ impl Vec3 {
     }
 
     /// A vector from any numbers `fixed` can convert (integers, fixed-point, and floats in
-    /// host code), saturating each component to the `Fx` range; NaN becomes zero, so this
-    /// never panics. Not `const` (trait-generic).
-    pub fn from_num<T: ToFixed + Copy + PartialOrd>(x: T, y: T, z: T) -> Vec3 {
-        Vec3::new(num(x), num(y), num(z))
+    /// host code; the three may be of different types), saturating each component to the
+    /// `Fx` range as [`fx`](super::fx) does; NaN becomes zero, so this never panics. Not
+    /// `const` (trait-generic): use [`Vec3::from_bits`] in `const` contexts.
+    ///
+    /// ```
+    /// use fixel::math::{Fx, Vec3};
+    /// assert_eq!(Vec3::from_num(1, 0.5f32, -2i64), Vec3::from_bits(65536, 32768, -131072));
+    /// assert_eq!(Vec3::from_num(40000, f32::NAN, 0).x, Fx::MAX); // saturates, NaN is 0
+    /// ```
+    pub fn from_num<X, Y, Z>(x: X, y: Y, z: Z) -> Vec3
+    where
+        X: ToFixed + Copy + PartialOrd,
+        Y: ToFixed + Copy + PartialOrd,
+        Z: ToFixed + Copy + PartialOrd,
+    {
+        Vec3::new(super::fx(x), super::fx(y), super::fx(z))
     }
 
     /// Component-wise sum, saturating.
@@ -249,14 +261,6 @@ impl Vec4 {
 
 /// Saturating conversion; NaN (the only value not equal to itself) becomes zero, because
 /// `fixed`'s saturating conversion panics on NaN.
-fn num<T: ToFixed + Copy + PartialOrd>(v: T) -> Fx {
-    if v.partial_cmp(&v).is_none() {
-        Fx::ZERO
-    } else {
-        Fx::saturating_from_num(v)
-    }
-}
-
 impl Add for Vec3 {
     type Output = Vec3;
     /// Saturating (see [`Vec3::add`]).

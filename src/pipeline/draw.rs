@@ -199,21 +199,32 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         &self.viewport
     }
 
+    /// Whether `target` can take this draw: [`Error::NoDepthBuffer`] when the draw tests
+    /// depth and the target has no depth buffer.
+    pub fn check_target(&self, target: &dyn RenderTarget<Color = C>) -> Result<(), Error> {
+        if self.mode.depth == DepthTest::Less && !target.has_depth() {
+            return Err(Error::NoDepthBuffer);
+        }
+        Ok(())
+    }
+
     /// Draws triangles given in clip space and returns the number of pixels written (with a
     /// depth test: that passed it). Triangles behind the camera, outside the view volume,
-    /// culled or of zero area are skipped; the rest are clipped.
+    /// culled or of zero area are skipped; the rest are clipped. A depth-testing draw into a
+    /// target without depth is refused ([`Error::NoDepthBuffer`]) before anything is drawn.
     pub fn clip_triangles<T: RenderTarget<Color = C>>(
         &self,
         tris: &[[ClipVertex; 3]],
         target: &mut T,
-    ) -> u32 {
+    ) -> Result<u32, Error> {
+        self.check_target(target)?;
         let mut pixels = 0u32;
         for tri in tris {
             clip_and_project(tri, &self.viewport, self.mode.cull, &mut |s| {
                 pixels = pixels.wrapping_add((self.raster)(self, s, target));
             });
         }
-        pixels
+        Ok(pixels)
     }
 
     /// Clips, projects and culls one clip-space triangle, handing each resulting screen
@@ -223,8 +234,18 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     }
 
     /// Draws one screen triangle (already clipped, projected and culled); returns the pixels
-    /// written.
+    /// written, or [`Error::NoDepthBuffer`] as [`clip_triangles`](Self::clip_triangles).
     pub fn screen_triangle(
+        &self,
+        tri: &ScreenTriangle,
+        target: &mut dyn RenderTarget<Color = C>,
+    ) -> Result<u32, Error> {
+        self.check_target(target)?;
+        Ok((self.raster)(self, tri, target))
+    }
+
+    /// [`screen_triangle`](Self::screen_triangle) for callers that checked the target once.
+    pub(crate) fn screen_triangle_checked(
         &self,
         tri: &ScreenTriangle,
         target: &mut dyn RenderTarget<Color = C>,

@@ -1,7 +1,7 @@
 //! The pipeline: from a draw (a shader, a projection, a depth stage) to the per-pixel loop.
 //!
-//! [`ShadedDraw`] draws any [`Shader`](crate::shading::Shader); [`stages`] names the
-//! classic choices (as enums and as marker types) and [`Draw`] binds them to built-in
+//! [`ShadedDraw`] draws any [`Shader`](crate::shading::Shader); [`DrawMode`] and [`Pipeline`] name
+//! the classic choices (as enums and as marker types) and [`Draw`] binds them to built-in
 //! shaders, selecting the span loop once. The private `raster` module runs one triangle
 //! (shader hook, set-up, edge walk), `setup` builds its planes, `interp` interpolates the
 //! varyings and `span` is the chunked per-pixel loop (depth mask, varyings, shading).
@@ -13,8 +13,12 @@ pub mod recip;
 mod setup;
 mod shaded;
 mod span;
-pub mod stages;
+pub(crate) mod stages;
 
 pub use draw::Draw;
 pub use shaded::ShadedDraw;
-pub use stages::*;
+pub use stages::{
+    Adaptive, Affine, DepthLess, DepthStage, DepthTest, DrawMode, DynProjection, Exact, Flat,
+    FromMode, FromWrap, Gouraud, Modulate, ModulateIntensity, NoDepth, Pipeline, ProjKind,
+    Projection, ProjectionStage, Replace, Shading, ShadingStage, Stages, Subdivided, SubdividedBy,
+};

@@ -6,7 +6,7 @@
 //! use fixel::geometry::Vertex;
 //! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 //! use fixel::shading::Gouraud;
-//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use fixel::Rgb565;
 //!
 //! // A Gouraud triangle: varyings r, g, b in Q8.16 (256 << 16 = 1.0).
 //! let one = 256 << 16;
@@ -20,7 +20,7 @@
 //! let (mut color, mut depth) = ([Rgb565::default(); 32 * 32], [0u16; 32 * 32]);
 //! let mut frame = Frame::new(&mut color, 32, 32)?.with_depth(&mut depth)?;
 //! frame.clear(Rgb565::default());
-//! assert!(draw.clip_triangles(&[tri], &mut frame) > 300);
+//! assert!(draw.clip_triangles(&[tri], &mut frame)? > 300);
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
@@ -122,31 +122,57 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
         clip_and_project_varyings(tri, &self.viewport, self.cull, emit);
     }
 
+    /// Whether `target` can take this draw: [`Error::NoDepthBuffer`] when the draw tests
+    /// depth and the target has no depth buffer.
+    pub fn check_target<C: TargetColor>(
+        &self,
+        target: &dyn RenderTarget<Color = C>,
+    ) -> Result<(), Error> {
+        if D::TEST && !target.has_depth() {
+            return Err(Error::NoDepthBuffer);
+        }
+        Ok(())
+    }
+
     /// Draws triangles given in clip space and returns the pixels written (with a depth
     /// test: that passed it). Triangles behind the camera, outside the view volume, culled
-    /// or of zero area are skipped; the rest are clipped.
+    /// or of zero area are skipped; the rest are clipped. A depth-testing draw into a target
+    /// without depth is refused ([`Error::NoDepthBuffer`]) before anything is drawn.
     pub fn clip_triangles<const N: usize, C, T>(
         &self,
         tris: &[[Vertex<N>; 3]],
         target: &mut T,
-    ) -> u32
+    ) -> Result<u32, Error>
     where
         S: Shader<Varyings = [i32; N]>,
         C: TargetColor,
         T: RenderTarget<Color = C>,
     {
+        self.check_target(target)?;
         let mut pixels = 0u32;
         for tri in tris {
             self.project(tri, &mut |s| {
-                pixels = pixels.wrapping_add(self.screen_triangle(s, target));
+                pixels = pixels.wrapping_add(self.raster(s, target));
             });
         }
-        pixels
+        Ok(pixels)
     }
 
     /// Draws one screen triangle (already clipped, projected and culled); returns the pixels
-    /// written.
+    /// written, or [`Error::NoDepthBuffer`] as [`clip_triangles`](Self::clip_triangles).
     pub fn screen_triangle<const N: usize, C: TargetColor>(
+        &self,
+        tri: &ScreenTriangle<N>,
+        target: &mut dyn RenderTarget<Color = C>,
+    ) -> Result<u32, Error>
+    where
+        S: Shader<Varyings = [i32; N]>,
+    {
+        self.check_target(target)?;
+        Ok(self.raster(tri, target))
+    }
+
+    fn raster<const N: usize, C: TargetColor>(
         &self,
         tri: &ScreenTriangle<N>,
         target: &mut dyn RenderTarget<Color = C>,

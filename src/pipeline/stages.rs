@@ -125,7 +125,7 @@ pub enum ProjKind {
 pub trait ShadingStage: Copy + Default + Debug {
     /// Which shading this marker selects.
     const KIND: Shading;
-    /// The built-in shader (see [`crate::shading::builtin`]) for a texture bound with
+    /// The built-in shader (see [`crate::shading::Classic`]) for a texture bound with
     /// filter `F` and wraps `WU`, `WV`.
     type Shader<'a, F: TexSampler + 'a, WU: WrapMode + 'a, WV: WrapMode + 'a>: Classic;
     /// That shader, from the draw's texture binding and flat colour (raw RGB565).

@@ -2,7 +2,7 @@
 //!
 //! The rasterizer knows nothing of textures, colours or depth: it emits `(y, x0..x1)` spans
 //! to a [`SpanSink`], which is what makes coverage rules testable with tiny ASCII grids.
-//! Attribute interpolation (plane equations) lives in [`gradient`], and is used by the
+//! Attribute interpolation (plane equations) lives in [`Plane`], and is used by the
 //! pipeline's span writers, not by the rasterizer.
 //!
 //! # Conventions (OpenGL ES)
@@ -21,13 +21,13 @@
 //! and a shared edge is evaluated identically whichever triangle it belongs to (edges are
 //! always walked top to bottom).
 
-pub mod edge;
-pub mod gradient;
-pub mod triangle;
+pub(crate) mod edge;
+pub(crate) mod gradient;
+pub(crate) mod triangle;
 
 pub use edge::EdgeWalker;
-pub use gradient::Plane;
-pub use triangle::{rasterize, Rect, SpanSink};
+pub use gradient::{Plane, PlaneSetup};
+pub use triangle::{first_row_at_or_below, rasterize, Rect, SpanSink};
 
 /// Fractional bits of screen coordinates: 4, so one pixel is 16 sub-pixel units.
 pub const SUBPIXEL_BITS: u32 = 4;
@@ -38,7 +38,7 @@ pub const SUBPIXEL_ONE: i32 = 1 << SUBPIXEL_BITS;
 /// Geometry clips triangles to this guard band, so any vertex the rasterizer sees lies in
 /// `[-GUARD_BAND_PX, GUARD_BAND_PX]` on both axes. With 4 sub-pixel bits that is
 /// `|x| <= 2^16` sub-pixel units: edge and plane set-up products then stay below 2^63
-/// (see [`gradient`]) and per-row stepping fits `i32`.
+/// (see [`Plane`]) and per-row stepping fits `i32`.
 pub const GUARD_BAND_PX: i32 = 4096;
 /// Largest viewport side in pixels (the viewport must sit inside the guard band).
 pub const MAX_VIEWPORT_PX: u32 = 2048;

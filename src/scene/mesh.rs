@@ -178,7 +178,9 @@ pub fn mesh_triangles(
     }
 }
 
-/// Draws `mesh` with `draw` into `target`; returns the pixels written.
+/// Draws `mesh` with `draw` into `target`; returns the pixels written (with a depth test:
+/// that passed it), or [`Error::NoDepthBuffer`] before drawing anything when the draw tests
+/// depth and `target` has no depth buffer.
 pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
@@ -186,12 +188,15 @@ pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
     camera: &Camera,
     light: Option<&DirectionalLight>,
     target: &mut T,
-) -> u32 {
+) -> Result<u32, Error> {
+    draw.check_target(target)?;
     let mut pixels = 0u32;
     mesh_triangles(mesh, model, camera, light, |t| {
-        pixels = pixels.wrapping_add(draw.clip_triangles(core::slice::from_ref(t), target));
+        draw.project(t, &mut |s| {
+            pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
+        });
     });
-    pixels
+    Ok(pixels)
 }
 
 /// Like [`draw_mesh`] with a vertex cache (see [`mesh_triangles_cached`]).
@@ -203,10 +208,13 @@ pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
     light: Option<&DirectionalLight>,
     cache: &mut [Option<ClipVertex>],
     target: &mut T,
-) -> u32 {
+) -> Result<u32, Error> {
+    draw.check_target(target)?;
     let mut pixels = 0u32;
     mesh_triangles_cached(mesh, model, camera, light, cache, |t| {
-        pixels = pixels.wrapping_add(draw.clip_triangles(core::slice::from_ref(t), target));
+        draw.project(t, &mut |s| {
+            pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
+        });
     });
-    pixels
+    Ok(pixels)
 }

@@ -9,24 +9,24 @@
 //!
 //! ```
 //! use fixel::prelude::*;
+//! use fixel::math::fx;
 //! use fixel::scene::{draw_mesh, Camera, DirectionalLight, Mesh};
-//! use embedded_graphics_core::pixelcolor::Rgb565;
 //!
 //! // One white-lit triangle, untextured Gouraud, into a 32 x 24 frame.
 //! let positions = [Vec3::from_num(-1, -1, -3), Vec3::from_num(1, -1, -3), Vec3::from_num(0, 1, -3)];
 //! let normals = [Vec3::from_num(0, 0, 1); 3];
 //! let uvs = [[Fx::ZERO; 2]; 3];
 //! let indices = [[0u16, 1, 2]];
-//! let mesh = Mesh::new(&positions, Some(&normals), &uvs, &indices).unwrap();
-//! let camera = Camera::perspective(Angle::from_degrees(Fx::from_num(45)), Fx::from_num(4) / 3,
-//!                                  Fx::from_num(0.5), Fx::from_num(20)).unwrap();
+//! let mesh = Mesh::new(&positions, Some(&normals), &uvs, &indices)?;
+//! let camera = Camera::perspective(Angle::from_degrees(fx(45)), fx(4) / 3, fx(0.5), fx(20))?;
 //! let light = DirectionalLight::default();
 //! let mode = DrawMode { shading: Shading::Gouraud, ..DrawMode::default() };
-//! let draw = Draw::dynamic(mode, None, Viewport::new(0, 0, 32, 24).unwrap()).unwrap();
-//! let mut pixels = [Rgb565::default(); 32 * 24];
-//! let mut frame = Frame::new(&mut pixels, 32, 24).unwrap();
-//! let written = draw_mesh(&draw, &mesh, &Mat4::IDENTITY, &camera, Some(&light), &mut frame);
+//! let draw = Draw::dynamic(mode, None, Viewport::new(0, 0, 32, 24)?)?;
+//! let mut pixels = [Rgb565::BLACK; 32 * 24];
+//! let mut frame = Frame::new(&mut pixels, 32, 24)?;
+//! let written = draw_mesh(&draw, &mesh, &Mat4::IDENTITY, &camera, Some(&light), &mut frame)?;
 //! assert!(written > 50);
+//! # Ok::<(), fixel::Error>(())
 //! ```
 
 mod camera;

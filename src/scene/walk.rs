@@ -353,7 +353,7 @@ pub fn mesh_to_sink<C: TargetColor>(
 
 /// Draws `mesh` into `target` through the vertex cache (`cache`: one entry per vertex for
 /// a single pass per vertex; any length works); returns the pixels written. Same pixels as
-/// [`draw_mesh`](super::draw_mesh).
+/// [`draw_mesh`](super::draw_mesh), and the same [`Error::NoDepthBuffer`](crate::Error).
 pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
@@ -362,7 +362,8 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     target: &mut T,
-) -> u32 {
+) -> Result<u32, crate::Error> {
+    draw.check_target(target)?;
     struct ToTarget<'x, 'd, 'a, C: TargetColor, T> {
         draw: &'d Draw<'a, C>,
         target: &'x mut T,
@@ -376,7 +377,7 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
             true
         }
         fn triangle(&mut self, _: usize, tri: &ScreenTriangle) {
-            let p = self.draw.screen_triangle(tri, self.target);
+            let p = self.draw.screen_triangle_checked(tri, self.target);
             self.pixels = self.pixels.wrapping_add(p);
         }
     }
@@ -386,5 +387,5 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
         pixels: 0,
     };
     walk_mesh(draw, mesh, model, camera, light, cache, 0, &mut out);
-    out.pixels
+    Ok(out.pixels)
 }

@@ -11,7 +11,7 @@
 //!   varyings, keep per-triangle data) and the per-pixel [`Shader::shade`].
 //! * [`TexBinding`]: a texture with its filter and wrap modes, as a shader uses it: texel
 //!   coordinate set-up per triangle and monomorphised sampling per pixel.
-//! * [`builtin`]: the classic shadings ([`Replace`], [`ModulateIntensity`], [`Modulate`],
+//! * the classic shadings ([`Replace`], [`ModulateIntensity`], [`Modulate`],
 //!   [`Gouraud`], [`Flat`]) as ordinary shaders.
 //!
 //! # Writing a shader
@@ -37,10 +37,10 @@
 //! See [`crate::pipeline::ShadedDraw`] for drawing with it, and the crate docs for a
 //! two-texture light-mapped shader.
 
-pub mod builtin;
+pub(crate) mod builtin;
 mod texcoord;
 
-pub use builtin::{Flat, Gouraud, Modulate, ModulateIntensity, Replace};
+pub use builtin::{q8, Classic, Flat, Gouraud, Modulate, ModulateIntensity, Replace};
 pub use texcoord::{TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)

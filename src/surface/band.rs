@@ -21,7 +21,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use super::{Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
-use crate::pipeline::Draw;
+use crate::pipeline::{DepthTest, Draw};
 use crate::raster::triangle::first_row_at_or_below;
 use crate::Error;
 
@@ -77,6 +77,51 @@ pub struct BandStats {
     pub pixels: u32,
 }
 
+/// Why a banded frame was not drawn: bad input (found before the first band is drawn), or
+/// the error of a band's flush (which stops the frame).
+///
+/// With a flush that cannot fail (`E = Infallible`), `?` turns it into a plain [`Error`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BandError<E> {
+    /// The draws, the storage or the triangles pushed do not fit the renderer.
+    Input(Error),
+    /// `flush` failed (a display's bus error, say).
+    Flush(E),
+}
+
+impl<E> From<Error> for BandError<E> {
+    fn from(e: Error) -> Self {
+        BandError::Input(e)
+    }
+}
+
+impl From<BandError<core::convert::Infallible>> for Error {
+    fn from(e: BandError<core::convert::Infallible>) -> Self {
+        match e {
+            BandError::Input(e) => e,
+            BandError::Flush(never) => match never {},
+        }
+    }
+}
+
+impl<E: core::fmt::Display> core::fmt::Display for BandError<E> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            BandError::Input(e) => write!(f, "{e}"),
+            BandError::Flush(e) => write!(f, "flushing a band failed: {e}"),
+        }
+    }
+}
+
+impl<E: core::fmt::Debug + core::fmt::Display> core::error::Error for BandError<E> {}
+
+/// The first draw index pushed that is not in `0..draws`, kept for the error.
+pub(super) fn note_bad_draw(bad: &mut Option<u8>, draw: u8, draws: usize) {
+    if usize::from(draw) >= draws && bad.is_none() {
+        *bad = Some(draw);
+    }
+}
+
 /// Receives screen triangles from the scene's geometry pass.
 #[derive(Debug)]
 pub struct TriangleSink<'s, 'f, 'a, C: TargetColor> {
@@ -89,6 +134,8 @@ enum SinkMode<'s, 'f, 'a, C: TargetColor> {
         bins: &'s mut [Binned],
         len: usize,
         overflow: bool,
+        draws: usize,
+        bad_draw: Option<u8>,
     },
     Immediate {
         draws: &'s [&'s Draw<'a, C>],
@@ -99,14 +146,18 @@ enum SinkMode<'s, 'f, 'a, C: TargetColor> {
 
 impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
     /// Hands over one screen triangle of draw number `draw` (an index into the draws given
-    /// to [`BandRenderer::render`]).
+    /// to [`BandRenderer::render`]; an index past them makes `render` return
+    /// [`Error::BadDrawIndex`] before drawing).
     pub fn push(&mut self, draw: u8, tri: &ScreenTriangle) {
         match &mut self.mode {
             SinkMode::Bin {
                 bins,
                 len,
                 overflow,
+                draws,
+                bad_draw,
             } => {
+                note_bad_draw(bad_draw, draw, *draws);
                 if let Some(slot) = bins.get_mut(*len) {
                     *slot = Binned::new(draw, tri);
                     *len += 1;
@@ -120,7 +171,7 @@ impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
                 pixels,
             } => {
                 if let Some(d) = draws.get(usize::from(draw)) {
-                    *pixels += d.screen_triangle(tri, *band);
+                    *pixels += d.screen_triangle_checked(tri, *band);
                 }
             }
         }
@@ -143,7 +194,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     ///
     /// ```
     /// use fixel::surface::BandRenderer;
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use fixel::Rgb565;
     /// let mut buf = [Rgb565::default(); 320 * 16];
     /// assert!(BandRenderer::new(&mut buf, 320, 16, 240).is_ok());
     /// let mut buf = [Rgb565::default(); 320 * 16];
@@ -186,10 +237,23 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
         Ok(self)
     }
 
+    /// Refuses draws that test depth when the bands have no depth buffer.
+    pub(super) fn check_draws(&self, draws: &[&Draw<'_, C>]) -> Result<(), Error> {
+        let tests_depth = draws.iter().any(|d| d.mode().depth == DepthTest::Less);
+        if tests_depth && self.depth.is_none() {
+            return Err(Error::NoDepthBuffer);
+        }
+        Ok(())
+    }
+
     /// Draws one frame. `geometry` is called with a [`TriangleSink`] and must push every
     /// screen triangle of the frame (usually via [`Draw::project`]), tagged with the index of
     /// its draw in `draws`. Each band is cleared to `clear`, drawn and passed to `flush`; the
-    /// first flush error stops the frame and is returned.
+    /// first flush error stops the frame and is returned as [`BandError::Flush`].
+    ///
+    /// Refused before any band is drawn, as [`BandError::Input`]: a draw that tests depth
+    /// when the renderer has no depth band ([`Error::NoDepthBuffer`]), and a triangle pushed
+    /// with a draw index past `draws` ([`Error::BadDrawIndex`]).
     pub fn render<E>(
         &mut self,
         draws: &[&Draw<'_, C>],
@@ -197,20 +261,33 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
         clear: C,
         mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
         mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
-    ) -> Result<BandStats, E> {
+    ) -> Result<BandStats, BandError<E>> {
+        self.check_draws(draws)?;
         let mut sink = TriangleSink {
             mode: SinkMode::Bin {
                 bins,
                 len: 0,
                 overflow: false,
+                draws: draws.len(),
+                bad_draw: None,
             },
         };
         geometry(&mut sink);
         let (bins, len, overflow) = match sink.mode {
             SinkMode::Bin {
+                bad_draw: Some(index),
+                ..
+            } => {
+                return Err(BandError::Input(Error::BadDrawIndex {
+                    index,
+                    draws: draws.len(),
+                }))
+            }
+            SinkMode::Bin {
                 bins,
                 len,
                 overflow,
+                ..
             } => (bins, len, overflow),
             SinkMode::Immediate { .. } => (&mut [][..], 0, true),
         };
@@ -241,12 +318,13 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
                         continue;
                     }
                     if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels += d.screen_triangle(&b.tri, band);
+                        pixels += d.screen_triangle_checked(&b.tri, band);
                     }
                 }
                 pixels
             }
-        })?;
+        })
+        .map_err(BandError::Flush)?;
         Ok(stats)
     }
 
@@ -270,7 +348,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
                 break;
             };
             if let Some(d) = self.depth.as_deref_mut() {
-                match band.with_depth(&mut d[..n.min(need)]) {
+                match band.with_depth_as_is(&mut d[..n.min(need)]) {
                     Ok(b) => band = b,
                     Err(_) => break,
                 }

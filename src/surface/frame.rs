@@ -12,7 +12,7 @@ pub const DEPTH_CLEAR: u16 = u16::MAX;
 ///
 /// ```
 /// use fixel::surface::Frame;
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use fixel::Rgb565;
 /// let mut colour = [Rgb565::default(); 320 * 240];
 /// let mut depth = [0u16; 320 * 240];
 /// let frame = Frame::new(&mut colour, 320, 240).unwrap().with_depth(&mut depth).unwrap();
@@ -59,8 +59,20 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         })
     }
 
-    /// Adds a depth buffer (same size as the colour buffer).
-    pub fn with_depth(mut self, depth: &'a mut [u16]) -> Result<Self, Error> {
+    /// Adds a depth buffer (same size as the colour buffer), filled with [`DEPTH_CLEAR`]
+    /// (the far plane) so that a frame drawn without a [`clear`](Self::clear) is still
+    /// depth-tested correctly.
+    pub fn with_depth(self, depth: &'a mut [u16]) -> Result<Self, Error> {
+        let mut frame = self.with_depth_as_is(depth)?;
+        if let Some(d) = frame.depth.as_deref_mut() {
+            d.fill(DEPTH_CLEAR);
+        }
+        frame.depth_floor = DEPTH_CLEAR;
+        Ok(frame)
+    }
+
+    /// [`with_depth`](Self::with_depth) without the fill, for a band that is cleared next.
+    pub(crate) fn with_depth_as_is(mut self, depth: &'a mut [u16]) -> Result<Self, Error> {
         if depth.len() != self.color.len() {
             return Err(Error::WrongLength {
                 expected: self.color.len(),
@@ -117,6 +129,10 @@ impl<C: TargetColor> RenderTarget for Frame<'_, C> {
 
     fn row_range(&self) -> (i32, i32) {
         (self.y0, self.y0 + self.height as i32)
+    }
+
+    fn has_depth(&self) -> bool {
+        self.depth.is_some()
     }
 
     #[inline]

@@ -6,16 +6,16 @@
 //!
 //! * [`Frame`]: a colour slice (`&mut [C]`) plus an optional 16-bit depth slice, covering
 //!   rows `y0..y0 + height` of a frame. With `y0 = 0` and the full height it is an ordinary
-//!   framebuffer; with fewer rows it is a *band* (see [`band`]).
-//! * [`band`]: draws a frame as horizontal bands through a small buffer and flushes each to
+//!   framebuffer; with fewer rows it is a *band* (see [`BandRenderer`]).
+//! * [`BandRenderer::render`]: draws a frame as horizontal bands through a small buffer and flushes each to
 //!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
-//! * [`spans`]: bands for meshes of any size, with two bytes of storage per triangle.
+//! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 
-pub mod band;
-pub mod frame;
-pub mod spans;
+pub(crate) mod band;
+pub(crate) mod frame;
+pub(crate) mod spans;
 
-pub use band::{BandRenderer, DrawTargetFlush};
+pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use spans::{BandRange, MeshSink};
 
@@ -35,6 +35,9 @@ pub trait RenderTarget {
     /// The colour row `y` (frame coordinates) and its depth row, if the target has a depth
     /// buffer. `None` when `y` is outside [`row_range`](Self::row_range).
     fn row_mut(&mut self, y: i32) -> Option<Row<'_, Self::Color>>;
+    /// Whether [`row_mut`](Self::row_mut) hands out depth rows. A depth-testing draw into
+    /// a target without depth is refused with [`Error::NoDepthBuffer`](crate::Error).
+    fn has_depth(&self) -> bool;
 
     /// A lower bound of every depth value stored in the target (a one-value hierarchical
     /// depth buffer): a span whose depths all lie below it passes the depth test without

@@ -37,11 +37,12 @@
 //! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
 //! viewport only.
 
-use super::band::{rows_of, BandStats, Binned};
+use super::band::{note_bad_draw, rows_of, BandError, BandStats, Binned};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
 use crate::pipeline::Draw;
+use crate::Error;
 
 /// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
 /// triangle below band 254 is then looked at in every band from 254 on: conservative).
@@ -118,6 +119,8 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
         rows: u32,
         height: u32,
         triangles: u32,
+        draws: usize,
+        bad_draw: Option<u8>,
     },
     /// One band: draw what covers it.
     Band {
@@ -189,7 +192,8 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
         self.attributes
     }
 
-    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]`.
+    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]` (an index
+    /// past the draws makes `render_spans` return [`Error::BadDrawIndex`] before drawing).
     pub fn push(&mut self, id: usize, draw: u8, tri: &ScreenTriangle) {
         match &mut self.pass {
             Pass::Bin {
@@ -202,7 +206,10 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 rows,
                 height,
                 triangles,
+                draws,
+                bad_draw,
             } => {
+                note_bad_draw(bad_draw, draw, *draws);
                 *triangles += 1;
                 if !*bins_full {
                     match bins.get_mut(*len) {
@@ -249,7 +256,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                     return;
                 }
                 if let Some(d) = draws.get(usize::from(draw)) {
-                    *pixels += d.screen_triangle(tri, *band);
+                    *pixels += d.screen_triangle_checked(tri, *band);
                 }
             }
         }
@@ -263,7 +270,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
     /// usually through [`crate::scene::mesh_to_sink`]. `bins` holds screen triangles while
     /// they fit (may be empty); `ranges` one [`BandRange`] per triangle id (may be shorter
     /// than the frame: see [`BandStats::rewalked`]). Each band is cleared to `clear`, drawn
-    /// and passed to `flush`; the first flush error stops the frame and is returned.
+    /// and passed to `flush`; the first flush error stops the frame and is returned. Input
+    /// errors are refused before any band is drawn, as for [`render`](Self::render).
     pub fn render_spans<E>(
         &mut self,
         draws: &[&Draw<'_, C>],
@@ -272,7 +280,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         clear: C,
         mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
         mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
-    ) -> Result<BandStats, E> {
+    ) -> Result<BandStats, BandError<E>> {
+        self.check_draws(draws)?;
         ranges.fill(BandRange::EMPTY);
         let rows = self.rows.max(1);
         let mut windows = Windows {
@@ -290,6 +299,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 rows,
                 height: self.height,
                 triangles: 0,
+                draws: draws.len(),
+                bad_draw: None,
             },
             attributes: true,
         };
@@ -302,11 +313,18 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             ranges,
             ranges_short,
             triangles,
+            bad_draw,
             ..
         } = sink.pass
         else {
             return Ok(BandStats::default());
         };
+        if let Some(index) = bad_draw {
+            return Err(BandError::Input(Error::BadDrawIndex {
+                index,
+                draws: draws.len(),
+            }));
+        }
         let mut stats = BandStats {
             triangles,
             reprojected: bins_full,
@@ -343,12 +361,13 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 let mut pixels = 0;
                 for b in bins[..len].iter().filter(|b| b.meets(r0, r1)) {
                     if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels += d.screen_triangle(&b.tri, band);
+                        pixels += d.screen_triangle_checked(&b.tri, band);
                     }
                 }
                 pixels
             }
-        })?;
+        })
+        .map_err(BandError::Flush)?;
         Ok(stats)
     }
 }

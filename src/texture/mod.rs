@@ -8,15 +8,16 @@
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
 //! raw RGB565 `u16`. See each submodule for the exact formulas.
 
-pub mod mip;
+pub(crate) mod mip;
 mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
 mod wrap;
 
 pub use mip::{
-    generate_mips, DynMip, LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture,
-    Mipmapped, NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear,
+    chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,
+    LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
+    NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear, MAX_LEVELS,
 };
 pub use sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 pub use texture::{Texture, MAX_LOG2_SIZE};

@@ -185,7 +185,7 @@ impl Texture<'static> {
     /// (like embedded-graphics' `ImageRaw::new`).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use fixel::Rgb565;
     /// use fixel::texture::Texture;
     ///
     /// static TEXELS: [Rgb565; 8] = [Rgb565::new(31, 0, 0); 8];
@@ -196,7 +196,7 @@ impl Texture<'static> {
     /// A wrong length does not compile:
     ///
     /// ```compile_fail
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use fixel::Rgb565;
     /// use fixel::texture::Texture;
     ///
     /// static TEXELS: [Rgb565; 8] = [Rgb565::new(31, 0, 0); 8];

@@ -19,8 +19,8 @@ use fixel::demo;
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
-use fixel::surface::band::Binned;
-use fixel::surface::DrawTargetFlush;
+use fixel::surface::Binned;
+use fixel::surface::{BandError, DrawTargetFlush};
 use fixel::texture::{Bilinear, Repeat};
 use mipidsi::interface::SpiInterface;
 use mipidsi::models::ST7789;
@@ -92,7 +92,7 @@ fn main() -> ! {
         let model = demo::cube_model(frame);
         let mut out = DrawTargetFlush(&mut display);
         // Geometry runs once (binned); each band is drawn, then streamed to the panel.
-        let _stats = bands.render(
+        let drawn = bands.render(
             &[&draw],
             &mut bins,
             Rgb565::new(0, 0, 0),
@@ -103,6 +103,13 @@ fn main() -> ! {
             },
             |band| out.flush(band),
         );
+        match drawn {
+            Ok(_stats) => {}
+            // Input errors are bugs in this program (a draw index, a missing depth band).
+            Err(BandError::Input(e)) => panic!("{e}"),
+            // A failed bus transfer: the next frame redraws every band.
+            Err(BandError::Flush(_)) => {}
+        }
         frame = frame.wrapping_add(1);
     }
 }

@@ -37,7 +37,7 @@ texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
 
 /// Texels of `T(64, 64)` and its mip levels down to 1 x 1 (5461 texels, ~11 KB).
-pub static T64_MIP_TEXELS: [Rgb565; fixel::texture::mip::chain_len(64, 64, 7)] =
+pub static T64_MIP_TEXELS: [Rgb565; fixel::texture::chain_len(64, 64, 7)] =
     texels(include_bytes!(concat!(env!("OUT_DIR"), "/t64x64-mips.bin")));
 
 /// `T(64, 64)` with its full mip chain.

@@ -4,13 +4,14 @@
 //!
 //! Only `fixel` and `core` are used here: no allocation, no platform code.
 
+use core::convert::Infallible;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
 use fixel::pipeline::{DepthLess, ModulateIntensity, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh};
-use fixel::surface::band::{BandStats, Binned};
 use fixel::surface::BandRange;
+use fixel::surface::{BandStats, Binned};
 use fixel::texture::{Bilinear, Nearest, Repeat};
 
 /// Frame size of every scene.
@@ -210,7 +211,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
             let mut frame = Frame::new(&mut w.color, W, H)?.with_depth(&mut w.depth)?;
             frame.clear(Rgb565::new(0, 0, 0));
             let pixels =
-                draw_mesh_walked(draw, mesh, model, &camera, light, &mut w.cache, &mut frame);
+                draw_mesh_walked(draw, mesh, model, &camera, light, &mut w.cache, &mut frame)?;
             pause();
             sum.pixels(frame.pixels());
             resume();
@@ -226,23 +227,21 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
     };
     let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
     let cache = &mut buf.cache;
-    let stats = bands
-        .render_spans(
-            &[draw],
-            &mut buf.bins,
-            &mut buf.ranges,
-            Rgb565::new(0, 0, 0),
-            |sink| {
-                mesh_to_sink(draw, 0, mesh, model, &camera, light, cache, 0, sink);
-            },
-            |band| {
-                pause();
-                sum.pixels(band.pixels());
-                resume();
-                Ok::<(), ()>(())
-            },
-        )
-        .map_err(|()| Error::BadMode("flush failed"))?;
+    let stats = bands.render_spans(
+        &[draw],
+        &mut buf.bins,
+        &mut buf.ranges,
+        Rgb565::new(0, 0, 0),
+        |sink| {
+            mesh_to_sink(draw, 0, mesh, model, &camera, light, cache, 0, sink);
+        },
+        |band| {
+            pause();
+            sum.pixels(band.pixels());
+            resume();
+            Ok::<(), Infallible>(())
+        },
+    )?;
     Ok(FrameResult {
         checksum: sum.0,
         stats,

@@ -9,7 +9,7 @@ use fixel::math::{Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, Stages};
 use fixel::prelude::{BandRenderer, Cull, Viewport};
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
-use fixel::surface::band::Binned;
+use fixel::surface::Binned;
 
 use crate::data;
 use crate::scenes::{Fnv1a, H, ROWS, W};

@@ -43,7 +43,7 @@ use fixel::math::Mat4;
 use fixel::pipeline::{DepthTest, DrawMode, Shading};
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
 use fixel::surface::Frame;
-use fixel::texture::mip::{chain_len, full_levels};
+use fixel::texture::{chain_len, full_levels};
 use fixel::texture::{generate_mips, MipTexture, Texture};
 use host_tests::adapter;
 use host_tests::metrics::{compare_rgb565, Report};
@@ -220,7 +220,7 @@ fn time_mode(scene: Scene, m: &Mode, tex: &Tex, meshes: &Meshes, runs: u32) -> (
                 .with_depth(&mut depth)
                 .expect("depth");
             frame.clear(Rgb565::new(0, 0, 0));
-            px += u64::from(draw_mesh(&draw, &mesh, &model, &camera, light, &mut frame));
+            px += u64::from(draw_mesh(&draw, &mesh, &model, &camera, light, &mut frame).unwrap());
         }
         std::hint::black_box(px)
     };
@@ -369,7 +369,8 @@ impl ErrFrame {
             .with_depth(&mut depth)
             .expect("depth");
         frame.clear(Rgb565::new(0, 0, 0));
-        draw.clip_triangles(&self.clip[usize::from(m.lit)], &mut frame);
+        draw.clip_triangles(&self.clip[usize::from(m.lit)], &mut frame)
+            .unwrap();
         color
             .iter()
             .map(|&c| RawU16::from(c).into_inner())

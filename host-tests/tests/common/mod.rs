@@ -123,6 +123,9 @@ impl RenderTarget for Guarded {
     fn row_range(&self) -> (i32, i32) {
         (0, self.h as i32)
     }
+    fn has_depth(&self) -> bool {
+        self.with_depth
+    }
     fn row_mut(&mut self, y: i32) -> Option<(&mut [Rgb565], Option<&mut [u16]>)> {
         if y < 0 || y as usize >= self.h {
             self.bad_rows.push(y);
@@ -169,7 +172,7 @@ pub fn draw_guarded(
     let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
     let draw = Draw::dynamic(mode, t, vp).expect("valid mode");
     let mut g = Guarded::new(w, h, mode.depth == DepthTest::Less);
-    let n = draw.clip_triangles(tris, &mut g);
+    let n = draw.clip_triangles(tris, &mut g).unwrap();
     g.check("draw");
     (g, n)
 }
@@ -196,7 +199,7 @@ pub fn write_counts(tris: &[[ClipVertex; 3]], cull: Cull, w: usize, h: usize) ->
     let mut counts = vec![0u32; w * h];
     for s in &screen {
         g.clear(0);
-        let n = draw.screen_triangle(s, &mut g);
+        let n = draw.screen_triangle(s, &mut g).unwrap();
         g.check("write_counts");
         let px = g.pixels();
         let mut changed = 0;

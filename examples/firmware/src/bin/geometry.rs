@@ -157,12 +157,15 @@ fn stages<const V: usize, const T: usize>(
     let Ok(mut row) = row.with_depth(&mut depth) else {
         return false;
     };
+    if draw.check_target(&row).is_err() {
+        return false;
+    }
     stage(scene, "setup", || {
         let mut px = 0u32;
         for &k in &s.kept[..nk] {
             let idx = m.indices[usize::from(k)];
             let tri = idx.map(|i| s.prepared[usize::from(i)].1);
-            px += draw.screen_triangle(&tri, &mut row);
+            px += draw.screen_triangle(&tri, &mut row).unwrap_or(0); // target checked above
         }
         (nk as u32, px)
     });
