@@ -54,8 +54,7 @@ fn cube_frame(draw: &Draw<'_, Rgb565>, w: u32, h: u32, clear: bool) -> Vec<Rgb56
 fn depth_test_into_a_frame_without_depth_is_an_error() {
     let t = texels();
     let tex = Texture::new(&t, 64, 64).unwrap();
-    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
-        .unwrap();
+    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back).unwrap();
     let mut color = vec![Rgb565::BLACK; (W * H) as usize];
     let mut frame = Frame::new(&mut color, W, H).unwrap();
     let cube = demo::cube();
@@ -87,8 +86,7 @@ fn depth_test_into_a_frame_without_depth_is_an_error() {
 fn depth_test_into_bands_without_depth_is_an_error() {
     let t = texels();
     let tex = Texture::new(&t, 64, 64).unwrap();
-    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
-        .unwrap();
+    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back).unwrap();
     let mut buf = vec![Rgb565::BLACK; (W * 8) as usize];
     let mut bands = BandRenderer::new(&mut buf, W, 8, H).unwrap();
     let mut bins = [Binned::default(); 16];
@@ -114,8 +112,7 @@ fn depth_test_into_bands_without_depth_is_an_error() {
 fn a_frame_drawn_without_clear_is_depth_tested_correctly() {
     let t = texels();
     let tex = Texture::new(&t, 64, 64).unwrap();
-    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
-        .unwrap();
+    let draw = Draw::new::<Lit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back).unwrap();
     // `with_depth` fills the depth buffer with the far plane: forgetting `clear` (the
     // colour was already black) gives the same frame.
     assert_eq!(
@@ -128,8 +125,8 @@ fn a_frame_drawn_without_clear_is_depth_tested_correctly() {
 fn a_draw_index_past_the_draws_is_an_error() {
     let t = texels();
     let tex = Texture::new(&t, 64, 64).unwrap();
-    let draw = Draw::new::<Unlit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
-        .unwrap();
+    let draw =
+        Draw::new::<Unlit>(Some(tex), Viewport::new(0, 0, W, H).unwrap(), Cull::Back).unwrap();
     let mut buf = vec![Rgb565::BLACK; (W * 8) as usize];
     let mut bands = BandRenderer::new(&mut buf, W, 8, H).unwrap();
     let cube = demo::cube();
@@ -143,13 +140,9 @@ fn a_draw_index_past_the_draws_is_an_error() {
             &mut bins,
             Rgb565::BLACK,
             |sink| {
-                mesh_triangles(
-                    &mesh,
-                    &demo::cube_model(0),
-                    &demo::camera(20),
-                    None,
-                    |t| draw.project(t, &mut |s| sink.push(1, s)),
-                )
+                mesh_triangles(&mesh, &demo::cube_model(0), &demo::camera(20), None, |t| {
+                    draw.project(t, &mut |s| sink.push(1, s))
+                })
             },
             |_| {
                 flushed += 1;
