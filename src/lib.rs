@@ -165,6 +165,11 @@ pub mod texture;
 
 pub use error::Error;
 
+/// Every code block of `README.md` is compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 /// The colour types fixel draws in (from `embedded-graphics-core`, re-exported so that a
 /// program needs no extra dependency to name them), and the trait that gives `Rgb565` its
 /// named colours (`Rgb565::BLACK`) and channels.
