@@ -1,4 +1,4 @@
-//! Time per frame and per drawn pixel of the `SCENES.md` benchmark scenes, and of cheaper
+//! Time per frame and per drawn pixel of the `docs/scenes.md` benchmark scenes, and of cheaper
 //! and dearer modes on the cube and the floor.
 //!
 //! `cargo bench --bench scenes` (filters work as usual: `cargo bench --bench scenes -- floor`).

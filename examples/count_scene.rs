@@ -2,7 +2,7 @@
 //! (`cargo xtask count` drives it; no timing, no output files).
 //!
 //! ```text
-//! count_scene --list                 # every case id: scene/mode, SCENES.md cases first
+//! count_scene --list                 # every case id: scene/mode, docs/scenes.md cases first
 //! count_scene <scene>/<mode> [N]     # N frames (default: the scene's N); N = 0 is the
 //!                                    # baseline (texture, mesh and draw set-up only)
 //! ```

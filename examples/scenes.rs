@@ -1,4 +1,4 @@
-//! Renders the three benchmark scenes of `SCENES.md` (cube, sphere, floor with nearest and
+//! Renders the three benchmark scenes of `docs/scenes.md` (cube, sphere, floor with nearest and
 //! bilinear filtering) to PNG files with fixel's fixed-point pipeline, printing where they
 //! went and how many pixels each drew.
 //!

@@ -1,4 +1,4 @@
-//! The benchmark scenes of `SCENES.md` (cube, sphere, floor) and their procedural texture,
+//! The benchmark scenes of `docs/scenes.md` (cube, sphere, floor) and their procedural texture,
 //! built in fixed point, for examples, benchmarks, tests and firmware.
 //!
 //! The numbers are fixed so that results compare with other renderers: a 320 x 240 frame,

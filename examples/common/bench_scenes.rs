@@ -1,4 +1,4 @@
-//! The benchmark scenes of `SCENES.md` as runnable cases, shared by `benches/scenes.rs`
+//! The benchmark scenes of `docs/scenes.md` as runnable cases, shared by `benches/scenes.rs`
 //! (criterion timing) and `examples/count_scene.rs` (instruction counts under callgrind).
 //!
 //! A case is a scene (cube, sphere, floor) plus a [`Mode`] (lit or not, filter, projection).
@@ -48,7 +48,7 @@ impl Scene {
         }
     }
 
-    /// Frames per run (`N` of `SCENES.md`).
+    /// Frames per run (`N` of `docs/scenes.md`).
     pub fn frames(self) -> u32 {
         match self {
             Scene::Cube | Scene::Sphere => 100,
@@ -158,7 +158,7 @@ const fn case(scene: Scene, lit: bool, filter: Filt, proj: Proj) -> Case {
     }
 }
 
-/// The cases of `SCENES.md` (the floor in its two unmipmapped filters).
+/// The cases of `docs/scenes.md` (the floor in its two unmipmapped filters).
 pub const SCENES: [Case; 4] = [
     case(Scene::Cube, true, Filt::Bilinear, Proj::Exact),
     case(Scene::Sphere, true, Filt::Bilinear, Proj::Exact),

@@ -70,7 +70,7 @@ COMMANDS:
     size [--opt-s] [--no-install]
                 Flash and RAM of a minimal firmware per feature set
     report [--runs N] [--no-mcu] [--no-install] [--docs]
-                Speed against error for every benchmark scene and mode (issue 6):
+                Speed against error for every benchmark scene and mode:
                 builds and runs the report firmwares under QEMU (exact instructions
                 per pixel on Cortex-M0+ and Cortex-M4F, target/report/mcu.tsv), then
                 the host report (`host-tests` binary `report`, release): host ns per
@@ -122,7 +122,8 @@ fn main() -> ExitCode {
         "report" => report(rest),
         "bake" => match bake::run(rest) {
             Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
                 eprintln!("cargo xtask bake: {e}");
                 ExitCode::from(1)
             }

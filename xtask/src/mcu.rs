@@ -986,7 +986,7 @@ pub fn size(rest: &[String]) -> ExitCode {
 }
 
 // ---------------------------------------------------------------------------
-// report (issue 6): per-mode instruction counts of the report firmwares
+// report: per-mode instruction counts of the report firmwares
 // ---------------------------------------------------------------------------
 
 /// The report's microcontrollers. Both builds run on `mps2-an386` (4 MB of RAM: the

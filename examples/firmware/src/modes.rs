@@ -1,4 +1,4 @@
-//! The mode matrix of `cargo xtask report` (issue 6): every projection x filter x lighting
+//! The mode matrix of `cargo xtask report`: every projection x filter x lighting
 //! combination measured on each benchmark scene, as typed pipelines (the way a firmware
 //! builds them: one monomorphised span loop per mode).
 //!

@@ -1,4 +1,4 @@
-//! Speed against error for every benchmark scene and mode (issue 6). Run by
+//! Speed against error for every benchmark scene and mode. Run by
 //! `cargo xtask report` (which first counts instructions on microcontrollers under QEMU and
 //! hands them over with `--mcu`):
 //!
@@ -10,7 +10,7 @@
 //!   Affine / Subdivided N=8, 16 / Exact / Adaptive (1/4 texel), filter Nearest / Bilinear
 //!   (floor also nearest-mipmap-nearest and trilinear with LOD per pixel and per span), lit
 //!   and unlit on the lit scenes; typed pipelines, repeat wrap, 16-bit depth, back-face cull.
-//! * Host speed: all N frames of the scene (`SCENES.md`: clear + transform + draw,
+//! * Host speed: all N frames of the scene (`docs/scenes.md`: clear + transform + draw,
 //!   320 x 240, fixel's own fixed-point scene path, as `benches/scenes.rs` does), `N` runs
 //!   after a warm-up; ns per pixel that passed the depth test: median, min, max.
 //! * Microcontrollers: exact instructions per pixel of frame 0 (from `mcu.tsv`), checked
@@ -933,7 +933,7 @@ fn markdown(
     let _ = writeln!(
         md,
         "**Speed.** *host*: x86-64 ns per pixel that passed the depth test, all N frames of \
-         the scene (`SCENES.md`; clear + transform + draw, 320 x 240 RGB565, 16-bit depth, \
+         the scene (`docs/scenes.md`; clear + transform + draw, 320 x 240 RGB565, 16-bit depth, \
          fixel's fixed-point scene path), median of {runs} runs after a warm-up, (min-max). \
          *M0+ / M4F*: exact instructions per pixel of frame 0 under QEMU (the report \
          firmwares, 8-row bands, as `cargo xtask mcu`), checked against the host's frame \

@@ -1,4 +1,4 @@
-//! The benchmark meshes (SCENES.md) in f64, in object space, and the shared
+//! The benchmark meshes (docs/scenes.md) in f64, in object space, and the shared
 //! procedural texture `T(w, h)`. Every triangle is counter-clockwise seen
 //! from outside (its geometric normal points outwards): front faces in GL.
 

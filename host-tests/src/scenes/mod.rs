@@ -1,4 +1,4 @@
-//! The three benchmark scenes of SCENES.md (`cube`, `sphere`, `floor`) built
+//! The three benchmark scenes of docs/scenes.md (`cube`, `sphere`, `floor`) built
 //! in f64 as neutral descriptions ([`SceneDesc`]), and their conversion to
 //! reference triangles ([`to_ref_triangles`]): model, view (identity) and GL
 //! perspective projection, plus per-vertex lighting in view space
@@ -29,7 +29,7 @@ pub const LIGHT_DIR: [f64; 3] = [-0.4, 0.6, 1.0];
 /// A benchmark scene, independent of any renderer's types.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneDesc {
-    /// Scene name as in SCENES.md.
+    /// Scene name as in docs/scenes.md.
     pub name: &'static str,
     /// Object-space mesh.
     pub mesh: MeshDesc,
