@@ -1,7 +1,7 @@
 //! Time per frame and per drawn pixel of the `docs/scenes.md` benchmark scenes, and of cheaper
 //! and dearer modes on the cube and the floor.
 //!
-//! `cargo bench --bench scenes` (filters work as usual: `cargo bench --bench scenes -- floor`).
+//! `cargo bench -p host-tests --bench scenes` (filters work as usual: `... --bench scenes -- floor`).
 //!
 //! One iteration renders all N frames of a case (clear + transform + draw, 320 x 240 RGB565
 //! with a 16-bit depth buffer). Criterion's throughput is in drawn pixels (pixels that passed
@@ -10,7 +10,7 @@
 //! and written to `target/bench-summary.md`. Kept short (10 samples, flat sampling) for a
 //! small machine; the numbers are for comparison between modes, not a performance test.
 
-#[path = "../examples/common/bench_scenes.rs"]
+#[path = "../../examples/common/bench_scenes.rs"]
 mod bench_scenes;
 
 use bench_scenes::{Bench, Case, MODES, SCENES};
@@ -94,7 +94,7 @@ fn summary(rows: &mut [Row]) -> String {
 fn target_dir() -> PathBuf {
     std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"))
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target"))
 }
 
 fn main() {
