@@ -155,6 +155,7 @@ pub mod color;
 pub mod demo;
 pub mod error;
 pub mod geometry;
+pub mod guide;
 pub mod math;
 pub mod pipeline;
 pub mod raster;

@@ -201,12 +201,9 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
                 let v = val("--levels")?;
                 levels = match v.as_str() {
                     "full" => None,
-                    n => Some(
-                        n.parse::<u32>()
-                            .map_err(|_| {
-                                Usage(format!("--levels: `{n}` is not a number or `full`"))
-                            })?,
-                    ),
+                    n => Some(n.parse::<u32>().map_err(|_| {
+                        Usage(format!("--levels: `{n}` is not a number or `full`"))
+                    })?),
                 };
             }
             "--rgb565" => rgb565 = val("--rgb565")?,
@@ -230,12 +227,16 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
     let full = full_levels(w, h);
     if let Some(l) = levels {
         if l == 0 || l > full {
-            return Err(Usage(format!("--levels {l}: a {w} x {h} chain has 1..={full}")));
+            return Err(Usage(format!(
+                "--levels {l}: a {w} x {h} chain has 1..={full}"
+            )));
         }
     }
     let name = name.unwrap_or_else(|| default_name(inp));
     if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(Usage(format!("--name `{name}`: use letters, digits and `_`")));
+        return Err(Usage(format!(
+            "--name `{name}`: use letters, digits and `_`"
+        )));
     }
     let o = BakeOpts {
         name,
@@ -319,8 +320,16 @@ mod tests {
 
     #[test]
     fn usage_errors_are_usage_errors() {
-        for bad in [&[][..], &["in.png"], &["a.png", "b.rs", "--bogus"], &["a.png", "b.rs", "--levels", "x"]] {
-            assert!(matches!(run(&args(bad)), Err(BakeError::Usage(_))), "{bad:?}");
+        for bad in [
+            &[][..],
+            &["in.png"],
+            &["a.png", "b.rs", "--bogus"],
+            &["a.png", "b.rs", "--levels", "x"],
+        ] {
+            assert!(
+                matches!(run(&args(bad)), Err(BakeError::Usage(_))),
+                "{bad:?}"
+            );
         }
         let missing = run(&args(&["/nonexistent/in.png", "/tmp/out.rs"]));
         assert!(matches!(missing, Err(BakeError::Failed(_))));

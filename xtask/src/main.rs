@@ -26,7 +26,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 2] = ["showcase", "scenes"];
+const RENDER_EXAMPLES: [&str; 3] = ["showcase", "scenes", "preview"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -46,7 +46,8 @@ COMMANDS:
                   --no-cross  skip the cross-target builds and `mcu`
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
-    render      Render the demo scenes (examples `showcase` and `scenes`, release)
+    render      Render the demo scenes (examples `showcase`, `scenes` and `preview`,
+                release) to target/pictures/*.png
     count [--frames N] [FILTER...]
                 Exact x86_64 instructions per drawn pixel of the benchmark
                 scenes and modes: builds the `count_scene` example (release),
