@@ -6,28 +6,37 @@
 //!
 //! ```
 //! use fixel::prelude::*;
-//! use fixel::demo;
+//! use fixel::math::fx;
 //! use fixel::pipeline::{DepthLess, Exact, ModulateIntensity};
-//! use fixel::scene::{draw_mesh, DirectionalLight};
+//! use fixel::scene::{draw_mesh, Camera, DirectionalLight, Mesh};
 //! use fixel::texture::{Bilinear, Repeat};
-//! use fixel::Rgb565;
 //!
 //! // Stages chosen as types: only this span loop is compiled into the firmware.
 //! type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 //!
-//! let mut texels = [Rgb565::default(); 64 * 64];
-//! demo::checker_texture(64, 64, &mut texels)?;
+//! // A 64 x 64 texture and a lit, bilinear, perspective-correct draw into an 80 x 60 frame.
+//! let mut texels = [Rgb565::BLACK; 64 * 64];
+//! fixel::demo::checker_texture(64, 64, &mut texels)?;
 //! let draw = Draw::new::<Lit>(Some(Texture::new(&texels, 64, 64)?), Viewport::new(0, 0, 80, 60)?, Cull::Back)?;
 //!
-//! let (mut color, mut depth) = ([Rgb565::default(); 80 * 60], [0u16; 80 * 60]);
+//! // A square of side 2 with normals and uv, turned 30 degrees and 3 units away.
+//! let positions = [Vec3::from_num(-1, -1, 0), Vec3::from_num(1, -1, 0), Vec3::from_num(1, 1, 0), Vec3::from_num(-1, 1, 0)];
+//! let normals = [Vec3::from_num(0, 0, 1); 4];
+//! let uvs = [[fx(0), fx(1)], [fx(1), fx(1)], [fx(1), fx(0)], [fx(0), fx(0)]];
+//! let square = Mesh::new(&positions, Some(&normals), &uvs, &[[0, 1, 2], [0, 2, 3]])?;
+//! let model = Mat4::translation(Vec3::from_num(0, 0, -3)).mul(&Mat4::rotation_y(Angle::from_degrees(fx(30))));
+//! let camera = Camera::perspective(Angle::from_degrees(fx(45)), fx(4) / 3, fx(0.5), fx(20))?;
+//! let light = DirectionalLight::new(Vec3::from_num(-0.4, 0.6, 1.0), fx(0.3), fx(0.7))?;
+//!
+//! let (mut color, mut depth) = ([Rgb565::BLACK; 80 * 60], [0u16; 80 * 60]);
 //! let mut frame = Frame::new(&mut color, 80, 60)?.with_depth(&mut depth)?;
-//! frame.clear(Rgb565::default());
-//! let cube = demo::cube();
-//! let drawn = draw_mesh(&draw, &cube.mesh()?, &demo::cube_model(0), &demo::camera(20),
-//!                       Some(&DirectionalLight::default()), &mut frame)?;
+//! let drawn = draw_mesh(&draw, &square, &model, &camera, Some(&light), &mut frame)?;
 //! assert!(drawn > 500);
 //! # Ok::<(), fixel::Error>(())
 //! ```
+//!
+//! The [`guide`] walks from `Cargo.toml` to a PNG on the desktop and to an SPI display in
+//! bands; [`demo`] has the benchmark meshes (cube, sphere, floor) ready-made.
 //!
 //! ## The pipeline, stage by stage
 //!

@@ -75,6 +75,30 @@ pub enum DepthTest {
 }
 
 /// Every run-time choice of one draw.
+///
+/// `DrawMode::default()` is GL's defaults where GL has one, and the benchmark's lit textured
+/// mode otherwise:
+///
+/// | field | default | meaning |
+/// |---|---|---|
+/// | `projection` | [`Projection::Exact`] | perspective-correct at every pixel |
+/// | `filter` | [`Filter::Nearest`] | `GL_NEAREST` |
+/// | `mag_filter` | `None` | the same as `filter` |
+/// | `mip` | [`MipFilter::None`] | no mipmapping: level 0 only |
+/// | `lod` | [`Lod::default()`] | bias 0, no clamps, computed per pixel |
+/// | `wrap` | `[Wrap::Repeat; 2]` | `GL_REPEAT` on s and t |
+/// | `shading` | [`Shading::ModulateIntensity`] | texel times the lit intensity (needs a texture) |
+/// | `depth` | [`DepthTest::Off`] | no depth test, no depth buffer needed |
+/// | `cull` | [`Cull::Back`] | back faces (clockwise in NDC) skipped |
+///
+/// ```
+/// use fixel::pipeline::{DepthTest, DrawMode, Projection, Shading};
+/// use fixel::texture::{Filter, Wrap};
+/// use fixel::geometry::Cull;
+/// let m = DrawMode::default();
+/// assert_eq!((m.projection, m.filter, m.wrap), (Projection::Exact, Filter::Nearest, [Wrap::Repeat; 2]));
+/// assert_eq!((m.shading, m.depth, m.cull), (Shading::ModulateIntensity, DepthTest::Off, Cull::Back));
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawMode {
     /// Interpolation of texture coordinates and colours.

@@ -221,6 +221,8 @@ pub struct Lod {
     pub granularity: LodGranularity,
 }
 
+/// Bias 0, no clamps (`min`/`max` at ±1000 levels, beyond any chain) and LOD computed at
+/// every pixel ([`LodGranularity::Pixel`]), as GL's defaults.
 impl Default for Lod {
     fn default() -> Self {
         Lod {
