@@ -482,7 +482,7 @@ fn cost_unit(t: &str) -> &'static str {
     if t == "host" {
         "ns/px"
     } else {
-        "insns/px"
+        "instructions/px"
     }
 }
 
@@ -590,9 +590,12 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                     .map_err(|e| e.to_string())?;
             }
         }
+        // Points first, then labels placed where they overlap no other label and no point
+        // (in pixels): beside the point, above, below or to its left; a label equal to one
+        // already drawn within a few pixels is left out (the report's table has every mode).
+        let mut boxes: Vec<(i32, i32, i32, i32)> = vec![];
         for (r, x, y) in &pts {
             let c = proj_colour(r.mode.proj);
-            let dominated = r.dominated.contains(&t);
             let style = if r.mode.lit || !scene.lit() {
                 c.filled()
             } else {
@@ -601,33 +604,54 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
             chart
                 .draw_series(std::iter::once(Circle::new((*x, *y), 6, style)))
                 .map_err(|e| e.to_string())?;
-            // Labels of modes a few pixels apart would overlap: alternate their side.
-            let above = pts
-                .iter()
-                .filter(|p| p.1 < *x || (p.1 == *x && p.2 < *y))
-                .count()
-                % 2
-                == 0;
+            let (px, py) = chart.backend_coord(&(*x, *y));
+            boxes.push((px - 7, py - 7, px + 7, py + 7));
+        }
+        let overlaps = |a: &(i32, i32, i32, i32), b: &(i32, i32, i32, i32)| {
+            a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
+        };
+        let mut placed: Vec<(String, i32, i32)> = vec![];
+        for (r, x, y) in &pts {
             let label = format!(
                 "{}{}",
                 filt_short(r.mode.filter),
-                if scene.lit() && !r.mode.lit { " u" } else { "" }
+                if scene.lit() && !r.mode.lit {
+                    " unlit"
+                } else {
+                    ""
+                }
             );
-            let colour = if dominated {
+            let (px, py) = chart.backend_coord(&(*x, *y));
+            let near_same = placed
+                .iter()
+                .any(|(l, qx, qy)| *l == label && (qx - px).abs() < 16 && (qy - py).abs() < 10);
+            if near_same {
+                continue;
+            }
+            let lw = 7 * label.len() as i32 + 2;
+            let spot = [(9, -7), (9, -20), (9, 6), (-lw - 9, -7), (-lw / 2, -24), (-lw / 2, 10)]
+                .into_iter()
+                .map(|(dx, dy)| (px + dx, py + dy, px + dx + lw, py + dy + 14))
+                .find(|b| !boxes.iter().any(|o| overlaps(b, o)));
+            let Some(b) = spot else {
+                continue;
+            };
+            boxes.push(b);
+            placed.push((label.clone(), px, py));
+            let colour = if r.dominated.contains(&t) {
                 RGBColor(150, 150, 150)
             } else {
                 RGBColor(0, 0, 0)
             };
             let font = ("sans-serif", 13).into_font().color(&colour);
-            let off = if above { (7, -18) } else { (7, 4) };
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at((*x, *y)) + Text::new(label, off, font),
-                ))
+            area.draw(&Text::new(label, (b.0, b.1), font))
                 .map_err(|e| e.to_string())?;
         }
-        // Legend: projection colours.
-        for (k, p) in modes::PROJS.into_iter().enumerate() {
+        // Legend: the colours of the projections that have a point here.
+        let shown = modes::PROJS
+            .into_iter()
+            .filter(|p| pts.iter().any(|(r, _, _)| r.mode.proj == *p));
+        for (k, p) in shown.enumerate() {
             let m = Mode {
                 lit: false,
                 filter: Filt::Nearest,
@@ -642,7 +666,7 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 .map_err(|e| e.to_string())?;
         }
         let notes = if scene.lit() {
-            "N nearest, B bilinear; filled = lit, ring = unlit (u); grey label = dominated; lines = Pareto fronts"
+            "N nearest, B bilinear; filled = lit, ring = unlit; grey label = dominated; lines = Pareto fronts"
         } else {
             "N nearest, B bilinear, NMN nearest-mipmap-nearest, T trilinear (LOD per pixel), Ts (per span); grey label = dominated"
         };
