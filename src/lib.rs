@@ -118,7 +118,7 @@
 //!
 //! // A wall receding to the right (w from 1 to 3), base repeated 4 times, light map once.
 //! let (one, k) = (1 << 16, 200 << 16);
-//! let p = |x: f32, y: f32, w: f32| [Fx::from_num(x * w), Fx::from_num(y * w), Fx::ZERO, Fx::from_num(w)];
+//! let p = |x: f32, y: f32, w: f32| [fixel::math::fx(x * w), fixel::math::fx(y * w), Fx::ZERO, fixel::math::fx(w)];
 //! let v = |x: f32, y: f32, w: f32, s: i32, t: i32| Vertex::new(p(x, y, w), [4 * s, 4 * t, s, t, k]);
 //! let wall = [v(-0.9, 0.9, 1.0, 0, 0), v(-0.9, -0.9, 1.0, 0, one), v(0.9, -0.9, 3.0, one, one), v(0.9, 0.9, 3.0, one, 0)];
 //! let (mut color, mut depth) = ([Rgb565::default(); 64 * 48], [0u16; 64 * 48]);

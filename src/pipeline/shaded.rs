@@ -10,7 +10,7 @@
 //!
 //! // A Gouraud triangle: varyings r, g, b in Q8.16 (256 << 16 = 1.0).
 //! let one = 256 << 16;
-//! let p = |x: f32, y: f32| [Fx::from_num(x), Fx::from_num(y), Fx::ZERO, Fx::ONE];
+//! let p = |x: f32, y: f32| [fixel::math::fx(x), fixel::math::fx(y), Fx::ZERO, Fx::ONE];
 //! let tri = [
 //!     Vertex::new(p(-0.8, -0.8), [one, 0, 0]),
 //!     Vertex::new(p(0.8, -0.8), [0, one, 0]),
