@@ -311,7 +311,7 @@ mod tests {
 }
 
 #[cfg(test)]
-mod tests {
+mod usage_tests {
     use super::*;
 
     fn args(a: &[&str]) -> Vec<String> {
