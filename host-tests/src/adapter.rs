@@ -189,8 +189,39 @@ pub fn render_tex(
     width: u32,
     height: u32,
 ) -> FixelImage {
+    render_tex_viewport(tris, tex, mode, (width, height), width, height)
+}
+
+/// Like [`render`], through a viewport of `viewport` pixels at the origin, which may be
+/// larger than the `width` x `height` frame (cropped).
+pub fn render_viewport(
+    tris: &[[ClipVertex; 3]],
+    texture: Option<&RefTexture>,
+    mode: DrawMode,
+    viewport: (u32, u32),
+    width: u32,
+    height: u32,
+) -> FixelImage {
+    let texels_vec = texture.map(texels);
+    let tex = match (&texels_vec, texture) {
+        (Some(t), Some(rt)) => Some(MipTexture::single(
+            Texture::new(t, rt.width, rt.height).expect("valid texture"),
+        )),
+        _ => None,
+    };
+    render_tex_viewport(tris, tex, mode, viewport, width, height)
+}
+
+fn render_tex_viewport(
+    tris: &[[ClipVertex; 3]],
+    tex: Option<MipTexture<'_>>,
+    mode: DrawMode,
+    viewport: (u32, u32),
+    width: u32,
+    height: u32,
+) -> FixelImage {
     let n = (width * height) as usize;
-    let vp = Viewport::new(0, 0, width, height).expect("viewport");
+    let vp = Viewport::new(0, 0, viewport.0, viewport.1).expect("viewport");
     let mut color = vec![Rgb565::new(0, 0, 0); n];
     let mut depth = vec![0u16; n];
     let mut frame = Frame::new(&mut color, width, height)

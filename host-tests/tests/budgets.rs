@@ -9,17 +9,21 @@
 //! Affine is also measured against perspective: the cost of choosing it,
 //! reported, bounded only for sanity. Coverage must agree exactly
 //! everywhere (both snap vertices to 1/16 pixel and use the top-left rule).
+//! The reference interpolates attributes from the EXACT (unsnapped) window
+//! positions, as GL specifies; fixel from positions rounded to 1/4096 pixel
+//! (`ATTR_SUBPIXEL_BITS`). Affine is GL's `noperspective` in both: linear in
+//! screen space over the whole original triangle, clipping included.
 //!
 //! | case | budget | why it holds |
 //! |---|---|---|
 //! | Flat | exact (0 LSB) | a constant colour, no arithmetic |
 //! | Exact / Affine, Bilinear, Gouraud, Modulate(Intensity), Replace | max 1 LSB | fixel's uv/colour are exact to ~1e-3 texel / 1/256, the 4x8-bit bilinear weights and Q8 modulation round once: the result rounds to the reference's RGB565 value or its neighbour |
 //! | Exact + Bilinear (the target) | ≥ 99.5% within 1 LSB, > 2 LSB only where minified | as above; where one pixel spans many texels (the floor, no mipmaps) a sample-point difference of < 0.01 px moves the 2x2 footprint across aliased checker edges |
-//! | floor, Exact/Subdivided + Bilinear | max 8, > 1 LSB ≤ 0.2%, > 2 LSB ≤ 0.05% | the floor is minified everywhere (10-70 texels/px) |
-//! | Exact / Affine + Nearest | > 1 LSB ≤ 0.2% of pixels, and only within 1/64 px of a texel edge | a sample point that close to an edge may round to the neighbouring texel (any colour difference); measured: every flip lies within 0.008 px |
-//! | Subdivided N=4/8/16/32 | > 1 LSB ≤ 1.2% / 5% / 9% / 18%, PSNR ≥ 32 / 27 / 22 / 18 dB | approximation between exact samples; LOOSE: includes the span-end bug (see `subdivided_never_worse_than_its_endpoints`) |
+//! | floor, Exact/Subdivided + Bilinear | max 8, > 1 LSB ≤ 0.2%, > 2 LSB ≤ 0.05% | the floor is minified everywhere (10-70 texels/px); measured against the exact reference: max 3, 0.061% / 0.005% |
+//! | floors, Affine (clipped by the guard band or not) | max 2, > 1 LSB ≤ 0.15%, none > 2 | GL's `noperspective` through the clipper; measured max 2 at 0.04% (wide) and 0.09% (narrow) |
+//! | Exact / Affine + Nearest | > 1 LSB ≤ 0.6% of pixels, and only within 1/64 px of a texel edge; PSNR ≥ 27 dB | a sample point that close to an edge may round to the neighbouring texel (any colour difference). Near the floor's horizon a pixel spans ~300 texels, so the 1/4096-pixel positions leave ~1/64 texel of doubt: measured 0.545% flips, every one within 1/64 texel of a texel edge (`subpixel.rs` counts the others: 0) |
+//! | Subdivided N=4/8/16/32 | > 1 LSB ≤ 1.2% / 5% / 9% / 18%, PSNR ≥ 27 / 26 / 22 / 18 dB | approximation between exact samples; LOOSE: includes the span-end bug (see `subdivided_never_worse_than_its_endpoints`) |
 //! | Affine vs perspective reference | sanity: PSNR ≥ 5 dB | the mode's own error (up to 62 LSB on the floor) |
-//! | the wide floor, Affine vs affine reference | sanity | fixel's guard-band clip (\|x\|, \|y\| ≤ 24 w at 320 px) re-triangulates the floor and screen-linear interpolation depends on the triangulation; `floor narrow` (inside the guard band) measures Affine instead: max 1 LSB |
 
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -416,15 +420,28 @@ const FLOOR_BILINEAR: Budget = Budget {
     psnr: 45.0,
 };
 
+/// The floors under Affine (GL's `noperspective`, the wide floor cut by the
+/// guard band): positions to 1/4096 px and Q30 clip parameters leave a
+/// few pixels one LSB further.
+const FLOOR_AFFINE: Budget = Budget {
+    max: 2,
+    over1: 0.0015,
+    over2: 0.0,
+    max_unminified: Some(1),
+    unexplained: Some(0),
+    psnr: 45.0,
+};
+
 /// Exact/Affine + Nearest: off by more than 1 LSB only where the sample
 /// point is within `EPS_PX` of a texel edge (then any texel difference).
+/// Against the exact reference: 0.545% on the floor, all near an edge.
 const NEAREST: Budget = Budget {
     max: 63,
-    over1: 0.002,
-    over2: 0.002,
+    over1: 0.006,
+    over2: 0.006,
     max_unminified: None,
     unexplained: Some(0),
-    psnr: 33.0,
+    psnr: 27.0,
 };
 
 /// Subdivided against the perspective reference, per N (index log2_n - 2):
@@ -438,10 +455,10 @@ const SUBDIVIDED: [Budget; 4] = [
     Budget {
         max: 63,
         over1: 0.012,
-        over2: 0.004,
+        over2: 0.006,
         max_unminified: None,
         unexplained: None,
-        psnr: 32.0,
+        psnr: 27.0,
     },
     Budget {
         max: 63,
@@ -449,7 +466,7 @@ const SUBDIVIDED: [Budget; 4] = [
         over2: 0.032,
         max_unminified: None,
         unexplained: None,
-        psnr: 27.0,
+        psnr: 26.0,
     },
     Budget {
         max: 63,
@@ -478,10 +495,8 @@ fn budget(r: &Row) -> Budget {
             ..ONE_LSB
         };
     }
-    if !r.same || (r.scene == "floor" && r.projection == "Affine") {
-        // Affine against perspective is the cost of the mode; the wide floor
-        // under Affine is re-triangulated by fixel's guard-band clip, which
-        // changes screen-linear interpolation (see the module docs).
+    if !r.same {
+        // Affine against perspective is the cost of the mode.
         return SANITY;
     }
     if let Some(n) = r.projection.strip_prefix("Subdivided N=") {
@@ -492,9 +507,10 @@ fn budget(r: &Row) -> Budget {
         // stay under it).
         return SUBDIVIDED[k];
     }
-    match (r.filter, floor && r.projection != "Affine") {
-        ("Nearest", _) => NEAREST,
-        ("Bilinear", true) => FLOOR_BILINEAR,
+    match (r.filter, floor, r.projection == "Affine") {
+        ("Nearest", _, _) => NEAREST,
+        ("Bilinear", true, false) => FLOOR_BILINEAR,
+        ("Bilinear", true, true) => FLOOR_AFFINE,
         _ => ONE_LSB,
     }
 }

@@ -132,13 +132,8 @@ fn reference_derivatives_match_finite_differences() {
     let v = sub
         .0
         .map(|v| reference::raster::to_window(&v, 320, 240).unwrap());
-    let area = reference::raster::signed_area2(&v);
-    let edges = [(1usize, 2usize), (2, 0), (0, 1)];
-    let bary = |x: f64, y: f64| -> [f64; 3] {
-        edges.map(|(a, b)| {
-            ((v[b].x - v[a].x) * (y - v[a].y) - (v[b].y - v[a].y) * (x - v[a].x)) / area
-        })
-    };
+    // Attributes use the exact (unsnapped) positions.
+    let bary = |x: f64, y: f64| -> [f64; 3] { reference::raster::barycentrics(&v, x, y) };
     let uv = |x: f64, y: f64| -> [f64; 2] {
         let l = bary(x, y);
         let q: f64 = (0..3).map(|i| l[i] * v[i].inv_w).sum();
@@ -229,11 +224,13 @@ fn budget(name: &str) -> Budget {
         psnr,
     };
     match name {
-        "nearest" => b(31, 0.03, 0.0025, 32.0),
+        // Against the exact (unsnapped) reference: texel flips within 1/64 texel of an edge
+        // near the horizon (see subpixel.rs), 0.545% / 0.262% / 0.286% measured.
+        "nearest" => b(31, 0.07, 0.006, 27.0),
         "bilinear" => b(10, 0.03, 0.0025, 44.0),
-        "nearest-mipmap-nearest" => b(31, 0.02, 0.002, 34.0),
+        "nearest-mipmap-nearest" => b(31, 0.035, 0.003, 30.0),
         "linear-mipmap-nearest" => b(12, 0.03, 0.0005, 46.0),
-        "nearest-mipmap-linear" => b(31, 0.025, 0.002, 34.0),
+        "nearest-mipmap-linear" => b(31, 0.035, 0.003, 30.0),
         "trilinear" => b(1, 0.09, 0.0, 41.0),
         _ => unreachable!("{name}"),
     }

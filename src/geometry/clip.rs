@@ -72,7 +72,20 @@ fn lerp_q30(a: i32, b: i32, t: i64) -> i32 {
 }
 
 /// Point on the edge from `inside` (distance `di >= 0`) to `outside` (`do_ < 0`).
-fn intersect<const N: usize>(inside: &Attr<N>, outside: &Attr<N>, di: i64, do_: i64) -> Attr<N> {
+///
+/// The position is interpolated in clip space at the parameter `t` where the edge meets the
+/// plane. The varyings too (`noperspective == false`: perspective-correct), or, for affine
+/// draws, at the parameter `t' = t w_out / w(t)` of the new vertex's *screen* position
+/// along the edge, so that they stay linear in screen space over the whole original
+/// triangle as GL's `noperspective` is: affine output then does not depend on where the
+/// guard band cuts. (Where an end has `w <= 0` it has no screen position, and `t` is kept.)
+fn intersect<const N: usize>(
+    inside: &Attr<N>,
+    outside: &Attr<N>,
+    di: i64,
+    do_: i64,
+    noperspective: bool,
+) -> Attr<N> {
     let mut num = di;
     let mut den = di - do_;
     while den >= 1 << 32 {
@@ -84,6 +97,13 @@ fn intersect<const N: usize>(inside: &Attr<N>, outside: &Attr<N>, di: i64, do_: 
     for k in 0..4 {
         out.p[k] = lerp_q30(inside.p[k], outside.p[k], t);
     }
+    let (w_in, w_out, w_t) = (inside.p[3], outside.p[3], out.p[3]);
+    let t = if noperspective && w_in > 0 && w_out > 0 && w_t > 0 {
+        // t w_out < 2^61; the quotient is in [0, 2^30] up to rounding.
+        ((t * i64::from(w_out)) / i64::from(w_t)).clamp(0, 1 << 30)
+    } else {
+        t
+    };
     for k in 0..N {
         out.v[k] = lerp_q30(inside.v[k], outside.v[k], t);
     }
@@ -91,28 +111,35 @@ fn intersect<const N: usize>(inside: &Attr<N>, outside: &Attr<N>, di: i64, do_: 
 }
 
 /// Clips a classic [`ClipVertex`] triangle (see [`clip_and_project_varyings`]); its
-/// screen triangles carry the varyings of [`ClipVertex::to_vertex`].
+/// screen triangles carry the varyings of [`ClipVertex::to_vertex`]. `noperspective`: the
+/// varyings of new vertices are those of GL's `noperspective` (for affine draws).
 pub fn clip_and_project(
     tri: &[ClipVertex; 3],
     vp: &Viewport,
     cull: Cull,
+    noperspective: bool,
     emit: &mut impl FnMut(&ScreenTriangle<CLASSIC_VARYINGS>),
 ) {
     clip_and_project_varyings(
         &[tri[0].to_vertex(), tri[1].to_vertex(), tri[2].to_vertex()],
         vp,
         cull,
+        noperspective,
         emit,
     );
 }
 
 /// Clips `tri` to the view volume and guard band, projects it with `vp`, culls per `cull`,
-/// and calls `emit` with each resulting screen triangle (0 to 8 of them). Varyings are
-/// interpolated linearly in clip space at the new vertices, which is perspective-correct.
+/// and calls `emit` with each resulting screen triangle (0 to 8 of them).
+///
+/// Varyings at the new vertices: with `noperspective == false`, interpolated linearly in
+/// clip space, which is perspective-correct; with `true` (affine draws), linearly in screen
+/// space along the cut edge, as GL's `noperspective` (see `intersect`).
 pub fn clip_and_project_varyings<const N: usize>(
     tri: &[Vertex<N>; 3],
     vp: &Viewport,
     cull: Cull,
+    noperspective: bool,
     emit: &mut impl FnMut(&ScreenTriangle<N>),
 ) {
     let guard = vp.guard;
@@ -149,9 +176,9 @@ pub fn clip_and_project_varyings<const N: usize>(
                 }
                 if (dc >= 0) != (dn >= 0) && m < MAX_POLY {
                     next[m] = if dc >= 0 {
-                        intersect(cur, nxt, dc, dn)
+                        intersect(cur, nxt, dc, dn, noperspective)
                     } else {
-                        intersect(nxt, cur, dn, dc)
+                        intersect(nxt, cur, dn, dc, noperspective)
                     };
                     m += 1;
                 }
@@ -179,10 +206,11 @@ pub fn clip_and_project_varyings<const N: usize>(
 /// [`W_MIN_BITS`]).
 fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
     let w = a.p[3].max(W_MIN_BITS);
-    let (x, y, z) = vp.project(a.p[0], a.p[1], a.p[2], w);
+    let (x, y, sub, z) = vp.project(a.p[0], a.p[1], a.p[2], w);
     ScreenVertex {
         x,
         y,
+        sub,
         z,
         w,
         varyings: a.v,
@@ -220,10 +248,11 @@ pub fn prepare(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
 pub fn prepare_without_depth(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
     let a = attr(&v.to_vertex());
     let w = a.p[3].max(W_MIN_BITS);
-    let (x, y) = vp.project_xy(a.p[0], a.p[1], w);
+    let (x, y, sub) = vp.project_xy(a.p[0], a.p[1], w);
     let s = ScreenVertex {
         x,
         y,
+        sub,
         z: a.p[2],
         w,
         varyings: a.v,
@@ -258,7 +287,7 @@ mod tests {
     fn run(tri: [ClipVertex; 3], cull: Cull) -> Vec<ScreenTriangle> {
         let vp = Viewport::new(0, 0, 320, 240).unwrap();
         let mut out = Vec::new();
-        clip_and_project(&tri, &vp, cull, &mut |t| out.push(*t));
+        clip_and_project(&tri, &vp, cull, false, &mut |t| out.push(*t));
         out
     }
 

@@ -93,6 +93,12 @@ pub struct ScreenVertex<const N: usize = CLASSIC_VARYINGS> {
     pub x: i32,
     /// Screen y (down), sub-pixel units (4 fractional bits), inside the guard band.
     pub y: i32,
+    /// Where the vertex projects within its sub-pixel: the offset of its position rounded to
+    /// `2^-ATTR_SUBPIXEL_BITS` pixel from `(x, y)`, in that unit (at most half a sub-pixel
+    /// either way). Coverage uses `(x, y)`; attribute planes use
+    /// `(x, y) 2^(ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS) + sub`, so snapping moves edges, not
+    /// textures (see [`crate::raster::ATTR_SUBPIXEL_BITS`]).
+    pub sub: [i16; 2],
     /// Window depth in `[0, 65535]` with 14 fractional bits (`0..=65535 << 14`).
     pub z: i32,
     /// Clip-space `w`, I16F16 bits, positive (at least the clipper's minimum `w`).
@@ -107,6 +113,7 @@ impl<const N: usize> Default for ScreenVertex<N> {
         ScreenVertex {
             x: 0,
             y: 0,
+            sub: [0; 2],
             z: 0,
             w: 0,
             varyings: [0; N],

@@ -9,7 +9,7 @@
 //! its per-row stepping in `i32`.
 
 use crate::math::{div_floor_i64, div_round_i64};
-use crate::raster::{Rect, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_ONE};
+use crate::raster::{Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS};
 use crate::Error;
 
 /// Which faces to skip. Front faces are counter-clockwise in NDC (OpenGL's default).
@@ -92,28 +92,53 @@ impl Viewport {
         (self.rect.y1 - self.rect.y0) as u32
     }
 
-    /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)` and a
-    /// depth in `0..=65535 << 14`.
-    pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, i32) {
-        let (sx, sy) = self.project_xy(x, y, w);
-        (sx, sy, depth(z, i64::from(w.max(1))))
+    /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)`, their
+    /// attribute offsets (see [`project_xy`](Self::project_xy)) and a depth in
+    /// `0..=65535 << 14`.
+    pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
+        let (sx, sy, sub) = self.project_xy(x, y, w);
+        (sx, sy, sub, depth(z, i64::from(w.max(1))))
     }
 
-    /// The screen `(x, y)` part of [`project`](Self::project).
-    pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32) {
+    /// The screen `(x, y)` part of [`project`](Self::project): the window position rounded
+    /// to the nearest 1/16 pixel (ties towards +x and +y), and the offset of the position
+    /// rounded to 1/256 pixel from it, in 1/256 pixel (`-8..=8`).
+    ///
+    /// One division per axis gives the 1/256-pixel position `f = floor(F + 1/2)` of the exact
+    /// `F` (in 1/256 pixel); the 1/16-pixel position is `floor((F + 8) / 16)`, which is
+    /// `(f + 8) >> 4` except when `f + 8` is a multiple of 16 and `F < f`, told apart by one
+    /// multiplication. The snapped position is therefore exactly the rounding of the exact
+    /// one, as if computed alone.
+    pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));
-        let one = i64::from(SUBPIXEL_ONE);
-        let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
-        let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
-        let cx = i64::from(self.rect.x0) * one + hw;
-        let cy = i64::from(self.rect.y0) * one + hh;
-        let lim = i64::from(GUARD_BAND_PX) * one;
+        let fine = 1i64 << ATTR_SUBPIXEL_BITS;
+        let hw = i64::from(self.rect.x1 - self.rect.x0) * fine / 2;
+        let hh = i64::from(self.rect.y1 - self.rect.y0) * fine / 2;
+        let cx = i64::from(self.rect.x0) * fine + hw;
+        let cy = i64::from(self.rect.y0) * fine + hh;
+        let lim = i64::from(GUARD_BAND_PX) * fine;
         // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
         // of the window coordinate: rounding them away from the viewport centre instead
         // would snap a mesh moved by whole pixels to a different shape.
-        let sx = (cx + round_half_up(i64::from(x) * hw, w)).clamp(-lim, lim);
-        let sy = (cy + round_half_up(-(i64::from(y) * hh), w)).clamp(-lim, lim);
-        (sx as i32, sy as i32)
+        let axis = |n: i64, c: i64| -> (i32, i16) {
+            let f = round_half_up(n, w);
+            let shift = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
+            let half = 1i64 << (shift - 1);
+            let mut s = (f + half) >> shift;
+            // f + half on the grid: the exact value decides (n / w < f means round down).
+            if (f + half) & ((1 << shift) - 1) == 0 && n < f * w {
+                s -= 1;
+            }
+            let s = (c >> shift) + s;
+            let f = c + f;
+            let slim = lim >> shift;
+            let s = s.clamp(-slim, slim);
+            let off = (f - (s << shift)).clamp(-half, half);
+            (s as i32, off as i16)
+        };
+        let (sx, ox) = axis(i64::from(x) * hw, cx);
+        let (sy, oy) = axis(-(i64::from(y) * hh), cy);
+        (sx, sy, [ox, oy])
     }
 
     /// The depth part of [`project`](Self::project) alone (the walker's binning pass
@@ -153,14 +178,14 @@ mod tests {
     fn maps_ndc_corners_to_pixel_edges() {
         let vp = Viewport::new(0, 0, 320, 240).unwrap();
         let one = 1 << 16;
-        assert_eq!(vp.project(-one, one, -one, one), (0, 0, 0));
+        assert_eq!(vp.project(-one, one, -one, one), (0, 0, [0, 0], 0));
         assert_eq!(
             vp.project(one, -one, one, one),
-            (320 * 16, 240 * 16, 65535 << 14)
+            (320 * 16, 240 * 16, [0, 0], 65535 << 14)
         );
         assert_eq!(
             vp.project(0, 0, 0, 2 * one),
-            (160 * 16, 120 * 16, 65535 << 13)
+            (160 * 16, 120 * 16, [0, 0], 65535 << 13)
         );
     }
 
@@ -176,6 +201,47 @@ mod tests {
         assert_eq!(vp.project(t, t, 0, one).1, 512 - 324);
         assert_eq!(vp.project(-t, -t, 0, one).0, 512 - 324);
         assert_eq!(vp.project(-t, -t, 0, one).1, 512 + 325);
+    }
+
+    #[test]
+    fn snapped_position_is_the_rounding_of_the_exact_one_and_sub_the_finer_one() {
+        // Against exact rational rounding, over many random points and w.
+        let vp = Viewport::new(0, 0, 320, 240).unwrap();
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let floor_div = |n: i128, d: i128| n.div_euclid(d);
+        for _ in 0..200_000 {
+            let w = (next() % (1 << 20)) as i32 + 256;
+            let x = ((next() % (1 << 22)) as i32 - (1 << 21)) * (w >> 16).max(1);
+            let y = ((next() % (1 << 22)) as i32 - (1 << 21)) * (w >> 16).max(1);
+            let (sx, sy, sub) = vp.project_xy(x, y, w);
+            // Window x in 1/16 px: 160*16 + x * 160*16 / w; exactly rounded, ties up.
+            let n16 = i128::from(x) * 160 * 16;
+            let want_x = 160 * 16 + floor_div(2 * n16 + i128::from(w), 2 * i128::from(w));
+            let k = 1i128 << (ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS);
+            let nf = n16 * k;
+            let fine_x = 160 * 16 * k + floor_div(2 * nf + i128::from(w), 2 * i128::from(w));
+            if want_x.abs() < 4096 * 16 {
+                assert_eq!(i128::from(sx), want_x, "x {x} w {w}");
+                assert_eq!(
+                    i128::from(sx) * k + i128::from(sub[0]),
+                    fine_x,
+                    "x {x} w {w}"
+                );
+            }
+            let ny16 = -i128::from(y) * 120 * 16;
+            let want_y = 120 * 16 + floor_div(2 * ny16 + i128::from(w), 2 * i128::from(w));
+            if want_y.abs() < 4096 * 16 {
+                assert_eq!(i128::from(sy), want_y, "y {y} w {w}");
+            }
+            let half = 1 << (ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS - 1);
+            assert!((-half..=half).contains(&sub[0]) && (-half..=half).contains(&sub[1]));
+        }
     }
 
     #[test]

@@ -220,9 +220,15 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         self.check_target(target)?;
         let mut pixels = 0u32;
         for tri in tris {
-            clip_and_project(tri, &self.viewport, self.mode.cull, &mut |s| {
-                pixels = pixels.wrapping_add((self.raster)(self, s, target));
-            });
+            clip_and_project(
+                tri,
+                &self.viewport,
+                self.mode.cull,
+                self.affine(),
+                &mut |s| {
+                    pixels = pixels.wrapping_add((self.raster)(self, s, target));
+                },
+            );
         }
         Ok(pixels)
     }
@@ -230,7 +236,12 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     /// Clips, projects and culls one clip-space triangle, handing each resulting screen
     /// triangle to `emit` (for binning).
     pub fn project(&self, tri: &[ClipVertex; 3], emit: &mut impl FnMut(&ScreenTriangle)) {
-        clip_and_project(tri, &self.viewport, self.mode.cull, emit);
+        clip_and_project(tri, &self.viewport, self.mode.cull, self.affine(), emit);
+    }
+
+    /// Affine draws interpolate clipped vertices' attributes as GL's `noperspective`.
+    fn affine(&self) -> bool {
+        self.mode.projection == Projection::Affine
     }
 
     /// Draws one screen triangle (already clipped, projected and culled); returns the pixels

@@ -12,7 +12,7 @@ use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
-use crate::raster::{rasterize, Rect, SpanSink};
+use crate::raster::{rasterize, Rect, SpanSink, ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::shading::Shader;
 use crate::surface::RenderTarget;
 use crate::texture::LodGranularity;
@@ -124,7 +124,13 @@ where
         k => k,
     };
     let Some(setup) = setup(
-        tri.map(|v| (v.x, v.y, v.z, v.w)),
+        tri.map(|v| {
+            let fine = |p: i32, sub: i16| {
+                p.wrapping_shl(ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS)
+                    .wrapping_add(i32::from(sub))
+            };
+            (fine(v.x, v.sub[0]), fine(v.y, v.sub[1]), v.z, v.w)
+        }),
         &vary,
         vp,
         kind,

@@ -17,7 +17,7 @@ use super::recip::{Q_FLOOR, Q_ONE};
 use super::stages::ProjKind;
 use crate::math::div_u64;
 use crate::raster::gradient::PlaneSetup;
-use crate::raster::{Plane, Rect};
+use crate::raster::{Plane, Rect, ATTR_SUBPIXEL_BITS};
 use crate::shading::Varyings;
 
 /// Everything the span loop needs for one triangle: depth, `q` and one plane per varying
@@ -78,7 +78,8 @@ pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
     extent.saturating_mul(one - q) / (one + q)
 }
 
-/// One screen vertex as the set-up reads it: sub-pixel `x, y`, depth, clip `w`.
+/// One screen vertex as the set-up reads it: `x, y` in 1/256 pixel (unsnapped: see
+/// [`ScreenVertex::sub`](crate::geometry::ScreenVertex)), depth, clip `w`.
 pub(crate) type SetupVertex = (i32, i32, i32, i32);
 
 /// Builds the set-up, or `None` for a zero-area triangle. `texcoords` is the shader's
@@ -105,11 +106,11 @@ pub(crate) fn setup<V: Varyings>(
         ],
         viewport,
     )?;
-    // Sub-pixel coordinates lie in the guard band (|x|, |y| <= 2^16), so the sums fit i32
-    // (a 64-bit division by a constant is still a library call on 32-bit cores).
+    // Coordinates lie in the guard band (|x|, |y| <= 2^20), so the sums fit i32 (a 64-bit
+    // division by a constant is still a library call on 32-bit cores).
     let sum = |k: fn(&SetupVertex) -> i32| pos.iter().map(k).fold(0i32, i32::wrapping_add);
-    let cx = sum(|p| p.0) / 48;
-    let cy = sum(|p| p.1) / 48;
+    let cx = sum(|p| p.0) / (3 << ATTR_SUBPIXEL_BITS);
+    let cy = sum(|p| p.1) / (3 << ATTR_SUBPIXEL_BITS);
     let centroid = (
         cx.clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
         cy.clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),

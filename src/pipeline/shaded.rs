@@ -119,7 +119,8 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
         tri: &[Vertex<N>; 3],
         emit: &mut impl FnMut(&ScreenTriangle<N>),
     ) {
-        clip_and_project_varyings(tri, &self.viewport, self.cull, emit);
+        let noperspective = self.projection == Projection::Affine;
+        clip_and_project_varyings(tri, &self.viewport, self.cull, noperspective, emit);
     }
 
     /// Whether `target` can take this draw: [`Error::NoDepthBuffer`] when the draw tests

@@ -6,12 +6,14 @@
 //!
 //! # Arithmetic and error budget
 //! * Inputs: attribute values `|a| < 2^31` (any fixed-point format: the plane does not care),
-//!   sub-pixel coordinates inside the guard band (`|x|, |y| <= 2^16`), so vertex differences
-//!   are `< 2^17` and the numerators `Δa·Δy` are `< 2^50`.
+//!   vertex positions in 1/256 pixel ([`ATTR_SUBPIXEL_BITS`], the unsnapped projections:
+//!   attributes are not moved by the 1/16-pixel snapping of coverage) inside the guard band
+//!   (`|x|, |y| <= 2^20`), so vertex differences are `< 2^21`, the doubled area `< 2^43` and
+//!   the numerators `Δa·Δy` `< 2^54`.
 //! * Gradients are computed once per triangle with 8 extra fraction bits
-//!   (`(num << 12) / area2`, below 2^63) and the reference value at a pixel centre is taken
-//!   from that high-precision gradient, so it is within one unit of the exact value wherever
-//!   the reference lies.
+//!   (`(num << 16) / area2`; when that shift would overflow, as quotient and remainder) and
+//!   the reference value at a pixel centre is taken from that high-precision gradient, so it
+//!   is within one unit of the exact value wherever the reference lies.
 //! * The reference pixel is vertex 0's pixel clamped into the *viewport* (never a band), so
 //!   a frame drawn in bands evaluates exactly the same integers as one drawn whole.
 //! * Per-pixel values use `i32` **wrapping** arithmetic on purpose: set-up is exact modulo
@@ -21,7 +23,7 @@
 //!   unit per pixel of distance from the reference: at most `(width + height) / 2` units
 //!   across the viewport.
 
-use super::{Rect, SUBPIXEL_BITS, SUBPIXEL_ONE};
+use super::{Rect, ATTR_SUBPIXEL_BITS};
 use crate::math::SmallDivisor;
 
 /// Extra fraction bits of the set-up gradient.
@@ -35,7 +37,7 @@ pub struct PlaneSetup {
     dx2: i64,
     dy2: i64,
     area2: i64,
-    /// Offset of the reference pixel centre from vertex 0, sub-pixel units.
+    /// Offset of the reference pixel centre from vertex 0, 1/256 pixel.
     ref_dx: i64,
     ref_dy: i64,
     /// `|area2|` as a reciprocal when below 2^16 (small triangles), on cores without a
@@ -50,9 +52,9 @@ pub struct PlaneSetup {
 }
 
 impl PlaneSetup {
-    /// Prepares plane set-up for the triangle `v` (sub-pixel units, guard band) whose doubled
-    /// signed area is non-zero; the reference pixel is clamped into `viewport`. Returns
-    /// `None` for zero area.
+    /// Prepares plane set-up for the triangle `v` (1/256-pixel units, [`ATTR_SUBPIXEL_BITS`],
+    /// guard band) whose doubled signed area is non-zero; the reference pixel is clamped into
+    /// `viewport`. Returns `None` for zero area.
     pub fn new(v: [(i32, i32); 3], viewport: Rect) -> Option<Self> {
         let (x0, y0) = (i64::from(v[0].0), i64::from(v[0].1));
         let dx1 = i64::from(v[1].0) - x0;
@@ -64,11 +66,11 @@ impl PlaneSetup {
             return None;
         }
         let px_ref =
-            (v[0].0 >> SUBPIXEL_BITS).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0));
+            (v[0].0 >> ATTR_SUBPIXEL_BITS).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0));
         let py_ref =
-            (v[0].1 >> SUBPIXEL_BITS).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0));
-        let half = i64::from(SUBPIXEL_ONE / 2);
-        let one = i64::from(SUBPIXEL_ONE);
+            (v[0].1 >> ATTR_SUBPIXEL_BITS).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0));
+        let one = 1i64 << ATTR_SUBPIXEL_BITS;
+        let half = one / 2;
         Some(PlaneSetup {
             dx1,
             dy1,
@@ -84,7 +86,7 @@ impl PlaneSetup {
         })
     }
 
-    /// Doubled signed area in sub-pixel units squared (positive: clockwise on a y-down
+    /// Doubled signed area in 1/256-pixel units squared (positive: clockwise on a y-down
     /// screen).
     pub fn area2(&self) -> i64 {
         self.area2
@@ -114,24 +116,37 @@ impl PlaneSetup {
         }
     }
 
+    /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
+    /// EXTRA`: one division when `n 2^SHIFT` fits `i64` (small attribute differences or
+    /// small triangles: the common case), else a long division in steps that keep every
+    /// partial remainder below `2^62` (`|area2| < 2^(2 ATTR_SUBPIXEL_BITS + 27)`), exact
+    /// modulo 2^64 either way.
+    #[inline]
+    fn gradient(&self, n: i64) -> i64 {
+        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
+        if n.unsigned_abs() < 1 << (62 - SHIFT) {
+            return self.div_round(n << SHIFT);
+        }
+        long_div_round(n, self.area2, SHIFT)
+    }
+
     /// The plane through the attribute values `a` at the three vertices.
     pub fn plane(&self, a: [i32; 3]) -> Plane {
         let da1 = i64::from(a[1]) - i64::from(a[0]);
         let da2 = i64::from(a[2]) - i64::from(a[0]);
-        // d a / d x and d a / d y in units per sub-pixel, times area2.
+        // d a / d x and d a / d y in units per 1/256 pixel, times area2.
         let nx = mul(da1, self.dy2) - mul(da2, self.dy1);
         let ny = mul(da2, self.dx1) - mul(da1, self.dx2);
-        // Per pixel (<< SUBPIXEL_BITS) with EXTRA more fraction bits.
-        let shift = SUBPIXEL_BITS + EXTRA;
-        let gx = self.div_round(nx << shift);
-        let gy = self.div_round(ny << shift);
-        // Value at the reference centre: a0 + (gx ref_dx + gy ref_dy) / 2^(EXTRA + SUBPIXEL_BITS)
-        // (gx is per pixel, ref_dx in sub-pixels).
+        // Per pixel (<< ATTR_SUBPIXEL_BITS) with EXTRA more fraction bits.
+        let gx = self.gradient(nx);
+        let gy = self.gradient(ny);
+        // Value at the reference centre: a0 + (gx ref_dx + gy ref_dy) / 2^(EXTRA + ATTR_SUBPIXEL_BITS)
+        // (gx is per pixel, ref_dx in 1/256 pixel).
         // Wrapping is exact modulo 2^64, hence modulo 2^32 after the shift.
         let off = mul(gx, self.ref_dx).wrapping_add(mul(gy, self.ref_dy));
-        let round = 1i64 << (EXTRA + SUBPIXEL_BITS - 1);
+        let round = 1i64 << (EXTRA + ATTR_SUBPIXEL_BITS - 1);
         let a_ref =
-            i64::from(a[0]).wrapping_add(off.wrapping_add(round) >> (EXTRA + SUBPIXEL_BITS));
+            i64::from(a[0]).wrapping_add(off.wrapping_add(round) >> (EXTRA + ATTR_SUBPIXEL_BITS));
         let half = 1i64 << (EXTRA - 1);
         Plane {
             at_ref: a_ref as i32,
@@ -139,6 +154,31 @@ impl PlaneSetup {
             dy: (gy.wrapping_add(half) >> EXTRA) as i32,
         }
     }
+}
+
+/// `n 2^shift / d` rounded to nearest, ties away from zero (`d != 0`), by long division:
+/// truncated quotients of `r 2^k / d` with every partial remainder `|r| < |d|` and
+/// `|r| 2^k < 2^62`. The result wraps modulo 2^64 when it does not fit.
+fn long_div_round(n: i64, d: i64, shift: u32) -> i64 {
+    let step = 62u32
+        .saturating_sub(64 - d.unsigned_abs().leading_zeros())
+        .max(1);
+    let mut q = n / d;
+    let mut r = n - q * d;
+    let mut left = shift;
+    while left > 0 {
+        let k = left.min(step);
+        let t = r << k;
+        let qq = t / d;
+        r = t - qq * d;
+        q = q.wrapping_shl(k).wrapping_add(qq);
+        left -= k;
+    }
+    // `r` has the sign of `n`; round half away from zero.
+    if 2 * r.unsigned_abs() >= d.unsigned_abs() {
+        q = q.wrapping_add(if (n < 0) == (d < 0) { 1 } else { -1 });
+    }
+    q
 }
 
 /// `n / d` rounded to nearest (ties away from zero), `d != 0`.
@@ -212,13 +252,46 @@ mod tests {
     use super::*;
 
     fn exact(v: [(i32, i32); 3], a: [i32; 3], px: i32, py: i32) -> f64 {
-        let f = |p: (i32, i32)| (p.0 as f64 / 16.0, p.1 as f64 / 16.0);
+        let one = f64::from(1u32 << ATTR_SUBPIXEL_BITS);
+        let f = |p: (i32, i32)| (p.0 as f64 / one, p.1 as f64 / one);
         let (p0, p1, p2) = (f(v[0]), f(v[1]), f(v[2]));
         let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
         let area = (p1.0 - p0.0) * (p2.1 - p0.1) - (p2.0 - p0.0) * (p1.1 - p0.1);
         let l1 = ((x - p0.0) * (p2.1 - p0.1) - (p2.0 - p0.0) * (y - p0.1)) / area;
         let l2 = ((p1.0 - p0.0) * (y - p0.1) - (x - p0.0) * (p1.1 - p0.1)) / area;
         a[0] as f64 + l1 * (a[1] as f64 - a[0] as f64) + l2 * (a[2] as f64 - a[0] as f64)
+    }
+
+    #[test]
+    fn long_division_matches_wide_arithmetic() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let n = (x as i64) >> (x % 30);
+            let d = ((x.rotate_left(17) as i64) >> (14 + x % 40)).max(1)
+                * if x & 1 == 0 { 1 } else { -1 };
+            for shift in [1, 12, 20, 28] {
+                let wide = (i128::from(n) << shift) as f64 / d as f64;
+                let exact = {
+                    let (nn, dd) = (i128::from(n) << shift, i128::from(d));
+                    let q = nn / dd;
+                    let r = nn - q * dd;
+                    let away = if (nn < 0) == (dd < 0) { 1 } else { -1 };
+                    if 2 * r.abs() >= dd.abs() {
+                        q + away
+                    } else {
+                        q
+                    }
+                };
+                assert_eq!(
+                    long_div_round(n, d, shift),
+                    exact as i64,
+                    "{n} << {shift} / {d} (~{wide})"
+                );
+            }
+        }
     }
 
     #[test]
@@ -269,6 +342,9 @@ mod tests {
             ),
         ];
         for (v, a) in cases {
+            // The cases are in 1/16 pixel: to the attribute grid.
+            let k = 1 << (ATTR_SUBPIXEL_BITS - 4);
+            let v = v.map(|(x, y)| (x * k, y * k));
             let s = PlaneSetup::new(v, vp).unwrap();
             let p = s.plane(a);
             for (px, py) in [(0, 0), (319, 0), (0, 239), (319, 239), (160, 120)] {

@@ -33,6 +33,11 @@ pub use triangle::{first_row_at_or_below, rasterize, Rect, SpanSink};
 pub const SUBPIXEL_BITS: u32 = 4;
 /// One pixel in sub-pixel units.
 pub const SUBPIXEL_ONE: i32 = 1 << SUBPIXEL_BITS;
+/// Fractional bits of the screen positions that attribute planes (texture coordinates,
+/// depth, every varying) are built from: 8, so attributes are interpolated from vertices
+/// within 1/512 pixel of their exact projections, while coverage uses the 1/16-pixel grid of
+/// [`SUBPIXEL_BITS`] (as GL: snapping moves the edges, not the texture).
+pub const ATTR_SUBPIXEL_BITS: u32 = 12;
 /// Largest absolute screen coordinate, in whole pixels, that the raster math accepts.
 ///
 /// Geometry clips triangles to this guard band, so any vertex the rasterizer sees lies in

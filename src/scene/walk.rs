@@ -31,6 +31,7 @@ use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_dept
 use crate::geometry::{ScreenTriangle, ScreenVertex, COLOR_ONE};
 use crate::math::Mat4;
 use crate::pipeline::{Draw, Shading};
+use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::surface::{MeshSink, RenderTarget};
 
 use super::mesh::{vertex, vertex_intensity};
@@ -46,10 +47,15 @@ const FAILED: u8 = 3;
 /// Placed without the depth division (binning): `z` holds the clip-space `z`.
 const NO_DEPTH: u8 = 4;
 
+/// Bits of the attribute offset below the sub-pixel grid.
+const SUB_BITS: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
+
 /// One prepared vertex: its projection (uv and one colour intensity), outcode and cache
 /// key; 32 bytes, so copies stay a few word moves.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CachedVertex {
+    /// Screen x and y: the sub-pixel position times `2^(SUB_BITS + 1)` plus the attribute
+    /// offset (`ScreenVertex::sub`) plus `2^(SUB_BITS - 1)`, so the entry stays 32 bytes.
     x: i32,
     y: i32,
     z: i32,
@@ -80,15 +86,27 @@ impl CachedVertex {
 
     fn set_screen(&mut self, s: &ScreenVertex) {
         let [u, v, r, ..] = s.varyings;
-        (self.x, self.y, self.z, self.w, self.uv, self.color) =
-            (s.x, s.y, s.z, s.w, [u, v], (r >> 16) as u16);
+        let pack = |p: i32, sub: i16| {
+            p.wrapping_shl(SUB_BITS + 1)
+                .wrapping_add(i32::from(sub) + (1 << (SUB_BITS - 1)))
+        };
+        (self.x, self.y, self.z, self.w, self.uv, self.color) = (
+            pack(s.x, s.sub[0]),
+            pack(s.y, s.sub[1]),
+            s.z,
+            s.w,
+            [u, v],
+            (r >> 16) as u16,
+        );
     }
 
     fn screen(&self) -> ScreenVertex {
         let c = i32::from(self.color.min(COLOR_ONE)) << 16;
+        let sub = |p: i32| ((p & ((2 << SUB_BITS) - 1)) - (1 << (SUB_BITS - 1))) as i16;
         ScreenVertex {
-            x: self.x,
-            y: self.y,
+            x: self.x >> (SUB_BITS + 1),
+            y: self.y >> (SUB_BITS + 1),
+            sub: [sub(self.x), sub(self.y)],
             z: self.z,
             w: self.w,
             varyings: [self.uv[0], self.uv[1], c, c, c],

@@ -27,9 +27,30 @@ pub fn lerp_vertex(a: &RefVertex, b: &RefVertex, t: f64) -> RefVertex {
     }
 }
 
+/// The clipped vertex at `t` along `a -> b`: its position in clip space, its
+/// attributes likewise (perspective) or, with `noperspective` (GL's
+/// `noperspective`, for affine interpolation), at the fraction of the screen
+/// distance from `a` to `b` that the new vertex lies at, `t' = t w_b / w(t)`,
+/// so that they stay linear in screen space over the original triangle (an
+/// end with `w <= 0` has no screen position: `t` is kept).
+pub fn cut(a: &RefVertex, b: &RefVertex, t: f64, noperspective: bool) -> RefVertex {
+    let mut v = lerp_vertex(a, b, t);
+    let (wa, wb, wt) = (a.clip[3], b.clip[3], v.clip[3]);
+    if noperspective && wa > 0.0 && wb > 0.0 && wt > 0.0 {
+        let attrs = lerp_vertex(a, b, (t * wb / wt).clamp(0.0, 1.0));
+        v.uv = attrs.uv;
+        v.color = attrs.color;
+    }
+    v
+}
+
 /// One Sutherland–Hodgman pass: keeps the part of `poly` where `dist >= 0`.
 /// Vertices already inside are passed through unchanged (bit for bit).
-fn clip_polygon(poly: &[RefVertex], dist: fn(&RefVertex) -> f64) -> Vec<RefVertex> {
+fn clip_polygon(
+    poly: &[RefVertex],
+    dist: fn(&RefVertex) -> f64,
+    noperspective: bool,
+) -> Vec<RefVertex> {
     let mut out = Vec::with_capacity(poly.len() + 2);
     for (k, cur) in poly.iter().enumerate() {
         let next = &poly[(k + 1) % poly.len()];
@@ -42,9 +63,9 @@ fn clip_polygon(poly: &[RefVertex], dist: fn(&RefVertex) -> f64) -> Vec<RefVerte
             // two triangles (walked in opposite directions) gives the same
             // point bit for bit and no crack opens.
             if dc >= 0.0 {
-                out.push(lerp_vertex(cur, next, dc / (dc - dn)));
+                out.push(cut(cur, next, dc / (dc - dn), noperspective));
             } else {
-                out.push(lerp_vertex(next, cur, dn / (dn - dc)));
+                out.push(cut(next, cur, dn / (dn - dc), noperspective));
             }
         }
     }
@@ -53,7 +74,14 @@ fn clip_polygon(poly: &[RefVertex], dist: fn(&RefVertex) -> f64) -> Vec<RefVerte
 
 /// Clips a triangle against near and far; returns the resulting convex
 /// polygon (empty when the triangle is entirely outside), in the input order.
+/// Attributes of new vertices are perspective-correct (see [`clip_triangle_with`]).
 pub fn clip_triangle(tri: &RefTriangle) -> Vec<RefVertex> {
+    clip_triangle_with(tri, false)
+}
+
+/// [`clip_triangle`], with the attributes of new vertices interpolated as GL's
+/// `noperspective` when `noperspective` (affine interpolation; see [`cut`]).
+pub fn clip_triangle_with(tri: &RefTriangle, noperspective: bool) -> Vec<RefVertex> {
     let all_inside = tri
         .0
         .iter()
@@ -61,11 +89,11 @@ pub fn clip_triangle(tri: &RefTriangle) -> Vec<RefVertex> {
     if all_inside {
         return tri.0.to_vec();
     }
-    let poly = clip_polygon(&tri.0, near_distance);
+    let poly = clip_polygon(&tri.0, near_distance, noperspective);
     if poly.len() < 3 {
         return Vec::new();
     }
-    let poly = clip_polygon(&poly, far_distance);
+    let poly = clip_polygon(&poly, far_distance, noperspective);
     if poly.len() < 3 {
         return Vec::new();
     }

@@ -60,7 +60,8 @@ pub fn render_chain(
 ) -> RefImage {
     let mut img = RefImage::new(width, height);
     for tri in tris {
-        for sub in clip::fan(&clip::clip_triangle(tri)) {
+        let noperspective = mode.projection == RefProjection::Affine;
+        for sub in clip::fan(&clip::clip_triangle_with(tri, noperspective)) {
             let w = sub.0.map(|v| raster::to_window(&v, width, height));
             let [Some(a), Some(b), Some(c)] = w else {
                 continue;
@@ -110,16 +111,17 @@ fn interpolate<const N: usize>(
 /// pixels; `s`, `t` normalised).
 ///
 /// `l_i = e_i(x, y) / A` is affine in the window position, with
-/// `de_i/dx = -(b.y - a.y)` and `de_i/dy = b.x - a.x` for the edge `a -> b`
+/// `de_i/dx = -(b.ey - a.ey)` and `de_i/dy = b.ex - a.ex` for the edge `a -> b`
 /// opposite vertex `i`. Affine: `ds/dx = Σ (dl_i/dx) s_i`. Perspective:
 /// `s = S / Q` with `S = Σ l_i q_i s_i`, `Q = Σ l_i q_i` (`q_i = 1 / w_i`),
 /// so `ds/dx = (S_x - s Q_x) / Q`.
 pub fn uv_derivatives(v: &[WindowVertex; 3], l: [f64; 3], proj: RefProjection) -> [[f64; 2]; 2] {
-    let area = raster::signed_area2(v);
+    // Of the exact (unsnapped) positions, as the barycentrics.
+    let area = raster::exact_area2(v);
     let edges = [(1usize, 2usize), (2, 0), (0, 1)];
     let dl = [
-        edges.map(|(a, b)| -(v[b].y - v[a].y) / area),
-        edges.map(|(a, b)| (v[b].x - v[a].x) / area),
+        edges.map(|(a, b)| -(v[b].ey - v[a].ey) / area),
+        edges.map(|(a, b)| (v[b].ex - v[a].ex) / area),
     ];
     match proj {
         RefProjection::Affine => dl.map(|d| {

@@ -5,12 +5,17 @@
 //! Window coordinates (as a framebuffer is stored, y grows DOWN):
 //! `x_w = (x_ndc + 1) * width / 2`, `y_w = (1 - y_ndc) * height / 2`,
 //! `z_w = (z_ndc + 1) / 2`. Pixel `(x, y)` has its centre at `(x + 0.5, y + 0.5)`.
-//! `x_w` and `y_w` are snapped to the nearest multiple of 1/16 (ties upward,
-//! `floor(16 v + 0.5) / 16`), like the fixed-point renderer's 4 sub-pixel bits,
-//! so coverage ties are decided the same way. With snapped coordinates and
-//! half-integer centres every edge-function value is a multiple of 1/256 and,
-//! for coordinates below 2^20 pixels, exactly representable in f64: coverage
-//! here is exact, not approximate.
+//! For **coverage** `x_w` and `y_w` are snapped to the nearest multiple of 1/16
+//! (ties upward, `floor(16 v + 0.5) / 16`), like the fixed-point renderer's 4
+//! sub-pixel bits, so coverage ties are decided the same way. With snapped
+//! coordinates and half-integer centres every edge-function value is a
+//! multiple of 1/256 and, for coordinates below 2^20 pixels, exactly
+//! representable in f64: coverage here is exact, not approximate.
+//!
+//! **Attributes** (barycentrics, hence texture coordinates, colours and depth)
+//! come from the exact, unsnapped window positions, as GL specifies: snapping
+//! moves the edges, not the texture. The reference therefore does not share
+//! the renderer's snapping of attribute positions.
 
 use super::types::RefVertex;
 
@@ -20,10 +25,14 @@ pub const SUBPIXEL_STEPS: f64 = 16.0;
 /// A vertex after perspective divide and viewport transform.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WindowVertex {
-    /// Snapped window x (pixels, grows right).
+    /// Snapped window x (pixels, grows right): coverage only.
     pub x: f64,
-    /// Snapped window y (pixels, grows down).
+    /// Snapped window y (pixels, grows down): coverage only.
     pub y: f64,
+    /// Exact window x: attributes.
+    pub ex: f64,
+    /// Exact window y: attributes.
+    pub ey: f64,
     /// Window depth `z_w` in `[0, 1]` (not snapped).
     pub z: f64,
     /// `1 / w_clip`, for perspective-correct interpolation.
@@ -47,9 +56,15 @@ pub fn to_window(v: &RefVertex, width: u32, height: u32) -> Option<WindowVertex>
         return None;
     }
     let (xn, yn, zn) = (x / w, y / w, z / w);
+    let (ex, ey) = (
+        (xn + 1.0) * f64::from(width) / 2.0,
+        (1.0 - yn) * f64::from(height) / 2.0,
+    );
     Some(WindowVertex {
-        x: snap((xn + 1.0) * f64::from(width) / 2.0),
-        y: snap((1.0 - yn) * f64::from(height) / 2.0),
+        x: snap(ex),
+        y: snap(ey),
+        ex,
+        ey,
         z: (zn + 1.0) / 2.0,
         inv_w: 1.0 / w,
         uv: v.uv,
@@ -69,6 +84,23 @@ pub fn signed_area2(v: &[WindowVertex; 3]) -> f64 {
     edge(&v[0], &v[1], v[2].x, v[2].y)
 }
 
+/// Edge function of the exact (unsnapped) positions.
+fn edge_exact(a: &WindowVertex, b: &WindowVertex, px: f64, py: f64) -> f64 {
+    (b.ex - a.ex) * (py - a.ey) - (b.ey - a.ey) * (px - a.ex)
+}
+
+/// [`signed_area2`] of the exact (unsnapped) positions: the attributes' area.
+pub fn exact_area2(v: &[WindowVertex; 3]) -> f64 {
+    edge_exact(&v[0], &v[1], v[2].ex, v[2].ey)
+}
+
+/// Barycentric weights of the pixel centre `(cx, cy)` in the exact triangle (they sum to
+/// 1; outside `[0, 1]` where coverage and the exact triangle disagree by the snapping).
+pub fn barycentrics(v: &[WindowVertex; 3], cx: f64, cy: f64) -> [f64; 3] {
+    let area = exact_area2(v);
+    [(1, 2), (2, 0), (0, 1)].map(|(a, b)| edge_exact(&v[a], &v[b], cx, cy) / area)
+}
+
 /// Whether edge `a -> b` is a top or left edge, for a triangle whose
 /// orientation sign is `s` (sign of [`signed_area2`]). In the positive
 /// orientation (interior where all edge functions are > 0), a top edge is
@@ -80,9 +112,10 @@ fn is_top_left(a: &WindowVertex, b: &WindowVertex, s: f64) -> bool {
 }
 
 /// Calls `f(x, y, λ)` for every pixel of the `width x height` viewport whose
-/// centre is covered by the triangle under the top-left rule. `λ[i]` is the
-/// barycentric weight of `v[i]` at the pixel centre (they sum to 1). Both
-/// windings are rasterized; zero-area triangles cover nothing.
+/// centre is covered by the (snapped) triangle under the top-left rule. `λ[i]`
+/// is the barycentric weight of `v[i]` at the pixel centre in the exact
+/// (unsnapped) triangle (they sum to 1). Both windings are rasterized;
+/// zero-area triangles cover nothing.
 pub fn rasterize(
     v: &[WindowVertex; 3],
     width: u32,
@@ -120,7 +153,7 @@ pub fn rasterize(
                 w > 0.0 || (w == 0.0 && top_left[i])
             });
             if inside {
-                f(px, py, e.map(|ei| ei / area));
+                f(px, py, barycentrics(v, cx, cy));
             }
         }
     }

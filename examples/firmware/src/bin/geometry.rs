@@ -145,7 +145,7 @@ fn stages<const V: usize, const T: usize>(
         for &k in &s.crossing[..nc] {
             let idx = m.indices[usize::from(k)];
             let tri = idx.map(|i| s.clip[usize::from(i)]);
-            clip_and_project(&tri, &vp, Cull::Back, &mut |_| out += 1);
+            clip_and_project(&tri, &vp, Cull::Back, false, &mut |_| out += 1);
         }
         (nc as u32, out)
     });
