@@ -188,3 +188,59 @@ fn affine_does_not_depend_on_where_the_guard_band_cuts() {
         assert_eq!(wrong, 0, "viewport {name}");
     }
 }
+
+/// Coverage of `scene` with window positions snapped to `1/steps` pixel (`None`: exact).
+fn coverage(scene: &scenes::SceneDesc, steps: Option<f64>) -> Vec<bool> {
+    let (w, h) = (scene.width, scene.height);
+    let mut out = vec![false; (w * h) as usize];
+    for tri in scenes::to_ref_triangles(scene) {
+        for sub in clip::fan(&clip::clip_triangle(&tri)) {
+            let [Some(a), Some(b), Some(c)] = sub.0.map(|v| raster::to_window(&v, w, h)) else {
+                continue;
+            };
+            let snap = |mut v: raster::WindowVertex| {
+                let s = |e: f64| steps.map_or(e, |k| (e * k + 0.5).floor() / k);
+                (v.x, v.y) = (s(v.ex), s(v.ey));
+                v
+            };
+            let v = [snap(a), snap(b), snap(c)];
+            // Back faces culled, as the scenes draw them (front faces have negative area).
+            if raster::signed_area2(&v) >= 0.0 {
+                continue;
+            }
+            raster::rasterize(&v, w, h, |x, y, _| out[(y * w + x) as usize] = true);
+        }
+    }
+    out
+}
+
+/// 4 against 8 sub-pixel bits for coverage: pixels whose coverage differs from exact
+/// (unsnapped) edges, and between the two, over the benchmark scenes. Printed for the
+/// README; the assertion only keeps the figures honest (8 bits is never worse).
+#[test]
+fn coverage_with_4_and_8_subpixel_bits() {
+    let mut cases = vec![scenes::sphere(0), scenes::floor()];
+    cases.extend([0, 33, 66].map(scenes::cube));
+    let (mut px, mut d4, mut d8, mut d48) = (0usize, 0usize, 0usize, 0usize);
+    for s in &cases {
+        let exact = coverage(s, None);
+        let c4 = coverage(s, Some(16.0));
+        let c8 = coverage(s, Some(256.0));
+        let diff = |a: &[bool], b: &[bool]| a.iter().zip(b).filter(|(x, y)| x != y).count();
+        let (e4, e8, e48) = (diff(&c4, &exact), diff(&c8, &exact), diff(&c4, &c8));
+        let n = exact.iter().filter(|&&c| c).count();
+        println!(
+            "coverage {}: {n} px; 4 bits {e4} ({:.3} %), 8 bits {e8} ({:.3} %) off exact; 4 vs 8: {e48}",
+            s.name,
+            100.0 * e4 as f64 / n as f64,
+            100.0 * e8 as f64 / n as f64
+        );
+        (px, d4, d8, d48) = (px + n, d4 + e4, d8 + e8, d48 + e48);
+        assert!(e8 <= e4);
+    }
+    println!(
+        "coverage, all: {px} px; off exact: 4 bits {d4} ({:.3} %), 8 bits {d8} ({:.3} %); 4 vs 8: {d48}",
+        100.0 * d4 as f64 / px as f64,
+        100.0 * d8 as f64 / px as f64
+    );
+}
