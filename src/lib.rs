@@ -135,7 +135,10 @@
 //!   visible when `-w <= x, y, z <= w`; NDC depth `[-1, 1]` maps to `[0, 1]`.
 //! * Screen y grows **down** (row 0 at the top, as a framebuffer is stored); front faces
 //!   are counter-clockwise in NDC.
-//! * Pixel centres at half-integers; top-left fill rule; vertices snapped to 1/16 pixel.
+//! * Pixel centres at half-integers; top-left fill rule; vertices snapped to 1/16 pixel for
+//!   coverage, while attributes (texture coordinates, colours, depth) are interpolated from
+//!   positions rounded to 1/4096 pixel (GL: snapping moves edges, not textures). Affine
+//!   interpolation is GL's `noperspective`, clipping included.
 //! * Texel centres at `(i + 0.5) / size`; `t = 0` is the first row of the texel slice; wrap
 //!   modes and nearest/bilinear as GL ES 3.0 §3.8.10–11 (wrap applied to integer texel
 //!   indices).
