@@ -9,7 +9,9 @@
 //! its per-row stepping in `i32`.
 
 use crate::math::{div_floor_i64, div_round_i64};
-use crate::raster::{Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS};
+use crate::raster::{
+    Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
+};
 use crate::Error;
 
 /// Which faces to skip. Front faces are counter-clockwise in NDC (OpenGL's default).
@@ -102,39 +104,38 @@ impl Viewport {
 
     /// The screen `(x, y)` part of [`project`](Self::project): the window position rounded
     /// to the nearest 1/16 pixel (ties towards +x and +y), and the offset of the position
-    /// rounded to 1/256 pixel from it, in 1/256 pixel (`-8..=8`).
+    /// rounded to `2^-ATTR_SUBPIXEL_BITS` pixel from it, in that unit (at most half a
+    /// sub-pixel either way).
     ///
-    /// One division per axis gives the 1/256-pixel position `f = floor(F + 1/2)` of the exact
-    /// `F` (in 1/256 pixel); the 1/16-pixel position is `floor((F + 8) / 16)`, which is
-    /// `(f + 8) >> 4` except when `f + 8` is a multiple of 16 and `F < f`, told apart by one
-    /// multiplication. The snapped position is therefore exactly the rounding of the exact
-    /// one, as if computed alone.
+    /// One division per axis gives the 1/16-pixel position `s = floor(n / w + 1/2)` and its
+    /// remainder `r` (`n / w = s + (r - w) / 2w`); the offset is
+    /// `floor(2^R (r - w) / 2w + 1/2)`, `R = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS`, a second,
+    /// small division (32-bit while `w < 2^23`, that is `w < 128.0`). Both are the exact
+    /// roundings of the exact position.
     pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));
-        let fine = 1i64 << ATTR_SUBPIXEL_BITS;
-        let hw = i64::from(self.rect.x1 - self.rect.x0) * fine / 2;
-        let hh = i64::from(self.rect.y1 - self.rect.y0) * fine / 2;
-        let cx = i64::from(self.rect.x0) * fine + hw;
-        let cy = i64::from(self.rect.y0) * fine + hh;
-        let lim = i64::from(GUARD_BAND_PX) * fine;
+        let one = i64::from(SUBPIXEL_ONE);
+        let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
+        let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
+        let cx = i64::from(self.rect.x0) * one + hw;
+        let cy = i64::from(self.rect.y0) * one + hh;
+        let lim = i64::from(GUARD_BAND_PX) * one;
+        const R: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
+        const HALF: i64 = 1 << (R - 1);
         // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
         // of the window coordinate: rounding them away from the viewport centre instead
         // would snap a mesh moved by whole pixels to a different shape.
         let axis = |n: i64, c: i64| -> (i32, i16) {
-            let f = round_half_up(n, w);
-            let shift = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
-            let half = 1i64 << (shift - 1);
-            let mut s = (f + half) >> shift;
-            // f + half on the grid: the exact value decides (n / w < f means round down).
-            if (f + half) & ((1 << shift) - 1) == 0 && n < f * w {
-                s -= 1;
+            let num = 2 * n + w;
+            let s = div_floor_i64(num, 2 * w);
+            let r = num - s * 2 * w; // 0 <= r < 2w
+            let off = div_floor_i64(((r - w) << R) + w, 2 * w);
+            let s = c + s;
+            if s.abs() > lim {
+                // Clamped into the guard band (only vertices the clipper will cut).
+                return (s.clamp(-lim, lim) as i32, 0);
             }
-            let s = (c >> shift) + s;
-            let f = c + f;
-            let slim = lim >> shift;
-            let s = s.clamp(-slim, slim);
-            let off = (f - (s << shift)).clamp(-half, half);
-            (s as i32, off as i16)
+            (s as i32, off.clamp(-HALF, HALF) as i16)
         };
         let (sx, ox) = axis(i64::from(x) * hw, cx);
         let (sy, oy) = axis(-(i64::from(y) * hh), cy);

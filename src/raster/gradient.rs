@@ -37,6 +37,11 @@ pub struct PlaneSetup {
     dx2: i64,
     dy2: i64,
     area2: i64,
+    /// `area2 >> norm`, below 2^32 in magnitude: the gradients' divisor, so that their
+    /// divisions take the 64-by-32-bit path (exact for `norm == 0`, relative error below
+    /// 2^-31 otherwise: far under one unit of any gradient that fits `i32`).
+    area_n: i64,
+    norm: u32,
     /// Offset of the reference pixel centre from vertex 0, 1/256 pixel.
     ref_dx: i64,
     ref_dy: i64,
@@ -71,16 +76,20 @@ impl PlaneSetup {
             (v[0].1 >> ATTR_SUBPIXEL_BITS).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0));
         let one = 1i64 << ATTR_SUBPIXEL_BITS;
         let half = one / 2;
+        let norm = (64 - area2.unsigned_abs().leading_zeros()).saturating_sub(31);
+        let area_n = area2 >> norm;
         Some(PlaneSetup {
             dx1,
             dy1,
             dx2,
             dy2,
             area2,
+            area_n,
+            norm,
             ref_dx: i64::from(px_ref) * one + half - x0,
             ref_dy: i64::from(py_ref) * one + half - y0,
             #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-            small: SmallDivisor::new(area2.unsigned_abs()),
+            small: SmallDivisor::new(area_n.unsigned_abs()),
             px_ref,
             py_ref,
         })
@@ -92,7 +101,7 @@ impl PlaneSetup {
         self.area2
     }
 
-    /// `n / area2` rounded to nearest, ties away from zero (as [`div_round`]), through the
+    /// `n / area_n` rounded to nearest, ties away from zero (as [`div_round`]), through the
     /// reciprocal when the area is small.
     #[inline]
     fn div_round(&self, n: i64) -> i64 {
@@ -101,12 +110,12 @@ impl PlaneSetup {
         #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
         let small = self.small;
         let Some(s) = small else {
-            return div_round(n, self.area2);
+            return div_round(n, self.area_n);
         };
-        let (n, d) = if self.area2 < 0 {
-            (n.wrapping_neg(), -self.area2)
+        let (n, d) = if self.area_n < 0 {
+            (n.wrapping_neg(), -self.area_n)
         } else {
-            (n, self.area2)
+            (n, self.area_n)
         };
         let half = d / 2;
         if n >= 0 {
@@ -117,17 +126,22 @@ impl PlaneSetup {
     }
 
     /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
-    /// EXTRA`: one division when `n 2^SHIFT` fits `i64` (small attribute differences or
-    /// small triangles: the common case), else a long division in steps that keep every
-    /// partial remainder below `2^62` (`|area2| < 2^(2 ATTR_SUBPIXEL_BITS + 27)`), exact
-    /// modulo 2^64 either way.
+    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`: one division by a divisor below 2^32 when
+    /// the shifted numerator fits `i64` (the common case), else a long division; for huge
+    /// triangles (`norm > SHIFT`) the numerator is shifted right instead. Wraps modulo 2^64
+    /// where the result does not fit.
     #[inline]
     fn gradient(&self, n: i64) -> i64 {
         const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
-        if n.unsigned_abs() < 1 << (62 - SHIFT) {
-            return self.div_round(n << SHIFT);
+        if self.norm > SHIFT {
+            let k = (self.norm - SHIFT).min(62);
+            return self.div_round((n >> k) + ((n >> (k - 1)) & 1));
         }
-        long_div_round(n, self.area2, SHIFT)
+        let k = SHIFT - self.norm;
+        if n.unsigned_abs() < 1 << (62 - k) {
+            return self.div_round(n << k);
+        }
+        long_div_round(n, self.area_n, k)
     }
 
     /// The plane through the attribute values `a` at the three vertices.
@@ -156,29 +170,33 @@ impl PlaneSetup {
     }
 }
 
-/// `n 2^shift / d` rounded to nearest, ties away from zero (`d != 0`), by long division:
-/// truncated quotients of `r 2^k / d` with every partial remainder `|r| < |d|` and
-/// `|r| 2^k < 2^62`. The result wraps modulo 2^64 when it does not fit.
+/// `n 2^shift / d` rounded to nearest, ties away from zero (`d != 0`), by long division on
+/// magnitudes: truncated quotients of `r 2^k / |d|` with every partial remainder
+/// `r < |d|` and `r 2^k < 2^63`. The result wraps modulo 2^64 when it does not fit.
 fn long_div_round(n: i64, d: i64, shift: u32) -> i64 {
-    let step = 62u32
-        .saturating_sub(64 - d.unsigned_abs().leading_zeros())
-        .max(1);
-    let mut q = n / d;
-    let mut r = n - q * d;
+    use crate::math::div_u64;
+    let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
+    let step = 63u32.saturating_sub(64 - dm.leading_zeros()).max(1);
+    let mut q = div_u64(nm, dm);
+    let mut r = nm - q.wrapping_mul(dm);
     let mut left = shift;
     while left > 0 {
         let k = left.min(step);
         let t = r << k;
-        let qq = t / d;
-        r = t - qq * d;
+        let qq = div_u64(t, dm);
+        r = t - qq * dm;
         q = q.wrapping_shl(k).wrapping_add(qq);
         left -= k;
     }
-    // `r` has the sign of `n`; round half away from zero.
-    if 2 * r.unsigned_abs() >= d.unsigned_abs() {
-        q = q.wrapping_add(if (n < 0) == (d < 0) { 1 } else { -1 });
+    if 2 * r >= dm {
+        q = q.wrapping_add(1);
     }
-    q
+    let q = q as i64;
+    if (n < 0) == (d < 0) {
+        q
+    } else {
+        q.wrapping_neg()
+    }
 }
 
 /// `n / d` rounded to nearest (ties away from zero), `d != 0`.
