@@ -157,14 +157,6 @@ fn depth(z: i32, w: i64) -> i32 {
     (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14) as i32
 }
 
-/// `floor(n / d + 1/2)`: `n / d` rounded to nearest, ties upward; `d > 0`. Exact, through
-/// the 32-bit paths of [`crate::math::div`] when the operands are small (the common case:
-/// about 3x fewer instructions on Cortex-M than a 64-bit division).
-#[inline]
-fn round_half_up(n: i64, d: i64) -> i64 {
-    div_floor_i64(2 * n + d, 2 * d)
-}
-
 /// `n / d` rounded to nearest, ties away from zero; `d > 0`.
 #[inline]
 pub(crate) fn div_round(n: i64, d: i64) -> i64 {
