@@ -202,9 +202,93 @@ fn mul_hi_split(a: u32, b: u32) -> u32 {
     ah * bh + (mid1 >> 16) + (mid2 >> 16) + (carry >> 16)
 }
 
+/// Exact division of many 64-bit numerators by one divisor below 2^32 (a triangle's doubled
+/// area, normalized, in the plane set-up): a 64-bit reciprocal computed once, so each
+/// division is the high half of a 64 x 64-bit product and at most two corrections, instead
+/// of a 64-by-32-bit long division (two or three 32-bit divisions, which Cortex-M0+ does in
+/// software).
+#[derive(Clone, Copy, Debug)]
+pub struct Divisor32 {
+    d: u64,
+    /// `floor((2^64 - 1) / d)`.
+    m: u64,
+}
+
+impl Divisor32 {
+    /// `None` unless `0 < d < 2^32`.
+    #[inline]
+    pub fn new(d: u64) -> Option<Self> {
+        if d == 0 || d >> 32 != 0 {
+            return None;
+        }
+        // floor((2^64 - 1) / d) in two digits: a 32-bit division, then one whose quotient
+        // fits 32 bits (the 64-by-32 path of `div_u64`), not a 64-bit library division.
+        let hi = u64::from(u32::MAX) / d;
+        let r = u64::from(u32::MAX) - hi * d;
+        let lo = div_u64((r << 32) | u64::from(u32::MAX), d);
+        Some(Divisor32 {
+            d,
+            m: (hi << 32) | lo,
+        })
+    }
+
+    /// `n / d` rounded towards zero, exactly.
+    #[inline]
+    pub fn div(&self, n: u64) -> u64 {
+        // n m / 2^64 > n / d - n / 2^64 - n / (d 2^64)... > n / d - 2: two corrections at most.
+        let mut q = mul_hi64(n, self.m);
+        let mut r = n.wrapping_sub(q.wrapping_mul(self.d));
+        while r >= self.d {
+            q += 1;
+            r -= self.d;
+        }
+        q
+    }
+}
+
+/// High 64 bits of the 128-bit product `a b`, from four 32 x 32-bit products (one `umull`
+/// each where there is one).
+#[inline(always)]
+fn mul_hi64(a: u64, b: u64) -> u64 {
+    let (ah, al) = (a >> 32, a & 0xFFFF_FFFF);
+    let (bh, bl) = (b >> 32, b & 0xFFFF_FFFF);
+    let ll = al * bl;
+    let lh = al * bh;
+    let hl = ah * bl;
+    let mid = (ll >> 32) + (lh & 0xFFFF_FFFF) + (hl & 0xFFFF_FFFF);
+    ah * bh + (lh >> 32) + (hl >> 32) + (mid >> 32)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn reciprocal_division_is_exact() {
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..200_000 {
+            let d = (next() >> (32 + next() % 32)).max(1);
+            let r = Divisor32::new(d).unwrap();
+            for n in [
+                next(),
+                next() >> (next() % 64),
+                d - 1,
+                d,
+                d * 3 + 1,
+                u64::MAX,
+            ] {
+                assert_eq!(r.div(n), n / d, "{n} / {d}");
+            }
+        }
+        assert!(Divisor32::new(0).is_none() && Divisor32::new(1 << 32).is_none());
+        assert_eq!(Divisor32::new(1).unwrap().div(u64::MAX), u64::MAX);
+    }
 
     #[test]
     fn the_two_digit_path_equals_the_plain_division() {

@@ -24,7 +24,7 @@
 //!   across the viewport.
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
-use crate::math::SmallDivisor;
+use crate::math::Divisor32;
 
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
@@ -45,11 +45,8 @@ pub struct PlaneSetup {
     /// Offset of the reference pixel centre from vertex 0, 1/256 pixel.
     ref_dx: i64,
     ref_dy: i64,
-    /// `|area2|` as a reciprocal when below 2^16 (small triangles), on cores without a
-    /// divide instruction only: with one, 32-bit divisions are cheaper than the multiply
-    /// and correction (measured on Cortex-M4F).
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    small: Option<SmallDivisor>,
+    /// `|area_n|` as a reciprocal: every gradient divides by it.
+    recip: Divisor32,
     /// Reference pixel.
     pub px_ref: i32,
     /// Reference row.
@@ -88,8 +85,7 @@ impl PlaneSetup {
             norm,
             ref_dx: i64::from(px_ref) * one + half - x0,
             ref_dy: i64::from(py_ref) * one + half - y0,
-            #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-            small: SmallDivisor::new(area_n.unsigned_abs()),
+            recip: Divisor32::new(area_n.unsigned_abs())?,
             px_ref,
             py_ref,
         })
@@ -105,23 +101,12 @@ impl PlaneSetup {
     /// reciprocal when the area is small.
     #[inline]
     fn div_round(&self, n: i64) -> i64 {
-        #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-        let small: Option<SmallDivisor> = None;
-        #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-        let small = self.small;
-        let Some(s) = small else {
-            return div_round(n, self.area_n);
-        };
-        let (n, d) = if self.area_n < 0 {
-            (n.wrapping_neg(), -self.area_n)
+        let d = self.area_n.unsigned_abs();
+        let q = self.recip.div(n.unsigned_abs().wrapping_add(d / 2)) as i64;
+        if (n < 0) == (self.area_n < 0) {
+            q
         } else {
-            (n, self.area_n)
-        };
-        let half = d / 2;
-        if n >= 0 {
-            s.div(n.wrapping_add(half) as u64) as i64
-        } else {
-            (s.div(half.wrapping_sub(n) as u64) as i64).wrapping_neg()
+            q.wrapping_neg()
         }
     }
 
@@ -141,7 +126,7 @@ impl PlaneSetup {
         if n.unsigned_abs() < 1 << (62 - k) {
             return self.div_round(n << k);
         }
-        long_div_round(n, self.area_n, k)
+        long_div_round(n, self.area_n, k, |x| self.recip.div(x))
     }
 
     /// The plane through the attribute values `a` at the three vertices.
@@ -173,17 +158,16 @@ impl PlaneSetup {
 /// `n 2^shift / d` rounded to nearest, ties away from zero (`d != 0`), by long division on
 /// magnitudes: truncated quotients of `r 2^k / |d|` with every partial remainder
 /// `r < |d|` and `r 2^k < 2^63`. The result wraps modulo 2^64 when it does not fit.
-fn long_div_round(n: i64, d: i64, shift: u32) -> i64 {
-    use crate::math::div_u64;
+fn long_div_round(n: i64, d: i64, shift: u32, div_u64: impl Fn(u64) -> u64) -> i64 {
     let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
     let step = 63u32.saturating_sub(64 - dm.leading_zeros()).max(1);
-    let mut q = div_u64(nm, dm);
+    let mut q = div_u64(nm);
     let mut r = nm - q.wrapping_mul(dm);
     let mut left = shift;
     while left > 0 {
         let k = left.min(step);
         let t = r << k;
-        let qq = div_u64(t, dm);
+        let qq = div_u64(t);
         r = t - qq * dm;
         q = q.wrapping_shl(k).wrapping_add(qq);
         left -= k;
@@ -199,7 +183,6 @@ fn long_div_round(n: i64, d: i64, shift: u32) -> i64 {
     }
 }
 
-/// `n / d` rounded to nearest (ties away from zero), `d != 0`.
 /// `a * b` (wrapping), exactly. On ARMv6-M, where a 64-bit product is a library call
 /// (`__aeabi_lmul`), the common case of `a` within `i32` and `b` within `i16` is two 32-bit
 /// multiplies: with `a = ah 2^16 + al`, `a b = (ah b) 2^16 + al b`, both products in `i32`.
@@ -229,18 +212,6 @@ fn mul_split(a: i64, b: i64) -> i64 {
     } else {
         a.wrapping_mul(b)
     }
-}
-
-#[inline]
-fn div_round(n: i64, d: i64) -> i64 {
-    let (n, d) = if d < 0 {
-        (n.wrapping_neg(), -d)
-    } else {
-        (n, d)
-    };
-    // Exact; 32-bit divisions when the doubled area is below 2^16 (small triangles, where
-    // the set-up is most of a triangle's cost).
-    crate::math::div_round_i64(n, d)
 }
 
 /// An attribute's screen-space plane, in the attribute's own fixed-point format.
@@ -304,7 +275,7 @@ mod tests {
                     }
                 };
                 assert_eq!(
-                    long_div_round(n, d, shift),
+                    long_div_round(n, d, shift, |x| x / d.unsigned_abs()),
                     exact as i64,
                     "{n} << {shift} / {d} (~{wide})"
                 );
