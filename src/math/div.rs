@@ -237,7 +237,11 @@ impl Divisor32 {
     pub fn div(&self, n: u64) -> u64 {
         // n m / 2^64 > n / d - n / 2^64 - n / (d 2^64)... > n / d - 2: two corrections at most.
         let mut q = mul_hi64(n, self.m);
-        let mut r = n.wrapping_sub(q.wrapping_mul(self.d));
+        // The low 64 bits of q d (d < 2^32), in 32-bit products.
+        let d = self.d as u32;
+        let qd =
+            mul_wide(q as u32, d).wrapping_add(u64::from(((q >> 32) as u32).wrapping_mul(d)) << 32);
+        let mut r = n.wrapping_sub(qd);
         while r >= self.d {
             q += 1;
             r -= self.d;
@@ -246,22 +250,69 @@ impl Divisor32 {
     }
 }
 
-/// High 64 bits of the 128-bit product `a b`, from four 32 x 32-bit products (one `umull`
-/// each where there is one).
+/// High 64 bits of the 128-bit product `a b`, from four 32 x 32-bit products.
 #[inline(always)]
 fn mul_hi64(a: u64, b: u64) -> u64 {
-    let (ah, al) = (a >> 32, a & 0xFFFF_FFFF);
-    let (bh, bl) = (b >> 32, b & 0xFFFF_FFFF);
-    let ll = al * bl;
-    let lh = al * bh;
-    let hl = ah * bl;
+    let (ah, al) = ((a >> 32) as u32, a as u32);
+    let (bh, bl) = ((b >> 32) as u32, b as u32);
+    let ll = mul_wide(al, bl);
+    let lh = mul_wide(al, bh);
+    let hl = mul_wide(ah, bl);
     let mid = (ll >> 32) + (lh & 0xFFFF_FFFF) + (hl & 0xFFFF_FFFF);
-    ah * bh + (lh >> 32) + (hl >> 32) + (mid >> 32)
+    mul_wide(ah, bh) + (lh >> 32) + (hl >> 32) + (mid >> 32)
+}
+
+/// The full 64-bit product of two `u32`: one `umull` where there is one; on ARMv6-M, which
+/// has only a 32-bit `muls`, four 16 x 16-bit products (the library's `__aeabi_lmul` is
+/// about 25 instructions and a call).
+#[inline(always)]
+pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        mul_wide_split(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        u64::from(a) * u64::from(b)
+    }
+}
+
+/// The 16-bit-multiply form of [`mul_wide`] (compiled everywhere so every target tests it).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline(always)]
+pub(crate) fn mul_wide_split(a: u32, b: u32) -> u64 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let (ll, hh) = (al * bl, ah * bh);
+    let (mid1, mid2) = (ah * bl, al * bh);
+    // mid1 + mid2 may carry into bit 32.
+    let (mid, carry) = mid1.overflowing_add(mid2);
+    let lo = u64::from(ll) + (u64::from(mid) << 16);
+    lo + (u64::from(hh) << 32) + (u64::from(carry) << 48)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn split_wide_multiply_is_exact() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let (a, b) = ((x >> 32) as u32, x as u32);
+            assert_eq!(mul_wide_split(a, b), u64::from(a) * u64::from(b));
+        }
+        assert_eq!(
+            mul_wide_split(u32::MAX, u32::MAX),
+            u64::from(u32::MAX) * u64::from(u32::MAX)
+        );
+    }
 
     #[test]
     fn reciprocal_division_is_exact() {

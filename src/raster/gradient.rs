@@ -185,7 +185,8 @@ fn long_div_round(n: i64, d: i64, shift: u32, div_u64: impl Fn(u64) -> u64) -> i
 
 /// `a * b` (wrapping), exactly. On ARMv6-M, where a 64-bit product is a library call
 /// (`__aeabi_lmul`), the common case of `a` within `i32` and `b` within `i16` is two 32-bit
-/// multiplies: with `a = ah 2^16 + al`, `a b = (ah b) 2^16 + al b`, both products in `i32`.
+/// multiplies: with `a = ah 2^16 + al`, `a b = (ah b) 2^16 + al b`, both products in `i32`;
+/// both within `i32`, four 16 x 16-bit products.
 #[inline(always)]
 fn mul(a: i64, b: i64) -> i64 {
     #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
@@ -209,6 +210,15 @@ fn mul_split(a: i64, b: i64) -> i64 {
         let (a, b) = (a as i32, b as i32);
         let (ah, al) = (a >> 16, a & 0xFFFF);
         (i64::from(ah * b) << 16) + i64::from(al * b)
+    } else if a as i32 as i64 == a && b as i32 as i64 == b {
+        // Signed 32 x 32 -> 64 from the unsigned product of the magnitudes.
+        let p = crate::math::div::mul_wide_split(a.unsigned_abs() as u32, b.unsigned_abs() as u32)
+            as i64;
+        if (a < 0) != (b < 0) {
+            p.wrapping_neg()
+        } else {
+            p
+        }
     } else {
         a.wrapping_mul(b)
     }
