@@ -12,10 +12,12 @@
 //! * [`spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 
 pub mod band;
+pub mod depth_map;
 pub mod frame;
 pub mod spans;
 
 pub use band::{BandRenderer, DrawTargetFlush};
+pub use depth_map::{DepthMap, ShadowMap};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use spans::{BandRange, MeshSink};
 
