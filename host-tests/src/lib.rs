@@ -11,3 +11,4 @@ pub mod png_io;
 pub mod reference;
 pub mod scenes;
 pub mod synthetic;
+pub mod shadow_scene;

@@ -26,7 +26,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 2] = ["showcase", "scenes"];
+const RENDER_EXAMPLES: [&str; 3] = ["showcase", "scenes", "shadow"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
