@@ -1,0 +1,100 @@
+//! Report rows for shadow maps: map sizes 32, 64, 128 x the three filters, for the demo
+//! scene under the high directional light and the spot light. Per row: host ns per
+//! lit-pass pixel (best of 5), light-pass ns per map texel, the error against the f64
+//! reference with a map of the same size (fixel's own error) and against the f64 reference
+//! with a 1024 x 1024 single-tap map (the aliasing of a small map). Writes
+//! `target/report/shadow.md`.
+//!
+//! `cargo run --release -p host-tests --bin shadow_report`
+
+use std::time::Instant;
+
+use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
+use fixel::shading::shadow::{Bias, LightKind, LightSpace, Outside};
+use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter};
+use host_tests::shadow_scene::{demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, Setup};
+
+fn ref_filter<F: ShadowFilter>() -> RefShadowFilter {
+    match F::NAME {
+        "single tap" => RefShadowFilter::Single,
+        "PCF 2x2 bilinear" => RefShadowFilter::Pcf2x2,
+        _ => RefShadowFilter::Pcf3x3,
+    }
+}
+
+fn row<K: LightKind, F: ShadowFilter, const M: usize>(
+    space: &LightSpace<K>,
+    size: u32,
+    truth: &host_tests::reference::shadow::RefShadowImage,
+) -> String {
+    let m = demo_meshes();
+    let cam = scene::camera();
+    let s = Setup::new::<F>(size);
+    // Timing: the whole render (both passes), best of 5, per lit pixel.
+    let mut best = f64::MAX;
+    let mut fx = fixel_shadow::<K, F, M>(&m, &cam, space, &s);
+    for _ in 0..5 {
+        let t = Instant::now();
+        fx = fixel_shadow::<K, F, M>(&m, &cam, space, &s);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    let sc = ref_scene(&m, &cam, space.matrix(), s.w, s.h);
+    let map = light_map(&sc, size, false);
+    let r = lit_pass(&sc, &map, ref_filter::<F>(), &ref_bias(&s.bias), 1.0);
+    let own = lit_error(&fx.lit, &fx.covered, &r.lit, &r.covered);
+    let alias = lit_error(&fx.lit, &fx.covered, &truth.lit, &truth.covered);
+    format!(
+        "| {} | {size} | {} | {:.1} | {:.4} | {} | {:.4} | {} ({:.2} %) |",
+        K::NAME,
+        F::NAME,
+        best * 1e9 / f64::from(fx.pixels),
+        own.mean,
+        own.wrong,
+        alias.mean,
+        alias.wrong,
+        100.0 * alias.wrong as f64 / alias.both.max(1) as f64
+    )
+}
+
+fn truth<K: LightKind>(space: &LightSpace<K>) -> host_tests::reference::shadow::RefShadowImage {
+    let m = demo_meshes();
+    let sc = ref_scene(&m, &scene::camera(), space.matrix(), 320, 240);
+    let map = light_map(&sc, 1024, false);
+    let b = Bias {
+        constant: 16,
+        slope: 192,
+        max: 8192 * 16,
+    };
+    let _ = Outside::Lit;
+    lit_pass(&sc, &map, RefShadowFilter::Single, &ref_bias(&b), 1.0)
+}
+
+fn main() {
+    let high = scene::directional(SceneLight::High).unwrap();
+    let spot = scene::spot().unwrap();
+    let (th, ts) = (truth(&high), truth(&spot));
+    let mut out = String::from(
+        "| light | map | filter | host ns/px (both passes) | mean \\|Δlit\\| vs f64, same map | wrong-side px vs f64, same map | mean \\|Δlit\\| vs f64 1024² | wrong-side px vs f64 1024² |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    for size in [32, 64, 128] {
+        out += &row::<_, SingleTap, 3>(&high, size, &th);
+        out += "\n";
+        out += &row::<_, Pcf2x2, 3>(&high, size, &th);
+        out += "\n";
+        out += &row::<_, Pcf3x3, 3>(&high, size, &th);
+        out += "\n";
+    }
+    for size in [32, 64, 128] {
+        out += &row::<_, SingleTap, 4>(&spot, size, &ts);
+        out += "\n";
+        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts);
+        out += "\n";
+        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts);
+        out += "\n";
+    }
+    print!("{out}");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/report");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("shadow.md"), &out).unwrap();
+}
