@@ -97,14 +97,31 @@ fn main() {
     let grazing = scene::directional(SceneLight::Grazing).unwrap();
     let spot = scene::spot().unwrap();
     let panels = [
-        ("high-pcf2x2", panel::<_, Pcf2x2, 6>(&high, SceneLight::High, &tex, &floor)),
-        ("grazing-pcf3x3", panel::<_, Pcf3x3, 6>(&grazing, SceneLight::Grazing, &tex, &floor)),
-        ("spot-pcf2x2", panel::<_, Pcf2x2, 7>(&spot, SceneLight::Spot, &tex, &floor)),
-        ("high-single", panel::<_, SingleTap, 6>(&high, SceneLight::High, &tex, &floor)),
+        (
+            "high-pcf2x2",
+            panel::<_, Pcf2x2, 6>(&high, SceneLight::High, &tex, &floor),
+        ),
+        (
+            "grazing-pcf3x3",
+            panel::<_, Pcf3x3, 6>(&grazing, SceneLight::Grazing, &tex, &floor),
+        ),
+        (
+            "spot-pcf2x2",
+            panel::<_, Pcf2x2, 7>(&spot, SceneLight::Spot, &tex, &floor),
+        ),
+        (
+            "high-single",
+            panel::<_, SingleTap, 6>(&high, SceneLight::High, &tex, &floor),
+        ),
     ];
     let mut sheet = vec![Rgb565::default(); (4 * W * H) as usize];
     for (k, (name, px)) in panels.iter().enumerate() {
-        common::write_png(&common::out_dir().join(format!("shadow-{name}.png")), W, H, px);
+        common::write_png(
+            &common::out_dir().join(format!("shadow-{name}.png")),
+            W,
+            H,
+            px,
+        );
         let (ox, oy) = ((k as u32 % 2) * W, (k as u32 / 2) * H);
         for y in 0..H {
             for x in 0..W {

@@ -53,7 +53,13 @@ pub fn m4(m: &Mat4) -> M4 {
 }
 
 /// The reference's view of a scene.
-pub fn ref_scene(meshes: &[SceneMesh], camera: &Camera, light: &Mat4, w: u32, h: u32) -> ShadowScene {
+pub fn ref_scene(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    light: &Mat4,
+    w: u32,
+    h: u32,
+) -> ShadowScene {
     let mut tris = Vec::new();
     for m in meshes {
         let model = m4(&m.model);
@@ -170,7 +176,8 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
         let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
         let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
         shadowed_mesh_triangles(&mesh, &m.model, camera, None, space, |cv, lv| {
-            let tri = [0, 1, 2].map(|k| with_light::<0, M>(&Vertex::new(cv[k].position, []), lv[k]));
+            let tri =
+                [0, 1, 2].map(|k| with_light::<0, M>(&Vertex::new(cv[k].position, []), lv[k]));
             pixels += draw.clip_triangles(&[tri], &mut frame);
         });
     }

@@ -59,7 +59,10 @@ fn run<K: LightKind, F: ShadowFilter, const M: usize>(
 
 /// Shadowed pixels (lit fraction < 1/2) of an image.
 fn shadowed(lit: &[f64], cov: &[bool]) -> usize {
-    lit.iter().zip(cov).filter(|(l, c)| **c && **l < 0.5).count()
+    lit.iter()
+        .zip(cov)
+        .filter(|(l, c)| **c && **l < 0.5)
+        .count()
 }
 
 // Budgets (measured, 320 x 240, demo scene, 47.6 k covered pixels): see each test.
@@ -74,7 +77,10 @@ fn directional_matches_reference_for_each_filter() {
     // The scene has a shadow, and fixel and the reference agree it is there.
     let (sf, sr) = (shadowed(&fx.lit, &fx.covered), shadowed(&r.lit, &r.covered));
     assert!(sr > 3000, "the reference casts too little shadow: {sr}");
-    assert!(sf.abs_diff(sr) < sr / 50, "shadowed pixels: fixel {sf}, reference {sr}");
+    assert!(
+        sf.abs_diff(sr) < sr / 50,
+        "shadowed pixels: fixel {sf}, reference {sr}"
+    );
     for e in [e1, e2, e3] {
         assert_eq!(e.coverage_diff, 0, "{e}");
         assert!(e.mean < 0.01, "{e}");
@@ -147,7 +153,11 @@ fn acne_at_a_grazing_angle_is_removed_by_the_bias() {
 fn peter_panning_gap_against_the_bias() {
     let high = scene::directional(SceneLight::High).unwrap();
     let mut m = demo_meshes();
-    m[0].model = Mat4::translation(Vec3::new(Fx::ZERO, scene::FLOOR_Y + Fx::ONE, Fx::from_num(-4)));
+    m[0].model = Mat4::translation(Vec3::new(
+        Fx::ZERO,
+        scene::FLOOR_Y + Fx::ONE,
+        Fx::from_num(-4),
+    ));
     let truth_setup = Setup {
         bias: Bias {
             constant: 16,
@@ -163,20 +173,30 @@ fn peter_panning_gap_against_the_bias() {
         s.bias.slope = slope;
         let fx = fixel_shadow::<Directional, SingleTap, 3>(&m, &scene::camera(), &high, &s);
         let leak = (0..fx.lit.len())
-            .filter(|&i| fx.covered[i] && truth.covered[i] && truth.lit[i] < 0.5 && fx.lit[i] >= 0.5)
+            .filter(|&i| {
+                fx.covered[i] && truth.covered[i] && truth.lit[i] < 0.5 && fx.lit[i] >= 0.5
+            })
             .count();
-        println!("peter-panning: slope factor {:.2}: {leak} leaking pixels", f64::from(slope) / 256.0);
+        println!(
+            "peter-panning: slope factor {:.2}: {leak} leaking pixels",
+            f64::from(slope) / 256.0
+        );
         leaks.push(leak);
     }
     assert!(leaks.windows(2).all(|w| w[0] <= w[1] + 5), "{leaks:?}");
     assert!(leaks[4] > leaks[0], "{leaks:?}");
-    assert!(leaks[1] < 600, "default-size bias leaks too much: {leaks:?}");
+    assert!(
+        leaks[1] < 600,
+        "default-size bias leaks too much: {leaks:?}"
+    );
 }
 
 /// A light box of half-side 2 around the cube: most of the floor is outside it.
 #[test]
 fn objects_partly_outside_the_light_frustum() {
-    let dir = Vec3::new(Fx::from_num(-0.5), Fx::ONE, Fx::from_num(0.4)).normalize().unwrap();
+    let dir = Vec3::new(Fx::from_num(-0.5), Fx::ONE, Fx::from_num(0.4))
+        .normalize()
+        .unwrap();
     let c = Vec3::new(Fx::ZERO, Fx::from_num(-1), Fx::from_num(-4));
     let small = LightSpace::directional(
         c + dir.scale(Fx::from_num(6)),
@@ -195,10 +215,16 @@ fn objects_partly_outside_the_light_frustum() {
             ..Setup::new::<Pcf2x2>(32)
         };
         let (e, fx, _) = run::<_, Pcf2x2, 3>("small box", &m, &small, &s);
-        assert!(e.mean < 0.01 && (e.wrong as f64) < 0.005 * e.both as f64, "{e}");
+        assert!(
+            e.mean < 0.01 && (e.wrong as f64) < 0.005 * e.both as f64,
+            "{e}"
+        );
         counts.push(shadowed(&fx.lit, &fx.covered));
     }
-    assert!(counts[1] > counts[0] + 10_000, "outside policy has no effect: {counts:?}");
+    assert!(
+        counts[1] > counts[0] + 10_000,
+        "outside policy has no effect: {counts:?}"
+    );
 }
 
 /// A spot light whose near plane (at 1.5) cuts through the cube: the cut-off part casts
@@ -218,7 +244,10 @@ fn spot_light_near_plane() {
     let (e, fx, r) = run::<_, Pcf2x2, 4>("near plane", &m, &close, &Setup::new::<Pcf2x2>(64));
     assert!(fx.texels_written > 0);
     assert!(shadowed(&r.lit, &r.covered) > 500);
-    assert!(e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64, "{e}");
+    assert!(
+        e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64,
+        "{e}"
+    );
 }
 
 #[test]
@@ -226,9 +255,15 @@ fn map_of_16x16() {
     let high = scene::directional(SceneLight::High).unwrap();
     let m = demo_meshes();
     let (e, ..) = run::<_, Pcf2x2, 3>("tiny", &m, &high, &Setup::new::<Pcf2x2>(16));
-    assert!(e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64, "{e}");
+    assert!(
+        e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64,
+        "{e}"
+    );
     let (e, ..) = run::<_, SingleTap, 3>("tiny", &m, &high, &Setup::new::<SingleTap>(16));
-    assert!(e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64, "{e}");
+    assert!(
+        e.mean < 0.015 && (e.wrong as f64) < 0.01 * e.both as f64,
+        "{e}"
+    );
 }
 
 /// A light box whose near and far planes touch the scene: stored depths span the whole
@@ -249,12 +284,15 @@ fn depth_range_uses_all_16_bits() {
     )
     .unwrap();
     let m = demo_meshes();
-    let (e, fx, _) = run::<_, SingleTap, 3>("16-bit range", &m, &tight, &Setup::new::<SingleTap>(64));
+    let (e, fx, _) =
+        run::<_, SingleTap, 3>("16-bit range", &m, &tight, &Setup::new::<SingleTap>(64));
     let drawn: Vec<u16> = fx.map.iter().copied().filter(|&d| d != u16::MAX).collect();
     let (lo, hi) = (*drawn.iter().min().unwrap(), *drawn.iter().max().unwrap());
     println!("16-bit range: stored depths {lo}..={hi}");
     // The sharp top corner of the cube is at 660 but no texel centre falls on it.
     assert!(lo < 2000 && hi > 65_000, "{lo}..{hi}");
-    assert!(e.mean < 0.01 && (e.wrong as f64) < 0.005 * e.both as f64, "{e}");
+    assert!(
+        e.mean < 0.01 && (e.wrong as f64) < 0.005 * e.both as f64,
+        "{e}"
+    );
 }
-

@@ -6,17 +6,17 @@
 //! lowest corner at `y = -1.3717`; the floor is the quad `y = -1.375`, `x` in `[-4, 4]`,
 //! `z` in `[-9, 0]`, its texture repeating every 2 units.
 
+use crate::color::TargetColor;
 use crate::geometry::Vertex;
 use crate::math::{Angle, Fx, Mat4, Vec3};
-use crate::pipeline::{DepthOnlyDraw, ProjectionStage, ShadedDraw, DepthLess};
+use crate::pipeline::{DepthLess, DepthOnlyDraw, ProjectionStage, ShadedDraw};
 use crate::scene::{light_pass_mesh, shadowed_mesh_triangles, Camera, DirectionalLight};
 use crate::shading::builtin::Classic;
-use crate::shading::shadow::{with_light, LightKind, LightSpace, Shadowed, Directional, Spot};
 use crate::shading::pcf::ShadowFilter;
+use crate::shading::shadow::{with_light, Directional, LightKind, LightSpace, Shadowed, Spot};
 use crate::shading::{ModulateIntensity, Shader};
 use crate::surface::{DepthMap, RenderTarget};
 use crate::texture::{TexSampler, WrapMode};
-use crate::color::TargetColor;
 use crate::Error;
 
 use super::MeshData;
@@ -79,8 +79,14 @@ fn centre() -> Vec3 {
 /// an orthographic box of half-side 6.5 around the scene, depth 1..19 from an eye 10 units
 /// from the centre.
 pub fn directional(l: SceneLight) -> Result<LightSpace<Directional>, Error> {
-    let l = if l == SceneLight::Spot { SceneLight::High } else { l };
-    let dir = towards(l).normalize().ok_or(Error::BadProjection("light"))?;
+    let l = if l == SceneLight::Spot {
+        SceneLight::High
+    } else {
+        l
+    };
+    let dir = towards(l)
+        .normalize()
+        .ok_or(Error::BadProjection("light"))?;
     let eye = centre() + dir.scale(Fx::from_num(10));
     LightSpace::directional(
         eye,
@@ -127,7 +133,11 @@ pub fn floor_texture(out: &mut [embedded_graphics_core::pixelcolor::Rgb565]) -> 
         let (x, y) = (i % 64, i / 64);
         let light = (x / 16 + y / 16) % 2 == 0;
         let grain = ((x + 2 * y) % 7) as u8;
-        let (r, g, b) = if light { (222, 212, 190) } else { (160, 150, 134) };
+        let (r, g, b) = if light {
+            (222, 212, 190)
+        } else {
+            (160, 150, 134)
+        };
         *px = embedded_graphics_core::pixelcolor::Rgb565::from(RawU16::new(
             crate::color::rgb888_to_565(r - grain, g - grain, b - grain),
         ));

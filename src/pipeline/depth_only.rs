@@ -91,7 +91,11 @@ impl DepthOnlyDraw {
         map: &mut DepthMap<'_>,
     ) -> u32 {
         let rect = self.viewport.rect();
-        let xy = [(tri[0].x, tri[0].y), (tri[1].x, tri[1].y), (tri[2].x, tri[2].y)];
+        let xy = [
+            (tri[0].x, tri[0].y),
+            (tri[1].x, tri[1].y),
+            (tri[2].x, tri[2].y),
+        ];
         let Some(ps) = PlaneSetup::new(xy, rect) else {
             return 0;
         };

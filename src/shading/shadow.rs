@@ -193,16 +193,22 @@ impl LightSpace<Directional> {
         far: Fx,
     ) -> Result<Self, Error> {
         if half <= Fx::ZERO {
-            return Err(Error::BadProjection("directional light: half-side must be > 0"));
+            return Err(Error::BadProjection(
+                "directional light: half-side must be > 0",
+            ));
         }
         if far <= near {
-            return Err(Error::BadProjection("directional light: far must be > near"));
+            return Err(Error::BadProjection(
+                "directional light: far must be > near",
+            ));
         }
         let (o, i) = (Fx::ZERO, Fx::ONE);
         let depth = far - near;
-        let k = Fx::from_num(2).checked_div(depth).ok_or(Error::BadProjection(
-            "directional light: depth range too small",
-        ))?;
+        let k = Fx::from_num(2)
+            .checked_div(depth)
+            .ok_or(Error::BadProjection(
+                "directional light: depth range too small",
+            ))?;
         let inv = i.checked_div(half).ok_or(Error::BadProjection(
             "directional light: half-side too small",
         ))?;
@@ -432,9 +438,7 @@ fn light_part<const M: usize>(v: &[i32; M], n: usize) -> [i32; 4] {
     core::array::from_fn(|k| v.get(n + k).copied().unwrap_or(0))
 }
 
-impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader
-    for Shadowed<'_, S, K, F, M>
-{
+impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadowed<'_, S, K, F, M> {
     type Varyings = [i32; M];
     /// The inner shader's, the bias (Q16.4), and the light varyings of vertex 0 (the
     /// interpolated ones are rebased on them).
@@ -505,7 +509,10 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader
         })?;
         let d = light_part(&f.varyings, n);
         let base = f.triangle.2;
-        let lit = self.lit(core::array::from_fn(|k| d[k].wrapping_add(base[k])), f.triangle.1);
+        let lit = self.lit(
+            core::array::from_fn(|k| d[k].wrapping_add(base[k])),
+            f.triangle.1,
+        );
         Some(if lit >= 256 {
             c
         } else {

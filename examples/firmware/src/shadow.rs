@@ -14,7 +14,7 @@ use fixel::scene::shadowed_mesh_triangles;
 use fixel::shading::builtin::Classic;
 use fixel::shading::pcf::ShadowFilter;
 use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Shadowed};
-use fixel::shading::ModulateIntensity;
+use fixel::shading::{ModulateIntensity, Shader};
 use fixel::surface::band::BandStats;
 use fixel::surface::DepthMap;
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
@@ -29,9 +29,6 @@ pub const MAP_TEXELS: usize = (MAP * MAP) as usize;
 pub const ROWS: u32 = 4;
 /// Binned screen triangles (the scene has 8 to 10 after culling and clipping).
 pub const BINS: usize = 16;
-
-
-
 
 /// Everything the shadowed frame needs in RAM: map 8 KiB, band 5 KiB (the bins, 2 KiB, are on the stack).
 pub struct ShadowBuffers {
@@ -93,7 +90,63 @@ pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
         ShadedDraw::<_, Exact, DepthLess>::new(shader(&ct)?, vp, Cull::Back)?,
         ShadedDraw::<_, Exact, DepthLess>::new(shader(&ft)?, vp, Cull::Back)?,
     ];
-    // Geometry once: screen triangles binned with their draw.
+    banded(
+        &mut buf.color,
+        &mut buf.depth,
+        &draws,
+        space,
+        light,
+        pause,
+        resume,
+    )
+}
+
+/// The same frame without shadows (the inner shader alone, same geometry, light-space
+/// varyings computed per vertex and dropped): the baseline of the lit pass's cost.
+pub fn unshadowed_pass<K: LightKind>(
+    buf: &mut ShadowBuffers,
+    space: &LightSpace<K>,
+    light: SceneLight,
+    cube_tex: Texture<'_>,
+    floor_tex: Texture<'_>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
+    let shader = |t| -> Result<ModulateIntensity<'_, Bilinear, Repeat, Repeat>, Error> {
+        Ok(ModulateIntensity {
+            tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
+        })
+    };
+    let vp = Viewport::new(0, 0, W, H)?;
+    let draws = [
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ct)?, vp, Cull::Back)?,
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ft)?, vp, Cull::Back)?,
+    ];
+    banded(
+        &mut buf.color,
+        &mut buf.depth,
+        &draws,
+        space,
+        light,
+        pause,
+        resume,
+    )
+}
+
+/// The scene's geometry once (screen triangles binned with their draw: `draws[0]` the
+/// cube, `draws[1]` the floor; vertices `u, v, intensity` then the first `M - 3` light
+/// varyings), then each band of `ROWS` rows drawn from the bins and hashed.
+#[allow(clippy::too_many_arguments)]
+fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    draws: &[ShadedDraw<S, Exact, DepthLess>; 2],
+    space: &LightSpace<K>,
+    light: SceneLight,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
     let mut bins = [(0u8, ScreenTriangle::<M>::default()); BINS];
     let mut n = 0usize;
     let mut overflow = false;
@@ -107,7 +160,8 @@ pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
         shadowed_mesh_triangles(&mesh, &m, &cam, Some(&gl), space, |cv, lv| {
             let tri = [0, 1, 2].map(|k| {
                 let v = cv[k].to_vertex();
-                let inner = ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(&v.varyings);
+                let inner =
+                    ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(&v.varyings);
                 with_light::<3, M>(&fixel::geometry::Vertex::new(v.position, inner), lv[k])
             });
             draw.project(&tri, &mut |s| match bins.get_mut(n) {
@@ -120,9 +174,10 @@ pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
         });
     }
     if overflow {
-        return Err(Error::BadMode("shadow scene: more screen triangles than bins"));
+        return Err(Error::BadMode(
+            "shadow scene: more screen triangles than bins",
+        ));
     }
-
     let mut sum = Fnv1a::default();
     let mut stats = BandStats {
         triangles: n as u32,
@@ -130,8 +185,8 @@ pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
     };
     let mut y0 = 0;
     while y0 < H {
-        let mut frame = Frame::new(&mut buf.color, W, ROWS)?
-            .with_depth(&mut buf.depth)?
+        let mut frame = Frame::new(&mut *color, W, ROWS)?
+            .with_depth(&mut *depth)?
             .at_row(y0);
         frame.clear(Rgb565::new(4, 10, 14));
         let (r0, r1) = (y0 as i32, (y0 + ROWS) as i32);

@@ -135,7 +135,11 @@ pub fn project(c: [f64; 4], size: u32) -> Option<(f64, f64, f64)> {
     if w <= 0.0 {
         return None;
     }
-    let (s, t, d) = ((x / w + 1.0) / 2.0, (1.0 - y / w) / 2.0, 65535.0 * (z / w + 1.0) / 2.0);
+    let (s, t, d) = (
+        (x / w + 1.0) / 2.0,
+        (1.0 - y / w) / 2.0,
+        65535.0 * (z / w + 1.0) / 2.0,
+    );
     let inside = (0.0..1.0).contains(&s) && (0.0..1.0).contains(&t) && (0.0..=65535.0).contains(&d);
     inside.then(|| (s * f64::from(size), t * f64::from(size), d))
 }
@@ -212,9 +216,7 @@ pub fn lit_pass(
     for t in &scene.tris {
         let lc = t.map(|p| transform(&scene.light, p));
         let tb = triangle_bias(&lc, map.size, bias);
-        let tri = RefTriangle(
-            [0, 1, 2].map(|k| ref_vertex(transform(&scene.camera, t[k]), lc[k])),
-        );
+        let tri = RefTriangle([0, 1, 2].map(|k| ref_vertex(transform(&scene.camera, t[k]), lc[k])));
         for sub in fan(&clip_triangle(&tri)) {
             let win = sub.0.map(|v| to_window(&v, w, h));
             let [Some(a), Some(b), Some(c)] = win else {

@@ -21,10 +21,18 @@ fn run() -> bool {
     bench_start();
     let r = shadow::light_pass(&space, core::hint::black_box(&mut buf.map));
     bench_end();
-    let sum = buf.map.iter().fold(0u32, |h, &t| (h ^ u32::from(t)).wrapping_mul(16_777_619));
+    let sum = buf
+        .map
+        .iter()
+        .fold(0u32, |h, &t| (h ^ u32::from(t)).wrapping_mul(16_777_619));
     match r {
         Ok(w) => {
-            outln!("scene=shadow_light checksum=0x{:08x} pixels={} written={}", sum, MAP_TEXELS, w);
+            outln!(
+                "scene=shadow_light checksum=0x{:08x} pixels={} written={}",
+                sum,
+                MAP_TEXELS,
+                w
+            );
             true
         }
         Err(e) => {
