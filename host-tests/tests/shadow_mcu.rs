@@ -30,12 +30,13 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 }
 
 /// Checksums printed by the firmware (identical on Cortex-M4F and Cortex-M0+).
-const FIRMWARE: [(&str, u32); 5] = [
+const FIRMWARE: [(&str, u32); 6] = [
     ("shadow_light", 0x1a2e65c4),
+    ("shadow_none", 0xb7a0b7db),
     ("shadow_single", 0x47d4b990),
     ("shadow_pcf2x2", 0x69ebdb36),
     ("shadow_pcf3x3", 0xd58ce577),
-    ("shadow_spot", 0x103ad0c0),
+    ("shadow_spot", 0xa66b6a32),
 ];
 
 /// The banded firmware frame and the same frame drawn whole: (banded, whole) checksums and
@@ -86,8 +87,24 @@ fn firmware_checksums_and_bands_equal_whole_frame() {
     let sum = map
         .iter()
         .fold(0u32, |h, &t| (h ^ u32::from(t)).wrapping_mul(16_777_619));
-    let mut got = vec![("shadow_light", sum)];
-    let mut pixels = vec![shadow::MAP_TEXELS as u32];
+    let (t128, t64) = (texture(128, 128), texture(64, 64));
+    let (c, f) = (
+        Texture::new(&t128, 128, 128).unwrap(),
+        Texture::new(&t64, 64, 64).unwrap(),
+    );
+    let mut buf = Box::new(ShadowBuffers::new());
+    let none = shadow::unshadowed_pass(
+        &mut buf,
+        &high,
+        SceneLight::High,
+        c,
+        f,
+        &mut || (),
+        &mut || (),
+    )
+    .unwrap();
+    let mut got = vec![("shadow_light", sum), ("shadow_none", none.checksum)];
+    let mut pixels = vec![shadow::MAP_TEXELS as u32, none.stats.pixels];
     for (name, (banded, whole, px)) in [
         (
             "shadow_single",

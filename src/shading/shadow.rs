@@ -20,7 +20,8 @@
 //!
 //! All are linear in the world position, so the lit pass's perspective-correct
 //! interpolation gives them exactly at each pixel; the spot light divides per pixel
-//! (`s = a / w`, with the division-free [`reciprocal_u32`]) into the directional formats.
+//! (`s = a / w`, with the span loop's table reciprocal
+//! [`recip_q30`](crate::pipeline::recip::recip_q30)) into the directional formats.
 //! Values saturate at `±2^30`, far outside any map.
 //!
 //! # The compare
@@ -42,7 +43,8 @@
 use super::pcf::ShadowFilter;
 use super::{Fragment, Shader, Varyings};
 use crate::color::modulate_scalar;
-use crate::math::{div_u64, reciprocal_u32, Angle, Fx, Mat4, Vec3};
+use crate::math::{div_u64, Angle, Fx, Mat4, Vec3};
+use crate::pipeline::recip::{mul_q16, recip_q30};
 use crate::surface::ShadowMap;
 use crate::Error;
 
@@ -135,19 +137,22 @@ impl LightKind for Spot {
     #[inline(always)]
     fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
         let [a, b, c, w] = v;
-        if w <= 0 {
+        // Inside the frustum without dividing: 0 <= a < w, 0 <= b < w, 0 <= c <= w.
+        if w <= 0 || !(0..w).contains(&a) || !(0..w).contains(&b) || !(0..=w).contains(&c) {
             return None;
         }
-        // 1/w = m / 2^e with e in 31..=63 (w >= 1 bit): a/w in Q20 is a m >> (e - 20).
-        let (m, e) = reciprocal_u32(w as u32);
-        let sh = e.saturating_sub(20).min(63);
-        let q = |n: i32| (i64::from(n) * i64::from(m)) >> sh;
-        let (s, t, r) = (q(a), q(b), q(c));
-        let one = i64::from(ST_ONE);
-        if !(0..one).contains(&s) || !(0..one).contains(&t) || !(0..=one).contains(&r) {
-            return None;
-        }
-        Some((s as i32, t as i32, depth_q4(r as i32)))
+        // Normalise w to [2^29, 2^30] (a Q30 value the span loop's table reciprocal takes):
+        // a, b, c shifted alike stay below 2^30, and n / w in Q30 is n r >> 16, one 32x32
+        // product (split on ARMv6-M), then Q20. Relative error below 2^-16: under 1/256
+        // texel on a 256 map, under one depth step.
+        let k = w.leading_zeros().saturating_sub(2);
+        let r = recip_q30(w << k);
+        let q = |n: i32| mul_q16(n << k, r) >> 10;
+        Some((
+            q(a).min(ST_ONE - 1),
+            q(b).min(ST_ONE - 1),
+            depth_q4(q(c).min(ST_ONE)),
+        ))
     }
 }
 

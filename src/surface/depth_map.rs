@@ -131,6 +131,15 @@ impl<'a> ShadowMap<'a> {
         self.texels
     }
 
+    /// The texel at `(x, y)`, both in `0..size`; [`DEPTH_CLEAR`] outside (never a panic).
+    #[inline(always)]
+    pub fn fetch(&self, x: i32, y: i32) -> u16 {
+        self.texels
+            .get(((y << self.log2) | x) as usize)
+            .copied()
+            .unwrap_or(DEPTH_CLEAR)
+    }
+
     /// The texel at `(x, y)` clamped to the map's edge (GL's `CLAMP_TO_EDGE`, as a shadow
     /// sampler uses); [`DEPTH_CLEAR`] if the slice is somehow short (never for a checked map).
     #[inline(always)]

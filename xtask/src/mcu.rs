@@ -50,13 +50,15 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 9] = [
+const SCENES: [&str; 10] = [
     "cube",
     "sphere",
     "floor",
     "floor_bilinear",
-    // Shadow maps (bands of 4 rows, 64x64 map): light pass per map texel, lit passes.
+    // Shadow maps (bands of 4 rows, 64x64 map): light pass per map texel, the lit pass's
+    // no-shadow baseline, lit passes.
     "shadow_light",
+    "shadow_none",
     "shadow_single",
     "shadow_pcf2x2",
     "shadow_pcf3x3",
