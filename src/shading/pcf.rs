@@ -72,8 +72,21 @@ impl ShadowFilter for Pcf2x2 {
         let sh = 12 - map.log2_size();
         let (u, v) = ((s >> sh) - 128, (t >> sh) - 128);
         let (x, y, fx, fy) = (u >> 8, v >> 8, (u & 255) as u32, (v & 255) as u32);
-        let top = tap(map, x, y, d) * (256 - fx) + tap(map, x + 1, y, d) * fx;
-        let bottom = tap(map, x, y + 1, d) * (256 - fx) + tap(map, x + 1, y + 1, d) * fx;
+        let inner = (1 << map.log2_size()) - 2;
+        let [b00, b10, b01, b11] = if (x as u32) <= inner && (y as u32) <= inner {
+            // All four taps inside the map: no clamps.
+            let t = |x, y| u32::from(d <= i32::from(map.fetch(x, y)) << 4);
+            [t(x, y), t(x + 1, y), t(x, y + 1), t(x + 1, y + 1)]
+        } else {
+            [
+                tap(map, x, y, d),
+                tap(map, x + 1, y, d),
+                tap(map, x, y + 1, d),
+                tap(map, x + 1, y + 1, d),
+            ]
+        };
+        let top = b00 * (256 - fx) + b10 * fx;
+        let bottom = b01 * (256 - fx) + b11 * fx;
         ((top * (256 - fy) + bottom * fy) >> 8) as u16
     }
 }
@@ -89,9 +102,19 @@ impl ShadowFilter for Pcf3x3 {
         let sh = 20 - map.log2_size();
         let (x, y) = (s >> sh, t >> sh);
         let mut n = 0usize;
-        for dy in -1..=1 {
-            for dx in -1..=1 {
-                n += tap(map, x + dx, y + dy, d) as usize;
+        let inner = (1 << map.log2_size()) - 3;
+        if ((x - 1) as u32) <= inner && ((y - 1) as u32) <= inner {
+            // All nine taps inside the map: no clamps.
+            for dy in -1..=1 {
+                for dx in -1..=1 {
+                    n += usize::from(d <= i32::from(map.fetch(x + dx, y + dy)) << 4);
+                }
+            }
+        } else {
+            for dy in -1..=1 {
+                for dx in -1..=1 {
+                    n += tap(map, x + dx, y + dy, d) as usize;
+                }
             }
         }
         NINTHS.get(n).copied().unwrap_or(256)
