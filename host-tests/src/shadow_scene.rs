@@ -188,7 +188,6 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
         .map(|&d| d != u16::MAX)
         .collect();
     let lit = color.iter().map(|c| f64::from(c.g()) / 63.0).collect();
-    drop(map);
     FixelShadow {
         lit,
         covered,
