@@ -39,6 +39,59 @@
 //! (solved from its three vertices), which is how far the receiver's depth moves between
 //! the point and a tap one texel away: a surface at a grazing angle to the light gets a
 //! large bias, one facing it a small one.
+//!
+//! # Both passes
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::pipeline::{DepthLess, DepthOnlyDraw, Exact};
+//! use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles};
+//! use fixel::shading::pcf::Pcf2x2;
+//! use fixel::shading::shadow::{with_light, Bias, Directional, LightSpace, Shadowed};
+//! use fixel::shading::Gouraud;
+//! use fixel::surface::DepthMap;
+//! use fixel::demo::{self, shadow::floor};
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//!
+//! // The benchmark cube over a floor, a light from above and to the left.
+//! let (cube, floor) = (demo::cube(), floor());
+//! let meshes = [(cube.mesh()?, demo::cube_model(0)), (floor.mesh()?, Mat4::IDENTITY)];
+//! let centre = Vec3::new(Fx::ZERO, Fx::from_num(-1), Fx::from_num(-4));
+//! let light = LightSpace::directional(centre + Vec3::from_num(-4, 8, 2), centre,
+//!     Vec3::from_num(0, 1, 0), Fx::from_num(6), Fx::ONE, Fx::from_num(20))?;
+//!
+//! // 1. The light pass: depth only, into a 32 x 32 map (2 KiB).
+//! let mut texels = [0u16; 32 * 32];
+//! let mut map = DepthMap::new(&mut texels, 32)?;
+//! map.clear();
+//! let light_draw = DepthOnlyDraw::new(&map, Cull::Back)?;
+//! for (mesh, model) in &meshes {
+//!     light_pass_mesh(&light_draw, mesh, model, &light, &mut map);
+//! }
+//!
+//! // 2. The lit pass: a Gouraud shader (r, g, b) shadowed: 3 + 3 varyings.
+//! let shader = Shadowed::<_, Directional, Pcf2x2, 6>::new(Gouraud, map.view(),
+//!                                                        Bias::for_filter::<Pcf2x2>())?;
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, 80, 60)?, Cull::Back)?;
+//! let (mut color, mut depth) = ([Rgb565::default(); 80 * 60], [0u16; 80 * 60]);
+//! let mut frame = Frame::new(&mut color, 80, 60)?.with_depth(&mut depth)?;
+//! frame.clear(Rgb565::default());
+//! let camera = demo::shadow::camera();
+//! for (mesh, model) in &meshes {
+//!     shadowed_mesh_triangles(mesh, model, &camera, None, &light, |cv, lv| {
+//!         let tri = [0, 1, 2].map(|k| {
+//!             let v = cv[k].to_vertex(); // u, v, r, g, b
+//!             let rgb = Vertex::new(v.position, [v.varyings[2], v.varyings[3], v.varyings[4]]);
+//!             with_light::<3, 6>(&rgb, lv[k])
+//!         });
+//!         draw.clip_triangles(&[tri], &mut frame);
+//!     });
+//! }
+//! // White where lit, 0.4 grey in the cube's shadow.
+//! let grey = frame.pixels().iter().filter(|c| **c == Rgb565::new(12, 25, 12)).count();
+//! assert!(grey > 100, "{grey}");
+//! # Ok::<(), fixel::Error>(())
+//! ```
 
 use super::pcf::ShadowFilter;
 use super::{Fragment, Shader, Varyings};
