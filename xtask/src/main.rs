@@ -826,6 +826,20 @@ fn report(flags: &[String]) -> ExitCode {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }
+    // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
+    let shadow = [
+        "run",
+        "--release",
+        "-q",
+        "-p",
+        "host-tests",
+        "--bin",
+        "shadow_report",
+    ];
+    if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s]].concat()).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
     if docs {
         let dst = root().join("docs").join("report");
         let copied = std::fs::create_dir_all(&dst).and_then(|()| {
