@@ -131,14 +131,16 @@ pub struct Directional;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Spot;
 
-/// Row `r` of `m` applied to `(p, 1)`, with 32 fraction bits.
+/// Row `r` of `m` applied to `(p, 1)`, with 32 fraction bits (saturating: each product is
+/// below 2^62, their sum may not be).
 #[inline]
 fn row(m: &Mat4, r: usize, p: Vec3) -> i64 {
     let e = m.m[r];
-    i64::from(e[0].to_bits()) * i64::from(p.x.to_bits())
-        + i64::from(e[1].to_bits()) * i64::from(p.y.to_bits())
-        + i64::from(e[2].to_bits()) * i64::from(p.z.to_bits())
-        + (i64::from(e[3].to_bits()) << 16)
+    let t = |a: Fx, b: Fx| i64::from(a.to_bits()) * i64::from(b.to_bits());
+    t(e[0], p.x)
+        .saturating_add(t(e[1], p.y))
+        .saturating_add(t(e[2], p.z))
+        .saturating_add(i64::from(e[3].to_bits()) << 16)
 }
 
 #[inline]
@@ -165,8 +167,13 @@ impl LightKind for Directional {
         let one = 1i64 << 32;
         let (x, y, z) = (row(m, 0, p), row(m, 1, p), row(m, 2, p));
         // (x + 1) / 2 with 32 fraction bits -> 20; depth 65535 * 16 * (z + 1) / 2.
-        let d = (((z + one) >> 12) * 65535) >> 17;
-        [sat((x + one) >> 13), sat((one - y) >> 13), sat(d), 0]
+        let d = ((z.saturating_add(one) >> 12).saturating_mul(65535)) >> 17;
+        [
+            sat(x.saturating_add(one) >> 13),
+            sat(one.saturating_sub(y) >> 13),
+            sat(d),
+            0,
+        ]
     }
     #[inline(always)]
     fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
@@ -181,9 +188,9 @@ impl LightKind for Spot {
     fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
         let (x, y, z, w) = (row(m, 0, p), row(m, 1, p), row(m, 2, p), row(m, 3, p));
         [
-            sat((x + w) >> 17),
-            sat((w - y) >> 17),
-            sat((z + w) >> 17),
+            sat(x.saturating_add(w) >> 17),
+            sat(w.saturating_sub(y) >> 17),
+            sat(z.saturating_add(w) >> 17),
             sat(w >> 16),
         ]
     }
