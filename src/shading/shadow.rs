@@ -21,14 +21,14 @@
 //! All are linear in the world position, so the lit pass's perspective-correct
 //! interpolation gives them exactly at each pixel; the spot light divides per pixel
 //! (`s = a / w`, with the span loop's table reciprocal
-//! [`recip_q30`](crate::pipeline::recip::recip_q30)) into the directional formats.
+//! [`recip_q30`]) into the directional formats.
 //! Values saturate at `±2^30`, far outside any map.
 //!
 //! # The compare
 //!
 //! A point is *outside* the light's frustum when `s` or `t` is outside `[0, 1)`, its depth
 //! is outside `[0, 65535]` or (spot) `w <= 0`; outside points get the caller's
-//! [`Outside`] choice. Inside, a [`ShadowFilter`](super::pcf::ShadowFilter) compares
+//! [`Outside`] choice. Inside, a [`ShadowFilter`] compares
 //! `d - bias` with map texels. The bias, per lit-pass triangle ([`Bias`]):
 //!
 //! ```text
