@@ -254,3 +254,5 @@ mod tests {
         assert_eq!(s.mesh().unwrap().triangles(), SPHERE_TRIANGLES);
     }
 }
+
+pub mod shadow;

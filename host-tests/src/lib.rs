@@ -10,4 +10,5 @@ pub mod metrics;
 pub mod png_io;
 pub mod reference;
 pub mod scenes;
+pub mod shadow_scene;
 pub mod synthetic;

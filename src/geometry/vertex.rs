@@ -121,5 +121,19 @@ impl<const N: usize> Default for ScreenVertex<N> {
     }
 }
 
+impl<const N: usize> ScreenVertex<N> {
+    /// The position attribute planes are built from: `(x, y)` plus [`sub`](Self::sub), in
+    /// `2^-ATTR_SUBPIXEL_BITS` pixel ([`crate::raster::ATTR_SUBPIXEL_BITS`]).
+    #[inline]
+    pub fn attr_position(&self) -> (i32, i32) {
+        use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
+        let fine = |p: i32, sub: i16| {
+            p.wrapping_shl(ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS)
+                .wrapping_add(i32::from(sub))
+        };
+        (fine(self.x, self.sub[0]), fine(self.y, self.sub[1]))
+    }
+}
+
 /// Three screen vertices. Winding is kept as given (culling has already been applied).
 pub type ScreenTriangle<const N: usize = CLASSIC_VARYINGS> = [ScreenVertex<N>; 3];

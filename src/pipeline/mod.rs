@@ -6,6 +6,7 @@
 //! (shader hook, set-up, edge walk), `setup` builds its planes, `interp` interpolates the
 //! varyings and `span` is the chunked per-pixel loop (depth mask, varyings, shading).
 
+mod depth_only;
 mod draw;
 mod interp;
 mod raster;
@@ -15,6 +16,7 @@ mod shaded;
 mod span;
 pub(crate) mod stages;
 
+pub use depth_only::DepthOnlyDraw;
 pub use draw::Draw;
 pub use shaded::ShadedDraw;
 pub use stages::{

@@ -12,7 +12,7 @@ use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
-use crate::raster::{rasterize, Rect, SpanSink, ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
+use crate::raster::{rasterize, Rect, SpanSink};
 use crate::shading::Shader;
 use crate::surface::RenderTarget;
 use crate::texture::LodGranularity;
@@ -125,11 +125,8 @@ where
     };
     let Some(setup) = setup(
         tri.map(|v| {
-            let fine = |p: i32, sub: i16| {
-                p.wrapping_shl(ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS)
-                    .wrapping_add(i32::from(sub))
-            };
-            (fine(v.x, v.sub[0]), fine(v.y, v.sub[1]), v.z, v.w)
+            let (x, y) = v.attr_position();
+            (x, y, v.z, v.w)
         }),
         &vary,
         vp,

@@ -40,3 +40,5 @@ pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
+mod shadow;
+pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};

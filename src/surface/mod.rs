@@ -12,10 +12,12 @@
 //! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 
 pub(crate) mod band;
+pub(crate) mod depth_map;
 pub(crate) mod frame;
 pub(crate) mod spans;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
+pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use spans::{BandRange, MeshSink};
 

@@ -26,7 +26,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 3] = ["showcase", "scenes", "preview"];
+const RENDER_EXAMPLES: [&str; 4] = ["showcase", "scenes", "preview", "shadow"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -46,8 +46,8 @@ COMMANDS:
                   --no-cross  skip the cross-target builds and `mcu`
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
-    render      Render the demo scenes (examples `showcase`, `scenes` and `preview`,
-                release) to target/pictures/*.png
+    render      Render the demo scenes (examples `showcase`, `scenes`, `preview` and
+                `shadow`, release) to target/pictures/*.png
     count [--frames N] [FILTER...]
                 Exact x86_64 instructions per drawn pixel of the benchmark
                 scenes and modes: builds the `count_scene` example (release),
@@ -825,6 +825,20 @@ fn report(flags: &[String]) -> ExitCode {
         args.extend(["--mcu", &tsv_s]);
     }
     if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
+    let shadow = [
+        "run",
+        "--release",
+        "-q",
+        "-p",
+        "host-tests",
+        "--bin",
+        "shadow_report",
+    ];
+    if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s]].concat()).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }

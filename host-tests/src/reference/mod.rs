@@ -244,3 +244,4 @@ fn shade_fragment(
     img.covered[idx] = true;
     img.depth[idx] = z;
 }
+pub mod shadow;

@@ -1,0 +1,213 @@
+//! The shadow-mapping scene (`fixel::demo::shadow`) for the firmware: the light pass into a
+//! 64 x 64 map (8 KiB), then the lit pass in bands of 4 rows (5 KiB of colour and depth),
+//! its screen triangles binned once. Shared word for word with the host test
+//! `host-tests/tests/shadow_mcu.rs` (included there with `#[path]`), so the checksums are
+//! computed by the same code. The floor uses `T(64, 64)` here (the host picture uses a
+//! stone texture), the cube `T(128, 128)`.
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel::geometry::ScreenTriangle;
+use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+use fixel::prelude::*;
+use fixel::scene::shadowed_mesh_triangles;
+use fixel::shading::pcf::ShadowFilter;
+use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Shadowed};
+use fixel::shading::Classic;
+use fixel::shading::{ModulateIntensity, Shader};
+use fixel::surface::BandStats;
+use fixel::surface::DepthMap;
+use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
+
+use crate::scenes::{Fnv1a, FrameResult, H, W};
+
+/// Shadow map side.
+pub const MAP: u32 = 64;
+/// Texels of the map.
+pub const MAP_TEXELS: usize = (MAP * MAP) as usize;
+/// Rows per band (4: colour and depth 5 KiB, so map, band and stack fit 24 KiB of RAM).
+pub const ROWS: u32 = 4;
+/// Binned screen triangles (the scene has 8 to 10 after culling and clipping).
+pub const BINS: usize = 16;
+
+/// Everything the shadowed frame needs in RAM: map 8 KiB, band 5 KiB (the bins, 2 KiB, are on the stack).
+pub struct ShadowBuffers {
+    /// The shadow map.
+    pub map: [u16; MAP_TEXELS],
+    color: [Rgb565; (W * ROWS) as usize],
+    depth: [u16; (W * ROWS) as usize],
+}
+
+impl ShadowBuffers {
+    /// Zeroed buffers.
+    pub const fn new() -> Self {
+        ShadowBuffers {
+            map: [0; MAP_TEXELS],
+            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            depth: [0; (W * ROWS) as usize],
+        }
+    }
+}
+
+impl Default for ShadowBuffers {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The light pass of the scene into `map`; returns the texels written.
+pub fn light_pass<K: LightKind>(space: &LightSpace<K>, map: &mut [u16]) -> Result<u32, Error> {
+    let mut m = DepthMap::new(map, MAP)?;
+    scene::light_pass(space, &mut m)
+}
+
+/// The lit pass in bands, with filter `F` under `space` (its map in `buf.map`, drawn
+/// before); `M` is 6 for a directional light, 7 for the spot. `pause` and `resume` bracket
+/// the checksum of each band (left out of instruction counts).
+#[allow(clippy::too_many_arguments)]
+pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
+    buf: &mut ShadowBuffers,
+    space: &LightSpace<K>,
+    light: SceneLight,
+    cube_tex: Texture<'_>,
+    floor_tex: Texture<'_>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let map = fixel::surface::ShadowMap::new(&buf.map, MAP)?;
+    let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
+    let shader = |t| -> Result<Shadowed<'_, _, K, F, M>, Error> {
+        Shadowed::new(
+            ModulateIntensity {
+                tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
+            },
+            map,
+            Bias::for_filter::<F>(),
+        )
+    };
+    let vp = Viewport::new(0, 0, W, H)?;
+    let draws = [
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ct)?, vp, Cull::Back)?,
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ft)?, vp, Cull::Back)?,
+    ];
+    banded(
+        &mut buf.color,
+        &mut buf.depth,
+        &draws,
+        space,
+        light,
+        pause,
+        resume,
+    )
+}
+
+/// The same frame without shadows (the inner shader alone, same geometry, light-space
+/// varyings computed per vertex and dropped): the baseline of the lit pass's cost.
+pub fn unshadowed_pass<K: LightKind>(
+    buf: &mut ShadowBuffers,
+    space: &LightSpace<K>,
+    light: SceneLight,
+    cube_tex: Texture<'_>,
+    floor_tex: Texture<'_>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
+    let shader = |t| -> Result<ModulateIntensity<'_, Bilinear, Repeat, Repeat>, Error> {
+        Ok(ModulateIntensity {
+            tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
+        })
+    };
+    let vp = Viewport::new(0, 0, W, H)?;
+    let draws = [
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ct)?, vp, Cull::Back)?,
+        ShadedDraw::<_, Exact, DepthLess>::new(shader(&ft)?, vp, Cull::Back)?,
+    ];
+    banded(
+        &mut buf.color,
+        &mut buf.depth,
+        &draws,
+        space,
+        light,
+        pause,
+        resume,
+    )
+}
+
+/// The scene's geometry once (screen triangles binned with their draw: `draws[0]` the
+/// cube, `draws[1]` the floor; vertices `u, v, intensity` then the first `M - 3` light
+/// varyings), then each band of `ROWS` rows drawn from the bins and hashed.
+#[allow(clippy::too_many_arguments)]
+fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    draws: &[ShadedDraw<S, Exact, DepthLess>; 2],
+    space: &LightSpace<K>,
+    light: SceneLight,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let mut bins = [(0u8, ScreenTriangle::<M>::default()); BINS];
+    let mut n = 0usize;
+    let mut overflow = false;
+    let (cube, model, floor) = scene::meshes();
+    let (cam, gl) = (scene::camera(), scene::gouraud_light(light));
+    for (d, (mesh, m)) in [(cube.mesh()?, model), (floor.mesh()?, Mat4::IDENTITY)]
+        .into_iter()
+        .enumerate()
+    {
+        let draw = &draws[d];
+        shadowed_mesh_triangles(&mesh, &m, &cam, Some(&gl), space, |cv, lv| {
+            let tri = [0, 1, 2].map(|k| {
+                let v = cv[k].to_vertex();
+                let inner =
+                    ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(&v.varyings);
+                with_light::<3, M>(&fixel::geometry::Vertex::new(v.position, inner), lv[k])
+            });
+            draw.project(&tri, &mut |s| match bins.get_mut(n) {
+                Some(b) => {
+                    *b = (d as u8, *s);
+                    n += 1;
+                }
+                None => overflow = true,
+            });
+        });
+    }
+    if overflow {
+        return Err(Error::BadMode(
+            "shadow scene: more screen triangles than bins",
+        ));
+    }
+    let mut sum = Fnv1a::default();
+    let mut stats = BandStats {
+        triangles: n as u32,
+        ..BandStats::default()
+    };
+    let mut y0 = 0;
+    while y0 < H {
+        let mut frame = Frame::new(&mut *color, W, ROWS)?
+            .with_depth(&mut *depth)?
+            .at_row(y0);
+        frame.clear(Rgb565::new(4, 10, 14));
+        let (r0, r1) = (y0 as i32, (y0 + ROWS) as i32);
+        for (d, s) in bins.iter().take(n) {
+            let top = s[0].y.min(s[1].y).min(s[2].y) >> 4;
+            let bot = (s[0].y.max(s[1].y).max(s[2].y) >> 4) + 1;
+            if bot < r0 || top >= r1 {
+                continue;
+            }
+            if let Some(draw) = draws.get(usize::from(*d)) {
+                stats.pixels += draw.screen_triangle(s, &mut frame)?;
+            }
+        }
+        pause();
+        sum.pixels(frame.pixels());
+        resume();
+        stats.bands += 1;
+        y0 += ROWS;
+    }
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats,
+    })
+}

@@ -1,0 +1,155 @@
+//! Report rows for shadow maps: map sizes 32, 64, 128 x the three filters, for the demo
+//! scene under the high directional light and the spot light. Per row: host ns per
+//! lit-pass pixel (best of 5), light-pass ns per map texel, the error against the f64
+//! reference with a map of the same size (fixel's own error) and against the f64 reference
+//! with a 1024 x 1024 single-tap map (the aliasing of a small map). Writes
+//! `target/report/shadow.md`.
+//!
+//! `cargo run --release -p host-tests --bin shadow_report [-- --out DIR]` (`cargo xtask
+//! report` runs it). The Cortex-M0+ and Cortex-M4F instruction counts are the `shadow_*`
+//! scenes of `cargo xtask mcu` (64 x 64 map; a 128 x 128 map does not fit the firmwares'
+//! 24 KiB of RAM), read from `target/mcu/scenes.md`, which that command writes; the rows
+//! say so when it has not run.
+
+use std::time::Instant;
+
+use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
+use fixel::shading::shadow::{Bias, LightKind, LightSpace, Outside};
+use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter};
+use host_tests::shadow_scene::{demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, Setup};
+
+fn ref_filter<F: ShadowFilter>() -> RefShadowFilter {
+    match F::NAME {
+        "single tap" => RefShadowFilter::Single,
+        "PCF 2x2 bilinear" => RefShadowFilter::Pcf2x2,
+        _ => RefShadowFilter::Pcf3x3,
+    }
+}
+
+/// Exact instructions per pixel of firmware scene `scene` on `core` from `cargo xtask mcu`'s
+/// table, or "-".
+fn mcu(table: &str, scene: &str, core: &str) -> String {
+    table
+        .lines()
+        .find(|l| l.starts_with(&format!("| {scene} | {core} |")))
+        .and_then(|l| l.split('|').nth(3))
+        .map(|v| v.trim().to_string())
+        .unwrap_or_else(|| "-".into())
+}
+
+/// The firmware scene of a light, map size and filter (only the 64 x 64 map has one).
+fn scene_of(light: &str, size: u32, filter: &str) -> Option<&'static str> {
+    match (light, size, filter) {
+        ("directional", 64, "single tap") => Some("shadow_single"),
+        ("directional", 64, "PCF 2x2 bilinear") => Some("shadow_pcf2x2"),
+        ("directional", 64, "PCF 3x3") => Some("shadow_pcf3x3"),
+        ("spot", 64, "PCF 2x2 bilinear") => Some("shadow_spot"),
+        _ => None,
+    }
+}
+
+fn row<K: LightKind, F: ShadowFilter, const M: usize>(
+    space: &LightSpace<K>,
+    size: u32,
+    truth: &host_tests::reference::shadow::RefShadowImage,
+    table: &str,
+) -> String {
+    let m = demo_meshes();
+    let cam = scene::camera();
+    let s = Setup::new::<F>(size);
+    // Timing: the whole render (both passes), best of 5, per lit pixel.
+    let mut best = f64::MAX;
+    let mut fx = fixel_shadow::<K, F, M>(&m, &cam, space, &s);
+    for _ in 0..5 {
+        let t = Instant::now();
+        fx = fixel_shadow::<K, F, M>(&m, &cam, space, &s);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    let sc = ref_scene(&m, &cam, space.matrix(), s.w, s.h);
+    let map = light_map(&sc, size, false);
+    let r = lit_pass(&sc, &map, ref_filter::<F>(), &ref_bias(&s.bias), 1.0);
+    let own = lit_error(&fx.lit, &fx.covered, &r.lit, &r.covered);
+    let alias = lit_error(&fx.lit, &fx.covered, &truth.lit, &truth.covered);
+    let (m0, m4) = match scene_of(K::NAME, size, F::NAME) {
+        Some(sc) => (mcu(table, sc, "Cortex-M0+"), mcu(table, sc, "Cortex-M4F")),
+        None => ("-".into(), "-".into()),
+    };
+    format!(
+        "| {} | {size} | {} | {:.1} | {m0} | {m4} | {:.4} | {} | {:.4} | {} ({:.2} %) |",
+        K::NAME,
+        F::NAME,
+        best * 1e9 / f64::from(fx.pixels),
+        own.mean,
+        own.wrong,
+        alias.mean,
+        alias.wrong,
+        100.0 * alias.wrong as f64 / alias.both.max(1) as f64
+    )
+}
+
+fn truth<K: LightKind>(space: &LightSpace<K>) -> host_tests::reference::shadow::RefShadowImage {
+    let m = demo_meshes();
+    let sc = ref_scene(&m, &scene::camera(), space.matrix(), 320, 240);
+    let map = light_map(&sc, 1024, false);
+    let b = Bias {
+        constant: 16,
+        slope: 192,
+        max: 8192 * 16,
+    };
+    let _ = Outside::Lit;
+    lit_pass(&sc, &map, RefShadowFilter::Single, &ref_bias(&b), 1.0)
+}
+
+fn main() {
+    let high = scene::directional(SceneLight::High).unwrap();
+    let spot = scene::spot().unwrap();
+    let (th, ts) = (truth(&high), truth(&spot));
+    let table = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/mcu/scenes.md"),
+    )
+    .unwrap_or_default();
+    let mut out = String::from(
+        "Shadow maps on the demo scene (cube on a floor, 320x240). host ns/px: both passes, \
+         white inner shader, best of 5 (noisy on a shared machine). M0+ / M4F: exact \
+         instructions per pixel of the lit pass (textured, lit, bands of 4 rows) from `cargo \
+         xtask mcu` (no-shadow baseline: shadow_none; light pass per map texel: \
+         shadow_light). Errors in lit fraction (0..1) per covered pixel; wrong side = \
+         |Δlit| > 0.5.\n\n",
+    );
+    if table.is_empty() {
+        out += "(`target/mcu/scenes.md` missing: run `cargo xtask mcu` for the M0+ / M4F columns.)\n\n";
+    }
+    out += &format!(
+        "Light pass per map texel (64x64): M0+ {}, M4F {}. Lit pass without shadows: M0+ {}, M4F {}.\n\n",
+        mcu(&table, "shadow_light", "Cortex-M0+"),
+        mcu(&table, "shadow_light", "Cortex-M4F"),
+        mcu(&table, "shadow_none", "Cortex-M0+"),
+        mcu(&table, "shadow_none", "Cortex-M4F"),
+    );
+    out += "| light | map | filter | host ns/px | M0+ instr/px | M4F instr/px | mean \\|Δlit\\| vs f64, same map | wrong-side px vs f64, same map | mean \\|Δlit\\| vs f64 1024² | wrong-side px vs f64 1024² |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for size in [32, 64, 128] {
+        out += &row::<_, SingleTap, 3>(&high, size, &th, &table);
+        out += "\n";
+        out += &row::<_, Pcf2x2, 3>(&high, size, &th, &table);
+        out += "\n";
+        out += &row::<_, Pcf3x3, 3>(&high, size, &th, &table);
+        out += "\n";
+    }
+    for size in [32, 64, 128] {
+        out += &row::<_, SingleTap, 4>(&spot, size, &ts, &table);
+        out += "\n";
+        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts, &table);
+        out += "\n";
+        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table);
+        out += "\n";
+    }
+    print!("{out}");
+    let args: Vec<String> = std::env::args().collect();
+    let dir = match args.iter().position(|a| a == "--out") {
+        Some(i) if i + 1 < args.len() => std::path::PathBuf::from(&args[i + 1]),
+        _ => std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/report"),
+    };
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("shadow.md"), &out).unwrap();
+}

@@ -1,0 +1,250 @@
+//! Shadow-mapping scenes drawn by fixel and by the f64 reference from the same data
+//! (mesh positions, model, camera and light matrices), and the lit fraction each gives per
+//! pixel, for the tests and the report.
+//!
+//! fixel's lit fraction is read from a white [`Flat`] shader wrapped in [`Shadowed`] with
+//! shadows at brightness 0: the green channel (6 bits) is `lit * 63`, so the read-back
+//! fraction is within 1/126 of the shader's own Q8 value.
+
+use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+use fixel::demo::shadow as scene;
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::math::{Mat4, Vec3};
+use fixel::pipeline::{DepthLess, DepthOnlyDraw, Exact, ShadedDraw};
+use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles, Camera, Mesh};
+use fixel::shading::pcf::ShadowFilter;
+use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Outside, Shadowed};
+use fixel::shading::Flat;
+use fixel::surface::{DepthMap, Frame};
+
+use crate::reference::shadow::{mul, transform, RefBias, ShadowScene, M4};
+
+/// One mesh of a scene: positions, triangles, model matrix.
+#[derive(Clone, Debug)]
+pub struct SceneMesh {
+    /// Model-space positions.
+    pub positions: Vec<Vec3>,
+    /// Triangles (counter-clockwise from the front).
+    pub indices: Vec<[u16; 3]>,
+    /// Model matrix.
+    pub model: Mat4,
+}
+
+/// The demo scene's meshes: the cube (frame 0) and the floor.
+pub fn demo_meshes() -> Vec<SceneMesh> {
+    let (cube, model, floor) = scene::meshes();
+    vec![
+        SceneMesh {
+            positions: cube.positions.to_vec(),
+            indices: cube.indices.to_vec(),
+            model,
+        },
+        SceneMesh {
+            positions: floor.positions.to_vec(),
+            indices: floor.indices.to_vec(),
+            model: Mat4::IDENTITY,
+        },
+    ]
+}
+
+/// A matrix as f64.
+pub fn m4(m: &Mat4) -> M4 {
+    m.m.map(|r| r.map(|e| e.to_num::<f64>()))
+}
+
+/// The reference's view of a scene.
+pub fn ref_scene(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    light: &Mat4,
+    w: u32,
+    h: u32,
+) -> ShadowScene {
+    let mut tris = Vec::new();
+    for m in meshes {
+        let model = m4(&m.model);
+        let world: Vec<[f64; 3]> = m
+            .positions
+            .iter()
+            .map(|p| {
+                let q = transform(&model, [p.x, p.y, p.z].map(|c| c.to_num::<f64>()));
+                [q[0], q[1], q[2]]
+            })
+            .collect();
+        for t in &m.indices {
+            tris.push(t.map(|i| world[usize::from(i)]));
+        }
+    }
+    ShadowScene {
+        tris,
+        camera: mul(&m4(&camera.projection), &m4(&camera.view)),
+        light: m4(light),
+        width: w,
+        height: h,
+    }
+}
+
+/// fixel's [`Bias`] in the reference's units.
+pub fn ref_bias(b: &Bias) -> RefBias {
+    RefBias {
+        constant: f64::from(b.constant) / 16.0,
+        slope: f64::from(b.slope) / 256.0,
+        max: f64::from(b.max) / 16.0,
+    }
+}
+
+/// What fixel drew: lit fraction and coverage per pixel, the map, and the texels and pixels
+/// written.
+#[derive(Clone, Debug)]
+pub struct FixelShadow {
+    /// Lit fraction per pixel (0..=1), from the green channel.
+    pub lit: Vec<f64>,
+    /// Covered pixels.
+    pub covered: Vec<bool>,
+    /// The shadow map.
+    pub map: Vec<u16>,
+    /// Texels the light pass wrote.
+    pub texels_written: u32,
+    /// Pixels the lit pass wrote.
+    pub pixels: u32,
+}
+
+/// Options of a fixel shadow render.
+#[derive(Clone, Copy, Debug)]
+pub struct Setup {
+    /// Map side.
+    pub size: u32,
+    /// Bias.
+    pub bias: Bias,
+    /// Outside the frustum.
+    pub outside: Outside,
+    /// Light-pass culling.
+    pub light_cull: Cull,
+    /// Frame size.
+    pub w: u32,
+    /// Frame height.
+    pub h: u32,
+}
+
+impl Setup {
+    /// Map `size`, the filter's default bias, outside lit, back faces culled, 320 x 240.
+    pub fn new<F: ShadowFilter>(size: u32) -> Self {
+        Setup {
+            size,
+            bias: Bias::for_filter::<F>(),
+            outside: Outside::Lit,
+            light_cull: Cull::Back,
+            w: 320,
+            h: 240,
+        }
+    }
+}
+
+/// Both passes with fixel; `M` is the light's varying count (3 directional, 4 spot).
+pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    space: &LightSpace<K>,
+    s: &Setup,
+) -> FixelShadow {
+    let mut texels = vec![0u16; (s.size * s.size) as usize];
+    let mut map = DepthMap::new(&mut texels, s.size).expect("map size");
+    map.clear();
+    let light = DepthOnlyDraw::new(&map, s.light_cull).expect("light pass");
+    let mut texels_written = 0;
+    for m in meshes {
+        let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
+        let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
+        texels_written += light_pass_mesh(&light, &mesh, &m.model, space, &mut map);
+    }
+    let shader = Shadowed::<_, K, F, M>::new(Flat(0xFFFF), map.view(), s.bias)
+        .expect("shader")
+        .with_darkness(0)
+        .expect("darkness")
+        .with_outside(s.outside);
+    let vp = Viewport::new(0, 0, s.w, s.h).expect("viewport");
+    let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
+    let n = (s.w * s.h) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::BLACK; n], vec![0u16; n]);
+    let mut frame = Frame::new(&mut color, s.w, s.h)
+        .expect("frame")
+        .with_depth(&mut depth)
+        .expect("depth");
+    frame.clear(Rgb565::BLACK);
+    let mut pixels = 0;
+    for m in meshes {
+        let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
+        let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
+        shadowed_mesh_triangles(&mesh, &m.model, camera, None, space, |cv, lv| {
+            let tri =
+                [0, 1, 2].map(|k| with_light::<0, M>(&Vertex::new(cv[k].position, []), lv[k]));
+            pixels += draw
+                .clip_triangles(&[tri], &mut frame)
+                .expect("frame has depth");
+        });
+    }
+    let covered = frame
+        .depth()
+        .expect("depth")
+        .iter()
+        .map(|&d| d != u16::MAX)
+        .collect();
+    let lit = color.iter().map(|c| f64::from(c.g()) / 63.0).collect();
+    FixelShadow {
+        lit,
+        covered,
+        map: texels,
+        texels_written,
+        pixels,
+    }
+}
+
+/// Lit-fraction error over pixels both cover: mean absolute difference, and the share of
+/// pixels whose difference exceeds 0.5 (on the other side of a shadow edge), and how many.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LitError {
+    /// Pixels both cover.
+    pub both: usize,
+    /// Mean |lit - lit_ref|.
+    pub mean: f64,
+    /// Pixels with |lit - lit_ref| > 0.5.
+    pub wrong: usize,
+    /// Covered by one only.
+    pub coverage_diff: usize,
+}
+
+impl core::fmt::Display for LitError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "mean |Δlit| {:.4}, wrong side {} px ({:.2} %) of {}, coverage diff {}",
+            self.mean,
+            self.wrong,
+            100.0 * self.wrong as f64 / self.both.max(1) as f64,
+            self.both,
+            self.coverage_diff
+        )
+    }
+}
+
+/// Compares two lit-fraction images.
+pub fn lit_error(a: &[f64], a_cov: &[bool], b: &[f64], b_cov: &[bool]) -> LitError {
+    let mut e = LitError::default();
+    let mut sum = 0.0;
+    for i in 0..a.len() {
+        match (a_cov[i], b_cov[i]) {
+            (true, true) => {
+                let d = (a[i] - b[i]).abs();
+                e.both += 1;
+                sum += d;
+                if d > 0.5 {
+                    e.wrong += 1;
+                }
+            }
+            (false, false) => {}
+            _ => e.coverage_diff += 1,
+        }
+    }
+    e.mean = sum / e.both.max(1) as f64;
+    e
+}

@@ -1,0 +1,606 @@
+//! Shadow mapping's lookup: light-space coordinates as varyings, a biased depth compare
+//! against a [`ShadowMap`], and a wrapper shader that darkens any other shader's colour.
+//!
+//! The scene's depth is first drawn from the light into a small map
+//! ([`DepthOnlyDraw`](crate::pipeline::DepthOnlyDraw)); then, for each visible pixel of the
+//! lit pass, the point is carried into the light's space and its depth compared with the
+//! map's (seed 000, §3.4: "comparamos os valores das coordenadas z ... com certa margem de
+//! tolerância", the bias).
+//!
+//! # Light space and its formats
+//!
+//! A [`LightSpace`] is the light's world-to-clip matrix (view then projection). Each vertex
+//! of the lit pass carries its light-space coordinates as extra varyings, after the inner
+//! shader's own, computed from the model-space position in `i64` (no intermediate rounding):
+//!
+//! | light | varyings | format |
+//! |---|---|---|
+//! | [`Directional`] (orthographic, `w = 1`) | `s, t, d` | `s = (x + 1) / 2`, `t = (1 - y) / 2`: Q12.20 (`1 << 20` = the map's side); `d = 65535 (z + 1) / 2`: Q16.4 (16 = one depth step) |
+//! | [`Spot`] (perspective) | `a, b, c, w` | `(x + w) / 2`, `(w - y) / 2`, `(z + w) / 2`, `w`: I16F16 |
+//!
+//! All are linear in the world position, so the lit pass's perspective-correct
+//! interpolation gives them exactly at each pixel; the spot light divides per pixel
+//! (`s = a / w`, with the span loop's table reciprocal
+//! [`recip_q30`]) into the directional formats.
+//! Values saturate at `±2^30`, far outside any map.
+//!
+//! # The compare
+//!
+//! A point is *outside* the light's frustum when `s` or `t` is outside `[0, 1)`, its depth
+//! is outside `[0, 65535]` or (spot) `w <= 0`; outside points get the caller's
+//! [`Outside`] choice. Inside, a [`ShadowFilter`] compares
+//! `d - bias` with map texels. The bias, per lit-pass triangle ([`Bias`]):
+//!
+//! ```text
+//! bias = constant + min(max, slope * (|∂d/∂x| + |∂d/∂y|))
+//! ```
+//!
+//! with the derivatives of depth per map texel on the triangle's plane in light space
+//! (solved from its three vertices), which is how far the receiver's depth moves between
+//! the point and a tap one texel away: a surface at a grazing angle to the light gets a
+//! large bias, one facing it a small one.
+//!
+//! # Both passes
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::pipeline::{DepthLess, DepthOnlyDraw, Exact};
+//! use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles};
+//! use fixel::shading::pcf::Pcf2x2;
+//! use fixel::shading::shadow::{with_light, Bias, Directional, LightSpace, Shadowed};
+//! use fixel::shading::Gouraud;
+//! use fixel::surface::DepthMap;
+//! use fixel::demo::{self, shadow::floor};
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//!
+//! // The benchmark cube over a floor, a light from above and to the left.
+//! let (cube, floor) = (demo::cube(), floor());
+//! let meshes = [(cube.mesh()?, demo::cube_model(0)), (floor.mesh()?, Mat4::IDENTITY)];
+//! let centre = Vec3::new(Fx::ZERO, Fx::from_num(-1), Fx::from_num(-4));
+//! let light = LightSpace::directional(centre + Vec3::from_num(-4, 8, 2), centre,
+//!     Vec3::from_num(0, 1, 0), Fx::from_num(6), Fx::ONE, Fx::from_num(20))?;
+//!
+//! // 1. The light pass: depth only, into a 32 x 32 map (2 KiB).
+//! let mut texels = [0u16; 32 * 32];
+//! let mut map = DepthMap::new(&mut texels, 32)?;
+//! map.clear();
+//! let light_draw = DepthOnlyDraw::new(&map, Cull::Back)?;
+//! for (mesh, model) in &meshes {
+//!     light_pass_mesh(&light_draw, mesh, model, &light, &mut map);
+//! }
+//!
+//! // 2. The lit pass: a Gouraud shader (r, g, b) shadowed: 3 + 3 varyings.
+//! let shader = Shadowed::<_, Directional, Pcf2x2, 6>::new(Gouraud, map.view(),
+//!                                                        Bias::for_filter::<Pcf2x2>())?;
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, 80, 60)?, Cull::Back)?;
+//! let (mut color, mut depth) = ([Rgb565::default(); 80 * 60], [0u16; 80 * 60]);
+//! let mut frame = Frame::new(&mut color, 80, 60)?.with_depth(&mut depth)?;
+//! frame.clear(Rgb565::default());
+//! let camera = demo::shadow::camera();
+//! for (mesh, model) in &meshes {
+//!     shadowed_mesh_triangles(mesh, model, &camera, None, &light, |cv, lv| {
+//!         let tri = [0, 1, 2].map(|k| {
+//!             let v = cv[k].to_vertex(); // u, v, r, g, b
+//!             let rgb = Vertex::new(v.position, [v.varyings[2], v.varyings[3], v.varyings[4]]);
+//!             with_light::<3, 6>(&rgb, lv[k])
+//!         });
+//!         draw.clip_triangles(&[tri], &mut frame);
+//!     });
+//! }
+//! // White where lit, 0.4 grey in the cube's shadow.
+//! let grey = frame.pixels().iter().filter(|c| **c == Rgb565::new(12, 25, 12)).count();
+//! assert!(grey > 100, "{grey}");
+//! # Ok::<(), fixel::Error>(())
+//! ```
+
+use super::pcf::ShadowFilter;
+use super::{Fragment, Shader, Varyings};
+use crate::color::modulate_scalar;
+use crate::math::{div_u64, Angle, Fx, Mat4, Vec3};
+use crate::pipeline::recip::{mul_q16, recip_q30};
+use crate::surface::ShadowMap;
+use crate::Error;
+
+/// Values of light-space varyings saturate here (their differences must fit `i32`).
+const LIMIT: i64 = 1 << 30;
+/// `1.0` of the normalized map coordinates `s, t` (Q12.20).
+pub const ST_ONE: i32 = 1 << 20;
+/// One 16-bit depth step in the lookup's depth format (Q16.4).
+pub const DEPTH_STEP: i32 = 16;
+
+/// The light's kind: how vertices carry light-space coordinates and how a pixel gets its
+/// map position from them.
+pub trait LightKind: Copy + core::fmt::Debug + 'static {
+    /// Varyings per vertex (3 or 4).
+    const VARYINGS: usize;
+    /// Name for reports.
+    const NAME: &'static str;
+    /// The light-space varyings of model-space point `p` under `m` (light clip from model);
+    /// unused trailing entries are 0.
+    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4];
+    /// Map position `(s, t)` (Q12.20) and depth `d` (Q16.4) from interpolated varyings, or
+    /// `None` outside the light's frustum.
+    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)>;
+}
+
+/// A directional light: an orthographic light space (parallel rays).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Directional;
+
+/// A spot light: a perspective light space from a point.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Spot;
+
+/// Row `r` of `m` applied to `(p, 1)`, with 32 fraction bits (saturating: each product is
+/// below 2^62, their sum may not be).
+#[inline]
+fn row(m: &Mat4, r: usize, p: Vec3) -> i64 {
+    let e = m.m[r];
+    let t = |a: Fx, b: Fx| i64::from(a.to_bits()) * i64::from(b.to_bits());
+    t(e[0], p.x)
+        .saturating_add(t(e[1], p.y))
+        .saturating_add(t(e[2], p.z))
+        .saturating_add(i64::from(e[3].to_bits()) << 16)
+}
+
+#[inline]
+fn sat(v: i64) -> i32 {
+    v.clamp(-LIMIT, LIMIT) as i32
+}
+
+/// Inside `[0, 1)` (Q12.20).
+#[inline(always)]
+fn in_map(s: i32) -> bool {
+    (s as u32) < ST_ONE as u32
+}
+
+/// Q12.20 depth `r` (1.0 = far plane) to Q16.4 window depth: `r * 65535 / 65536`.
+#[inline(always)]
+fn depth_q4(r: i32) -> i32 {
+    r - (r >> 16)
+}
+
+impl LightKind for Directional {
+    const VARYINGS: usize = 3;
+    const NAME: &'static str = "directional";
+    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
+        let one = 1i64 << 32;
+        let (x, y, z) = (row(m, 0, p), row(m, 1, p), row(m, 2, p));
+        // (x + 1) / 2 with 32 fraction bits -> 20; depth 65535 * 16 * (z + 1) / 2.
+        let d = ((z.saturating_add(one) >> 12).saturating_mul(65535)) >> 17;
+        [
+            sat(x.saturating_add(one) >> 13),
+            sat(one.saturating_sub(y) >> 13),
+            sat(d),
+            0,
+        ]
+    }
+    #[inline(always)]
+    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
+        let [s, t, d, _] = v;
+        (in_map(s) && in_map(t) && (0..=65535 * DEPTH_STEP).contains(&d)).then_some((s, t, d))
+    }
+}
+
+impl LightKind for Spot {
+    const VARYINGS: usize = 4;
+    const NAME: &'static str = "spot";
+    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
+        let (x, y, z, w) = (row(m, 0, p), row(m, 1, p), row(m, 2, p), row(m, 3, p));
+        [
+            sat(x.saturating_add(w) >> 17),
+            sat(w.saturating_sub(y) >> 17),
+            sat(z.saturating_add(w) >> 17),
+            sat(w >> 16),
+        ]
+    }
+    #[inline(always)]
+    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
+        let [a, b, c, w] = v;
+        // Inside the frustum without dividing: 0 <= a < w, 0 <= b < w, 0 <= c <= w.
+        if w <= 0 || !(0..w).contains(&a) || !(0..w).contains(&b) || !(0..=w).contains(&c) {
+            return None;
+        }
+        // Normalise w to [2^29, 2^30] (a Q30 value the span loop's table reciprocal takes):
+        // a, b, c shifted alike stay below 2^30, and n / w in Q30 is n r >> 16, one 32x32
+        // product (split on ARMv6-M), then Q20. Relative error below 2^-16: under 1/256
+        // texel on a 256 map, under one depth step.
+        let k = w.leading_zeros().saturating_sub(2);
+        let r = recip_q30(w << k);
+        let q = |n: i32| mul_q16(n << k, r) >> 10;
+        Some((
+            q(a).min(ST_ONE - 1),
+            q(b).min(ST_ONE - 1),
+            depth_q4(q(c).min(ST_ONE)),
+        ))
+    }
+}
+
+/// The light's world-to-clip matrix, for a light kind `K`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LightSpace<K> {
+    matrix: Mat4,
+    _kind: core::marker::PhantomData<K>,
+}
+
+impl<K: LightKind> LightSpace<K> {
+    /// The world-to-light-clip matrix (view, then projection).
+    pub fn matrix(&self) -> &Mat4 {
+        &self.matrix
+    }
+
+    /// Light clip from model space: `matrix * model` (per mesh).
+    pub fn with_model(&self, model: &Mat4) -> Mat4 {
+        self.matrix.mul(model)
+    }
+
+    /// The light-space varyings of model-space point `p` under `with_model(model)`.
+    #[inline]
+    pub fn varyings(m: &Mat4, p: Vec3) -> [i32; 4] {
+        K::vertex(m, p)
+    }
+}
+
+impl LightSpace<Directional> {
+    /// A directional light looking from `eye` towards `target` (`up` roughly up in the
+    /// map), whose map covers a square of half-side `half` around the axis and depths
+    /// `near..far` along it (an orthographic box, world units).
+    ///
+    /// # Errors
+    /// [`Error::BadProjection`] if `half <= 0`, `far <= near`, or `look_at` refuses the
+    /// axis.
+    pub fn directional(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        half: Fx,
+        near: Fx,
+        far: Fx,
+    ) -> Result<Self, Error> {
+        if half <= Fx::ZERO {
+            return Err(Error::BadProjection(
+                "directional light: half-side must be > 0",
+            ));
+        }
+        if far <= near {
+            return Err(Error::BadProjection(
+                "directional light: far must be > near",
+            ));
+        }
+        let (o, i) = (Fx::ZERO, Fx::ONE);
+        let depth = far - near;
+        let k = Fx::from_num(2)
+            .checked_div(depth)
+            .ok_or(Error::BadProjection(
+                "directional light: depth range too small",
+            ))?;
+        let inv = i.checked_div(half).ok_or(Error::BadProjection(
+            "directional light: half-side too small",
+        ))?;
+        let c = (far + near)
+            .checked_div(depth)
+            .ok_or(Error::BadProjection("directional light: bad depth range"))?;
+        let ortho = Mat4::from_rows([[inv, o, o, o], [o, inv, o, o], [o, o, -k, -c], [o, o, o, i]]);
+        Self::from_matrix(ortho.mul(&Mat4::look_at(eye, target, up)?))
+    }
+
+    /// A directional light from any affine world-to-clip matrix.
+    ///
+    /// # Errors
+    /// [`Error::BadProjection`] unless the last row is `(0, 0, 0, 1)`.
+    pub fn from_matrix(matrix: Mat4) -> Result<Self, Error> {
+        if matrix.m[3] != [Fx::ZERO, Fx::ZERO, Fx::ZERO, Fx::ONE] {
+            return Err(Error::BadProjection(
+                "directional light: the matrix must be affine (last row 0, 0, 0, 1)",
+            ));
+        }
+        Ok(LightSpace {
+            matrix,
+            _kind: core::marker::PhantomData,
+        })
+    }
+}
+
+impl LightSpace<Spot> {
+    /// A spot light at `eye` looking at `target`, cone of full angle `fov` (a square map),
+    /// depths `near..far`.
+    ///
+    /// # Errors
+    /// As [`Mat4::perspective`] and [`Mat4::look_at`].
+    pub fn spot(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        fov: Angle,
+        near: Fx,
+        far: Fx,
+    ) -> Result<Self, Error> {
+        let proj = Mat4::perspective(fov, Fx::ONE, near, far)?;
+        Ok(LightSpace {
+            matrix: proj.mul(&Mat4::look_at(eye, target, up)?),
+            _kind: core::marker::PhantomData,
+        })
+    }
+}
+
+/// What a point outside the light's frustum gets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Outside {
+    /// Lit (the default: the light's map covers the shadow casters, not the whole world).
+    #[default]
+    Lit,
+    /// In shadow (a spot light's cone: nothing outside it is lit).
+    Shadowed,
+}
+
+/// The depth bias of the compare, per lit-pass triangle (see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bias {
+    /// Constant part, Q16.4 depth ([`DEPTH_STEP`] = one 16-bit depth step).
+    pub constant: i32,
+    /// Slope factor, Q8 (256 = 1.0), times `|∂d/∂x| + |∂d/∂y|` per map texel.
+    pub slope: i32,
+    /// Cap of the slope part, Q16.4 (also used for triangles edge-on to the light).
+    pub max: i32,
+}
+
+impl Bias {
+    /// No bias: the acne baseline.
+    pub const NONE: Bias = Bias {
+        constant: 0,
+        slope: 0,
+        max: 0,
+    };
+
+    /// The bias a filter needs: 2 depth steps, plus the slope over the filter's reach
+    /// ([`ShadowFilter::REACH_Q8`]) and a quarter texel for rounding, capped at 8192 steps
+    /// (1/8 of the depth range).
+    pub fn for_filter<F: ShadowFilter>() -> Bias {
+        Bias {
+            constant: 2 * DEPTH_STEP,
+            slope: F::REACH_Q8 + 64,
+            max: 8192 * DEPTH_STEP,
+        }
+    }
+
+    /// The bias of a triangle whose vertices project to `p` (`(s, t, d)` as
+    /// [`LightKind::project`]), `None` for a vertex outside the frustum, on a map of side
+    /// `2^log2`.
+    pub fn of_triangle(&self, p: [Option<(i32, i32, i32)>; 3], log2: u32) -> i32 {
+        let slope_part = match p {
+            [Some(a), Some(b), Some(c)] => {
+                let sh = 12 - log2.min(12);
+                // Texel units Q8, depth Q4; deltas from vertex 0, clamped to keep the
+                // products in i64.
+                let cl = |v: i32| i64::from(v).clamp(-(1 << 26), 1 << 26);
+                let d = |q: (i32, i32, i32)| {
+                    (
+                        cl((q.0 >> sh) - (a.0 >> sh)),
+                        cl((q.1 >> sh) - (a.1 >> sh)),
+                        cl(q.2 - a.2),
+                    )
+                };
+                let ((x1, y1, z1), (x2, y2, z2)) = (d(b), d(c));
+                let det = x1 * y2 - x2 * y1;
+                let ns = z1 * y2 - z2 * y1; // ∂d/∂x * det
+                let nt = x1 * z2 - x2 * z1; // ∂d/∂y * det
+                let num = (ns.unsigned_abs() + nt.unsigned_abs()).saturating_mul(256);
+                let g = if det == 0 {
+                    u64::MAX
+                } else {
+                    div_u64(num, det.unsigned_abs())
+                };
+                // Q4 depth per texel, times the Q8 factor.
+                let part = g.min(1 << 40).saturating_mul(self.slope.max(0) as u64) >> 8;
+                part.min(self.max.max(0) as u64) as i32
+            }
+            _ => self.max,
+        };
+        self.constant.saturating_add(slope_part)
+    }
+}
+
+/// A shader `S` darkened where the shadow map says its pixel is hidden from the light.
+///
+/// Varyings: `S`'s, then the light's ([`LightKind::VARYINGS`]): `M` must be their sum (a
+/// compile-time check when the shader is built). The inner shader's colour is multiplied by
+/// `dark + (1 - dark) * lit` (`lit` the filter's lit fraction, `dark` the shadow's
+/// brightness, Q8). Per-triangle data: `S`'s and the bias.
+///
+/// ```
+/// use fixel::prelude::*;
+/// use fixel::shading::shadow::{Bias, Directional, Shadowed};
+/// use fixel::shading::pcf::Pcf2x2;
+/// use fixel::shading::Flat;
+/// use fixel::surface::ShadowMap;
+///
+/// let texels = [u16::MAX; 16 * 16]; // an empty map: everything lit
+/// let map = ShadowMap::new(&texels, 16)?;
+/// // Flat has no varyings: 0 + 3 for the directional light.
+/// let shader = Shadowed::<_, Directional, Pcf2x2, 3>::new(Flat(0xFFFF), map,
+///                                                        Bias::for_filter::<Pcf2x2>())?;
+/// assert_eq!(shader.darkness(), 102);
+/// # Ok::<(), fixel::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Shadowed<'a, S, K, F, const M: usize> {
+    inner: S,
+    map: ShadowMap<'a>,
+    bias: Bias,
+    dark: u16,
+    outside: u16,
+    _kinds: core::marker::PhantomData<(K, F)>,
+}
+
+impl<'a, S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shadowed<'a, S, K, F, M> {
+    const VARYINGS_ADD_UP: () = assert!(
+        M == <S::Varyings as Varyings>::N + K::VARYINGS,
+        "Shadowed<S, K, F, M>: M must be S's varyings plus the light's (3 directional, 4 spot)"
+    );
+
+    /// `inner` shadowed by `map` with `bias`; shadows at brightness 0.4 (102 / 256), points
+    /// outside the light's frustum lit.
+    ///
+    /// # Errors
+    /// None today (the map and bias are valid by construction); kept for later checks.
+    pub fn new(inner: S, map: ShadowMap<'a>, bias: Bias) -> Result<Self, Error> {
+        #[allow(clippy::let_unit_value)]
+        let () = Self::VARYINGS_ADD_UP;
+        Ok(Shadowed {
+            inner,
+            map,
+            bias,
+            dark: 102,
+            outside: 256,
+            _kinds: core::marker::PhantomData,
+        })
+    }
+
+    /// With shadows at brightness `dark` (Q8, `0..=256`: 0 black, 256 no shadow).
+    ///
+    /// # Errors
+    /// [`Error::BadMode`] if `dark > 256`.
+    pub fn with_darkness(mut self, dark: u16) -> Result<Self, Error> {
+        if dark > 256 {
+            return Err(Error::BadMode("shadow darkness must be in 0..=256 (Q8)"));
+        }
+        self.dark = dark;
+        Ok(self)
+    }
+
+    /// With points outside the light's frustum lit or shadowed.
+    pub fn with_outside(mut self, outside: Outside) -> Self {
+        self.outside = match outside {
+            Outside::Lit => 256,
+            Outside::Shadowed => 0,
+        };
+        self
+    }
+
+    /// Shadow brightness, Q8.
+    pub fn darkness(&self) -> u16 {
+        self.dark
+    }
+
+    /// The inner shader.
+    pub fn inner(&self) -> &S {
+        &self.inner
+    }
+
+    /// The lit fraction (Q8) of a pixel with light varyings `v` and triangle bias `bias`.
+    #[inline(always)]
+    pub fn lit(&self, v: [i32; 4], bias: i32) -> u16 {
+        match K::project(v) {
+            Some((s, t, d)) => F::lit(&self.map, s, t, d.saturating_sub(bias)),
+            None => self.outside,
+        }
+    }
+}
+
+/// The light varyings of a lit-pass vertex array: the 3 or 4 after the first `n`.
+#[inline(always)]
+fn light_part<const M: usize>(v: &[i32; M], n: usize) -> [i32; 4] {
+    core::array::from_fn(|k| v.get(n + k).copied().unwrap_or(0))
+}
+
+impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadowed<'_, S, K, F, M> {
+    type Varyings = [i32; M];
+    /// The inner shader's, the bias (Q16.4), and the light varyings of vertex 0 (the
+    /// interpolated ones are rebased on them).
+    type Triangle = (S::Triangle, i32, [i32; 4]);
+    const TEXCOORDS: Option<(usize, usize)> = S::TEXCOORDS;
+    const DISCARDS: bool = S::DISCARDS;
+    const SMALL: bool = S::SMALL;
+    const LOD: bool = S::LOD;
+
+    #[inline(always)]
+    fn lod_granularity(&self) -> crate::texture::LodGranularity {
+        self.inner.lod_granularity()
+    }
+
+    #[inline(always)]
+    fn coord_shift(t: &Self::Triangle) -> u32 {
+        S::coord_shift(&t.0)
+    }
+
+    #[inline(always)]
+    fn can_draw(&self) -> bool {
+        self.inner.can_draw()
+    }
+
+    fn triangle(&self, v: &mut [[i32; M]; 3]) -> Self::Triangle {
+        let n = <S::Varyings as Varyings>::N;
+        let mut inner = [S::Varyings::zero(); 3];
+        for (iv, ov) in inner.iter_mut().zip(v.iter()) {
+            for (a, b) in iv.as_mut_slice().iter_mut().zip(ov.iter()) {
+                *a = *b;
+            }
+        }
+        let t = self.inner.triangle(&mut inner);
+        for (iv, ov) in inner.iter().zip(v.iter_mut()) {
+            for (a, b) in iv.as_slice().iter().zip(ov.iter_mut()) {
+                *b = *a;
+            }
+        }
+        let p = [0, 1, 2].map(|k| v.get(k).and_then(|x| K::project(light_part(x, n))));
+        // Interpolate differences from vertex 0: the span loop's perspective division has a
+        // relative error near 2^-14, too much for depths near 2^20 (5 depth steps), fine for
+        // the depth range across one triangle.
+        let base = light_part(&v[0], n);
+        for vk in v.iter_mut() {
+            for (k, b) in base.iter().enumerate().take(K::VARYINGS) {
+                if let Some(x) = vk.get_mut(n + k) {
+                    *x = x.wrapping_sub(*b);
+                }
+            }
+        }
+        (t, self.bias.of_triangle(p, self.map.log2_size()), base)
+    }
+
+    #[inline(always)]
+    fn shade(&self, f: &Fragment<[i32; M], Self::Triangle>) -> Option<u16> {
+        let n = <S::Varyings as Varyings>::N;
+        let mut iv = S::Varyings::zero();
+        for (a, b) in iv.as_mut_slice().iter_mut().zip(f.varyings.iter()) {
+            *a = *b;
+        }
+        let c = self.inner.shade(&Fragment {
+            varyings: iv,
+            x: f.x,
+            y: f.y,
+            depth: f.depth,
+            lambda: f.lambda,
+            triangle: f.triangle.0,
+        })?;
+        let d = light_part(&f.varyings, n);
+        let base = f.triangle.2;
+        let lit = self.lit(
+            core::array::from_fn(|k| d[k].wrapping_add(base[k])),
+            f.triangle.1,
+        );
+        Some(if lit >= 256 {
+            c
+        } else {
+            let k = u32::from(self.dark);
+            modulate_scalar(c, (k + (((256 - k) * u32::from(lit)) >> 8)) as u16)
+        })
+    }
+}
+
+/// A lit-pass vertex: the inner shader's vertex `v` with light varyings `light` appended
+/// (the first `M - N` of them).
+pub fn with_light<const N: usize, const M: usize>(
+    v: &crate::geometry::Vertex<N>,
+    light: [i32; 4],
+) -> crate::geometry::Vertex<M> {
+    crate::geometry::Vertex {
+        position: v.position,
+        varyings: core::array::from_fn(|k| {
+            if k < N {
+                v.varyings.get(k).copied().unwrap_or(0)
+            } else {
+                light.get(k - N).copied().unwrap_or(0)
+            }
+        }),
+    }
+}
