@@ -736,20 +736,10 @@ fn main() {
         }
     }
     std::fs::create_dir_all(&out).expect("output directory");
-    let font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-    let font = std::fs::read(font_path).unwrap_or_else(|e| {
-        eprintln!(
-            "report: {font_path}: {e} (apt-get install fonts-dejavu-core); plots need a font"
-        );
+    if let Err(e) = host_tests::plot_font::register() {
+        eprintln!("report: {e}");
         std::process::exit(1)
-    });
-    plotters::style::register_font(
-        "sans-serif",
-        plotters::style::FontStyle::Normal,
-        Box::leak(font.into_boxed_slice()),
-    )
-    .map_err(|_| "bad font")
-    .expect("font");
+    }
 
     let t_start = Instant::now();
     let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();

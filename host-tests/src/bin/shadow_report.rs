@@ -49,11 +49,16 @@ fn scene_of(light: &str, size: u32, filter: &str) -> Option<&'static str> {
     }
 }
 
+/// One point of the plot: light, map size, filter, host ns/px, wrong-side share (%) vs the
+/// 1024² map.
+type Point = (&'static str, u32, &'static str, f64, f64);
+
 fn row<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     size: u32,
     truth: &host_tests::reference::shadow::RefShadowImage,
     table: &str,
+    points: &mut Vec<Point>,
 ) -> String {
     let m = demo_meshes();
     let cam = scene::camera();
@@ -71,6 +76,9 @@ fn row<K: LightKind, F: ShadowFilter, const M: usize>(
     let r = lit_pass(&sc, &map, ref_filter::<F>(), &ref_bias(&s.bias), 1.0);
     let own = lit_error(&fx.lit, &fx.covered, &r.lit, &r.covered);
     let alias = lit_error(&fx.lit, &fx.covered, &truth.lit, &truth.covered);
+    let ns = best * 1e9 / f64::from(fx.pixels);
+    let share = 100.0 * alias.wrong as f64 / alias.both.max(1) as f64;
+    points.push((K::NAME, size, F::NAME, ns, share));
     let (m0, m4) = match scene_of(K::NAME, size, F::NAME) {
         Some(sc) => (mcu(table, sc, "Cortex-M0+"), mcu(table, sc, "Cortex-M4F")),
         None => ("-".into(), "-".into()),
@@ -79,12 +87,12 @@ fn row<K: LightKind, F: ShadowFilter, const M: usize>(
         "| {} | {size} | {} | {:.1} | {m0} | {m4} | {:.4} | {} | {:.4} | {} ({:.2} %) |",
         K::NAME,
         F::NAME,
-        best * 1e9 / f64::from(fx.pixels),
+        ns,
         own.mean,
         own.wrong,
         alias.mean,
         alias.wrong,
-        100.0 * alias.wrong as f64 / alias.both.max(1) as f64
+        share
     )
 }
 
@@ -128,22 +136,24 @@ fn main() {
         mcu(&table, "shadow_none", "Cortex-M4F"),
     );
     out += "| light | map | filter | host ns/px | M0+ instr/px | M4F instr/px | mean \\|Δlit\\| vs f64, same map | wrong-side px vs f64, same map | mean \\|Δlit\\| vs f64 1024² | wrong-side px vs f64 1024² |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    let mut pts = Vec::new();
     for size in [32, 64, 128] {
-        out += &row::<_, SingleTap, 3>(&high, size, &th, &table);
+        out += &row::<_, SingleTap, 3>(&high, size, &th, &table, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf2x2, 3>(&high, size, &th, &table);
+        out += &row::<_, Pcf2x2, 3>(&high, size, &th, &table, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf3x3, 3>(&high, size, &th, &table);
+        out += &row::<_, Pcf3x3, 3>(&high, size, &th, &table, &mut pts);
         out += "\n";
     }
     for size in [32, 64, 128] {
-        out += &row::<_, SingleTap, 4>(&spot, size, &ts, &table);
+        out += &row::<_, SingleTap, 4>(&spot, size, &ts, &table, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts, &table);
+        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts, &table, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table);
+        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table, &mut pts);
         out += "\n";
     }
+    out += "\n![shadow maps: host cost against aliasing](shadow.png)\n";
     print!("{out}");
     let args: Vec<String> = std::env::args().collect();
     let dir = match args.iter().position(|a| a == "--out") {
@@ -152,4 +162,81 @@ fn main() {
     };
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("shadow.md"), &out).unwrap();
+    if let Err(e) =
+        host_tests::plot_font::register().and_then(|()| plot(&pts, &dir.join("shadow.png")))
+    {
+        eprintln!("shadow_report: plot: {e}");
+    }
+}
+
+/// Host ns/px (x) against the share of pixels on the wrong side of a shadow edge compared
+/// with a 1024² f64 map (y, lower is better): one point per light, map size and filter.
+fn plot(pts: &[Point], path: &std::path::Path) -> Result<(), String> {
+    use plotters::prelude::*;
+    let (w, h) = (900u32, 560u32);
+    let mut buf = vec![255u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let xmax = pts.iter().map(|p| p.3).fold(0.0, f64::max) * 1.15;
+        let ymax = pts.iter().map(|p| p.4).fold(0.0, f64::max) * 1.15;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "shadow maps: host cost vs aliasing (against a 1024² f64 map)",
+                ("sans-serif", 20),
+            )
+            .margin(14)
+            .margin_bottom(30)
+            .x_label_area_size(44)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.0..xmax.max(1.0), 0.0..ymax.max(1.0))
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc("host ns per lit pixel, both passes (best of 5, lower is faster)")
+            .y_desc("pixels on the wrong side of a shadow edge, % (lower is better)")
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let colour = |f: &str| match f {
+            "single tap" => RGBColor(214, 39, 40),
+            "PCF 2x2 bilinear" => RGBColor(31, 119, 180),
+            _ => RGBColor(44, 160, 44),
+        };
+        for (light, size, filter, x, y) in pts {
+            let c = colour(filter);
+            let style = if *light == "spot" {
+                c.stroke_width(2)
+            } else {
+                c.filled()
+            };
+            chart
+                .draw_series(std::iter::once(Circle::new((*x, *y), 6, style)))
+                .map_err(|e| e.to_string())?;
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((*x, *y))
+                        + Text::new(format!("{size}"), (8, -6), ("sans-serif", 12)),
+                ))
+                .map_err(|e| e.to_string())?;
+        }
+        for (k, f) in ["single tap", "PCF 2x2 bilinear", "PCF 3x3"]
+            .iter()
+            .enumerate()
+        {
+            let y = 70 + 20 * k as i32;
+            root.draw(&Circle::new((w as i32 - 200, y), 6, colour(f).filled()))
+                .map_err(|e| e.to_string())?;
+            root.draw(&Text::new(*f, (w as i32 - 188, y - 7), ("sans-serif", 14)))
+                .map_err(|e| e.to_string())?;
+        }
+        root.draw(&Text::new(
+            "filled = directional light, ring = spot light; labels = map size",
+            (w as i32 - 420, h as i32 - 20),
+            ("sans-serif", 13),
+        ))
+        .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    host_tests::png_io::write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
 }
