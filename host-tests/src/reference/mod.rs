@@ -242,3 +242,4 @@ fn shade_fragment(
     img.covered[idx] = true;
     img.depth[idx] = z;
 }
+pub mod noise;
