@@ -177,3 +177,18 @@ fn mcu_frames() {
         "floor_bilinear: bands differ from the whole frame"
     );
 }
+
+#[path = "../../examples/firmware/src/noise.rs"]
+#[allow(dead_code)]
+mod noise;
+
+/// The solid-texture firmware (`examples/firmware/src/bin/noise.rs`): the same band code.
+#[test]
+fn mcu_noise_frame() {
+    use fixel::shading::noise::{BandLimit, Ramps, SolidShader};
+    let ramps = Ramps::new().unwrap();
+    let mut buf = Box::new(noise::NoiseBuffers::new());
+    let shader = SolidShader::new(ramps.marble(), BandLimit::new(6));
+    let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+    print("noise", &r);
+}

@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 4] = ["cube", "sphere", "floor", "floor_bilinear"];
+const SCENES: [&str; 5] = ["cube", "sphere", "floor", "floor_bilinear", "noise"];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers.
@@ -1011,11 +1011,12 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 4] = [
+const REPORT_BINS: [&str; 5] = [
     "report_cube",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
+    "report_noise",
 ];
 
 /// One mode of one report firmware on one MCU.

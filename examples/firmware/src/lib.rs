@@ -303,3 +303,4 @@ macro_rules! report_modes {
         ok
     }};
 }
+pub mod noise;

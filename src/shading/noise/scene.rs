@@ -42,28 +42,57 @@ impl SolidMesh<'_> {
         light: Option<&DirectionalLight>,
         mut emit: impl FnMut(&[Vertex<4>; 3]),
     ) {
-        let model_view = camera.view.mul(model);
-        let mvp = camera.projection.mul(&model_view);
-        let vertex = |i: u16| -> Option<Vertex<4>> {
-            let p = *self.positions.get(usize::from(i))?;
-            let c = mvp.transform_point(p)?;
-            let intensity = match (light, self.normals) {
-                (Some(l), Some(ns)) => {
-                    let n = model_view.transform_vector(*ns.get(usize::from(i))?)?;
-                    l.intensity(n.normalize().unwrap_or(Vec3::ZERO))
-                }
-                _ => COLOR_ONE,
-            };
-            let [x, y, z] = lattice_point(p, self.scale);
-            Some(Vertex::new(
-                [c.x, c.y, c.z, c.w],
-                [x, y, z, i32::from(intensity) << 16],
-            ))
-        };
+        let (model_view, mvp) = Self::matrices(model, camera);
+        let vertex = |i: u16| self.vertex(usize::from(i), &model_view, &mvp, light);
         for tri in self.indices {
             if let (Some(a), Some(b), Some(c)) = (vertex(tri[0]), vertex(tri[1]), vertex(tri[2])) {
                 emit(&[a, b, c]);
             }
         }
+    }
+
+    /// Each vertex once, as [`SolidMesh::triangles`] makes them, into `out` (one entry per
+    /// position; `None` for a vertex that overflows; extra entries, or positions past the
+    /// end of `out`, are left alone): for firmware that keeps a vertex cache.
+    pub fn vertices(
+        &self,
+        model: &Mat4,
+        camera: &Camera,
+        light: Option<&DirectionalLight>,
+        out: &mut [Option<Vertex<4>>],
+    ) {
+        let (model_view, mvp) = Self::matrices(model, camera);
+        for (i, slot) in out.iter_mut().enumerate().take(self.positions.len()) {
+            *slot = self.vertex(i, &model_view, &mvp, light);
+        }
+    }
+
+    fn matrices(model: &Mat4, camera: &Camera) -> (Mat4, Mat4) {
+        let model_view = camera.view.mul(model);
+        let mvp = camera.projection.mul(&model_view);
+        (model_view, mvp)
+    }
+
+    fn vertex(
+        &self,
+        i: usize,
+        model_view: &Mat4,
+        mvp: &Mat4,
+        light: Option<&DirectionalLight>,
+    ) -> Option<Vertex<4>> {
+        let p = *self.positions.get(i)?;
+        let c = mvp.transform_point(p)?;
+        let intensity = match (light, self.normals) {
+            (Some(l), Some(ns)) => {
+                let n = model_view.transform_vector(*ns.get(i)?)?;
+                l.intensity(n.normalize().unwrap_or(Vec3::ZERO))
+            }
+            _ => COLOR_ONE,
+        };
+        let [x, y, z] = lattice_point(p, self.scale);
+        Some(Vertex::new(
+            [c.x, c.y, c.z, c.w],
+            [x, y, z, i32::from(intensity) << 16],
+        ))
     }
 }
