@@ -26,7 +26,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 2] = ["showcase", "scenes"];
+const RENDER_EXAMPLES: [&str; 3] = ["showcase", "scenes", "noise"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -822,6 +822,12 @@ fn report(flags: &[String]) -> ExitCode {
     if mcu_on {
         args.extend(["--mcu", &tsv_s]);
     }
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    // Solid textures (issue 13): their own report, same output directory and MCU counts.
+    args[6] = "noise_report";
     if let Err(e) = cargo(&args).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
