@@ -42,12 +42,16 @@
 //! assert!((0..65_536).contains(&t));
 //! ```
 
+mod flame;
 mod patterns;
 pub mod presets;
 mod scene;
 mod solid;
 mod turbulence;
 
+pub use flame::{
+    flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
+};
 pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};
