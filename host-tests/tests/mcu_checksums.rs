@@ -192,3 +192,11 @@ fn mcu_noise_frame() {
     let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
     print("noise", &r);
 }
+
+/// The flame firmware (`examples/firmware/src/bin/noise_flame.rs`).
+#[test]
+fn mcu_noise_flame() {
+    let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
+    let r = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
+    print("noise_flame", &r);
+}

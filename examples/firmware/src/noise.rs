@@ -171,3 +171,61 @@ pub fn render<S: Shader<Varyings = [i32; 4]>>(
         },
     })
 }
+
+/// Width of the flame firmware's frame.
+pub const FLAME_W: u32 = 80;
+/// Height of the flame firmware's frame.
+pub const FLAME_H: u32 = 96;
+/// Pixels of the flame frame.
+pub const FLAME_PIXELS: usize = (FLAME_W * FLAME_H) as usize;
+
+/// `frames` frames of the flame (t = i/8 s, 5 octaves) into `color`, FNV-1a over all of
+/// them in order; `pause` / `resume` bracket the checksum.
+pub fn flame_frames(
+    color: &mut [Rgb565; FLAME_PIXELS],
+    frames: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    use fixel::shading::noise::{FlameShader, Ramp, FLAME_KEYS};
+    let ramp = Ramp::from_keys(&FLAME_KEYS)?;
+    let vp = Viewport::new(0, 0, FLAME_W, FLAME_H)?;
+    let v = |xn: i32, yn: i32, x: i32, y: i32| {
+        Vertex::new(
+            [Fx::from_num(xn), Fx::from_num(yn), Fx::ZERO, Fx::ONE],
+            [x, y],
+        )
+    };
+    // Flame units: x in -1.3..1.3, y in -0.1..1.4.
+    let (x0, x1, y0, y1) = (-85_197, 85_197, -6_554, 91_750);
+    let (a, b, c, d) = (
+        v(-1, -1, x0, y0),
+        v(1, -1, x1, y0),
+        v(1, 1, x1, y1),
+        v(-1, 1, x0, y1),
+    );
+    let quad = [[a, b, c], [a, c, d]];
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0;
+    for i in 0..frames {
+        let shader = FlameShader {
+            ramp: &ramp,
+            t: (i as i32) << 13,
+            octaves: 5,
+        };
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None)?;
+        let mut frame = Frame::new(color, FLAME_W, FLAME_H)?;
+        pixels += draw.clip_triangles(&quad, &mut frame);
+        pause();
+        sum.pixels(frame.pixels());
+        resume();
+    }
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats: BandStats {
+            bands: frames,
+            pixels,
+            ..BandStats::default()
+        },
+    })
+}
