@@ -7,6 +7,9 @@
 
 #[path = "common/mod.rs"]
 mod common;
+#[path = "common/light3d_cube.rs"]
+#[allow(dead_code)]
+mod light3d_cube;
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use fixel::demo;
@@ -152,6 +155,51 @@ fn flame_gif(path: &std::path::Path) {
     }
 }
 
+/// The wooden cube twice: per-vertex light (left) and the baked 3D light map (right, two
+/// point lights in the cube's own space, `examples/common/light3d_cube.rs`).
+fn light_map_picture(ramps: &Ramps) -> Vec<Rgb565> {
+    use fixel::math::{Angle, Vec3};
+    use fixel::shading::noise::{LightMap3d, LitSolid};
+    use fixel::texture::LodGranularity;
+    let n = (W * H) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); n], vec![0u16; n]);
+    let mut frame = Frame::new(&mut color, W, H)
+        .expect("frame")
+        .with_depth(&mut depth)
+        .expect("depth");
+    frame.clear(Rgb565::new(6, 12, 10));
+    let model = |x: f32| {
+        Mat4::translation(Vec3::new(Fx::from_num(x), Fx::ZERO, Fx::from_num(-5.5)))
+            * (Mat4::rotation_x(Angle::from_turns(5000))
+                * Mat4::rotation_y(Angle::from_turns(7000)))
+    };
+    let band = BandLimit::new(6);
+    let left = tris(&demo::cube(), &model(-1.7), SHOWCASE_SCALE);
+    draw(SolidShader::new(ramps.wood(), band), &left, &mut frame);
+    let right: Vec<[Vertex<3>; 3]> = tris(&demo::cube(), &model(1.7), SHOWCASE_SCALE)
+        .iter()
+        .map(|t| t.map(|v| Vertex::new(v.position, [v.varyings[0], v.varyings[1], v.varyings[2]])))
+        .collect();
+    let light = LightMap3d::new(
+        &light3d_cube::CUBE_LIGHT_TEXELS,
+        light3d_cube::CUBE_LIGHT_SIDE,
+        light3d_cube::CUBE_LIGHT_ORIGIN,
+        light3d_cube::CUBE_LIGHT_LOG2_TEXEL,
+    )
+    .expect("light map");
+    let shader = LitSolid {
+        pattern: ramps.wood(),
+        octaves: band,
+        light,
+        granularity: LodGranularity::Span,
+    };
+    let vp = Viewport::new(0, 0, W, H).expect("viewport");
+    ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back)
+        .expect("draw")
+        .clip_triangles(&right, &mut frame);
+    color
+}
+
 fn main() {
     let ramps = Ramps::new().expect("ramps");
     let dir = common::out_dir();
@@ -160,5 +208,7 @@ fn main() {
     let fixed = render(&ramps, Some(6));
     common::write_png(&dir.join("noise_fixed6.png"), W, H, &fixed);
     flame_gif(&dir.join("flame.gif"));
+    let lit = light_map_picture(&ramps);
+    common::write_png(&dir.join("noise_lightmap.png"), W, H, &lit);
     println!("wrote {} and flame.gif", dir.join("noise.png").display());
 }

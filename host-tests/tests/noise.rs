@@ -493,3 +493,99 @@ fn flame_within_budget_of_reference() {
     println!("flame vs f64: {r}");
     assert!(r.max <= 2 && r.p99 <= 1 && r.psnr_db > 40.0, "{r}");
 }
+
+#[path = "../../examples/common/light3d_cube.rs"]
+#[allow(dead_code)]
+mod light3d_cube;
+
+/// The baked 3D light map (`cargo xtask bake-light3d`, `examples/common/light3d_cube.rs`)
+/// holds the inverse-square sum of its lights at each texel centre (recomputed here from
+/// the recorded parameters), within 1 (of 255).
+#[test]
+fn light_map_bake_is_inverse_square() {
+    use light3d_cube::*;
+    let s = CUBE_LIGHT_SIDE as usize;
+    let texel = f64::from(1u32 << CUBE_LIGHT_LOG2_TEXEL) / 65536.0;
+    let o = CUBE_LIGHT_ORIGIN.map(|b| f64::from(b) / 65536.0);
+    for k in 0..s {
+        for j in 0..s {
+            for i in 0..s {
+                let c = [i, j, k].map(|t| t as f64 + 0.5);
+                let p: [f64; 3] = core::array::from_fn(|a| o[a] + c[a] * texel);
+                let e: f64 = CUBE_LIGHT_LIGHTS
+                    .iter()
+                    .map(|l| {
+                        l[3] / (0..3)
+                            .map(|a| (p[a] - l[a]).powi(2))
+                            .sum::<f64>()
+                            .max(1.0 / 16.0)
+                    })
+                    .sum();
+                let want = 255.0 * (CUBE_LIGHT_AMBIENT + e).min(1.0);
+                let got = f64::from(CUBE_LIGHT_TEXELS[(k * s + j) * s + i]);
+                assert!(
+                    (got - want).abs() <= 1.0,
+                    "texel ({i}, {j}, {k}): {got} vs {want}"
+                );
+            }
+        }
+    }
+}
+
+/// `LightMap3d::sample` against f64 trilinear interpolation of the same texels (GL texel
+/// centres, clamp-to-edge) at random points in and around the cube: within 1.5 Q8 LSB
+/// (measured 1.07: the weights are Q8); bad maps are refused.
+#[test]
+fn light_map_trilinear_within_budget() {
+    use fixel::shading::noise::LightMap3d;
+    use light3d_cube::*;
+    let map = LightMap3d::new(
+        &CUBE_LIGHT_TEXELS,
+        CUBE_LIGHT_SIDE,
+        CUBE_LIGHT_ORIGIN,
+        CUBE_LIGHT_LOG2_TEXEL,
+    )
+    .unwrap();
+    let s = CUBE_LIGHT_SIDE as i64;
+    let texel = f64::from(1u32 << CUBE_LIGHT_LOG2_TEXEL);
+    let at = |i: i64, j: i64, k: i64| {
+        let c = |v: i64| v.clamp(0, s - 1) as usize;
+        f64::from(CUBE_LIGHT_TEXELS[(c(k) * s as usize + c(j)) * s as usize + c(i)])
+    };
+    let mut rng = Rng(29);
+    let mut worst = 0.0f64;
+    for _ in 0..100_000 {
+        let p = [rng.near(3), rng.near(3), rng.near(3)];
+        let u: Vec<f64> = (0..3)
+            .map(|a| (f64::from(p[a]) - f64::from(CUBE_LIGHT_ORIGIN[a])) / texel - 0.5)
+            .map(|u| u.clamp(0.0, (s - 1) as f64))
+            .collect();
+        let (i, j, k) = (
+            u[0].floor() as i64,
+            u[1].floor() as i64,
+            u[2].floor() as i64,
+        );
+        let (fx, fy, fz) = (u[0] - i as f64, u[1] - j as f64, u[2] - k as f64);
+        let l = |a: f64, b: f64, t: f64| a + (b - a) * t;
+        let v = l(
+            l(
+                l(at(i, j, k), at(i + 1, j, k), fx),
+                l(at(i, j + 1, k), at(i + 1, j + 1, k), fx),
+                fy,
+            ),
+            l(
+                l(at(i, j, k + 1), at(i + 1, j, k + 1), fx),
+                l(at(i, j + 1, k + 1), at(i + 1, j + 1, k + 1), fx),
+                fy,
+            ),
+            fz,
+        );
+        let want = v * 256.0 / 255.0;
+        worst = worst.max((f64::from(map.sample(p)) - want).abs());
+    }
+    println!("light map trilinear vs f64: max {worst:.3} Q8 LSB");
+    assert!(worst <= 1.5);
+    assert!(LightMap3d::new(&CUBE_LIGHT_TEXELS, 15, [0; 3], 14).is_err());
+    assert!(LightMap3d::new(&CUBE_LIGHT_TEXELS[1..], 16, [0; 3], 14).is_err());
+    assert!(LightMap3d::new(&CUBE_LIGHT_TEXELS, 16, [0; 3], 30).is_err());
+}

@@ -5,6 +5,7 @@
 //! dependency is the `png` decoder for `bake`.
 
 mod bake;
+mod light3d;
 
 mod mcu;
 
@@ -89,6 +90,10 @@ COMMANDS:
                 file stem in upper case; --levels defaults to full (down to
                 1x1); --rgb565 is the path of the colour type in the output
                 (default embedded_graphics_core::pixelcolor::Rgb565)
+    bake-light3d <output.rs> [--side N] [--origin X,Y,Z] [--texel LOG2] [--ambient A]
+                 --light X,Y,Z,P [--light ...] [--name NAME]
+                Bake a 3D light map (fixel::shading::noise::LightMap3d) from point
+                lights with inverse-square falloff (see xtask/src/light3d.rs)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -120,6 +125,13 @@ fn main() -> ExitCode {
         "mcu" => mcu::mcu(rest),
         "size" => mcu::size(rest),
         "report" => report(rest),
+        "bake-light3d" => match light3d::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cargo xtask bake-light3d: {e}");
+                ExitCode::from(1)
+            }
+        },
         "bake" => match bake::run(rest) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -43,6 +43,7 @@
 //! ```
 
 mod flame;
+mod lightmap3d;
 mod patterns;
 pub mod presets;
 mod scene;
@@ -52,6 +53,7 @@ mod turbulence;
 pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
 };
+pub use lightmap3d::{LightMap3d, LitSolid};
 pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};
