@@ -163,7 +163,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 7] = [
+const SIZES: [(&str, &str); 8] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -171,6 +171,7 @@ const SIZES: [(&str, &str); 7] = [
     ("size_lighting", "+ lighting"),
     ("size_depth", "+ depth buffer"),
     ("size_everything", "everything (Draw::dynamic)"),
+    ("size_noise", "lit band-limited marble solid texture (ShadedDraw, no texture)"),
 ];
 
 const QEMU_TIMEOUT: Duration = Duration::from_secs(120);
