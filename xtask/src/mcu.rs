@@ -171,7 +171,10 @@ const SIZES: [(&str, &str); 8] = [
     ("size_lighting", "+ lighting"),
     ("size_depth", "+ depth buffer"),
     ("size_everything", "everything (Draw::dynamic)"),
-    ("size_noise", "lit band-limited marble solid texture (ShadedDraw, no texture)"),
+    (
+        "size_noise",
+        "lit band-limited marble solid texture (ShadedDraw, no texture)",
+    ),
 ];
 
 const QEMU_TIMEOUT: Duration = Duration::from_secs(120);

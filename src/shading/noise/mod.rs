@@ -184,7 +184,7 @@ fn grad(hash: u32, x: i32, y: i32, z: i32) -> i32 {
 /// keeps the product within `2^30` for every input (one Q15 LSB of rounding).
 #[inline(always)]
 fn lerp(a: i32, b: i32, w: i32) -> i32 {
-    a + (((b - a) >> 1) * w >> 13)
+    a + ((((b - a) >> 1) * w) >> 13)
 }
 
 /// Perlin's improved gradient noise at `(x, y, z)` (I16F16 bits, lattice units; any `i32`):
