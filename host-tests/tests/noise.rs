@@ -589,3 +589,103 @@ fn light_map_trilinear_within_budget() {
     assert!(LightMap3d::new(&CUBE_LIGHT_TEXELS[1..], 16, [0; 3], 14).is_err());
     assert!(LightMap3d::new(&CUBE_LIGHT_TEXELS, 16, [0; 3], 30).is_err());
 }
+
+/// A solid texture composed with an image texture through the fragment stage
+/// (`SolidTimesTexture`, multiply): every pixel is the image's texel (a `Replace` draw of
+/// the same wall) times the marble's colour (a `SolidShader` draw of the same wall), channel
+/// by channel, exactly.
+#[test]
+fn solid_times_texture_is_the_product() {
+    use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
+    use embedded_graphics_core::pixelcolor::Rgb565;
+    use fixel::color::modulate_rgb;
+    use fixel::geometry::{Cull, Vertex, Viewport};
+    use fixel::math::Fx;
+    use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+    use fixel::shading::noise::{SolidShader, SolidTimesTexture};
+    use fixel::shading::{Replace, Shader, TexBinding};
+    use fixel::surface::Frame;
+    use fixel::texture::{Bilinear, Lod, MipTexture, Repeat, Texture};
+
+    let mut texels = vec![Rgb565::default(); 32 * 32];
+    fixel::demo::checker_texture(32, 32, &mut texels).unwrap();
+    let chain = MipTexture::single(Texture::new(&texels, 32, 32).unwrap());
+    let bind = || TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
+    let ramps = Ramps::new().unwrap();
+    // A receding wall: (x_ndc, y_ndc, w, u, v, object x, y, z in cells).
+    let corner = |xn: f64, yn: f64, w: f64, u: f64, v: f64, p: [f64; 3]| {
+        let pos = [xn * w, yn * w, 0.5 * w - 0.3, w].map(Fx::from_num);
+        let b = |c: f64| (c * 65536.0).round() as i32;
+        (pos, [b(u), b(v), b(p[0]), b(p[1]), b(p[2]), 256 << 16])
+    };
+    let c = [
+        corner(-0.9, 0.8, 1.0, 0.0, 0.0, [0.1, 3.0, 0.3]),
+        corner(-0.9, -0.8, 1.0, 0.0, 2.0, [0.1, 0.1, 0.3]),
+        corner(0.9, -0.2, 4.0, 3.0, 2.0, [6.1, 0.1, 0.3]),
+        corner(0.9, 0.2, 4.0, 3.0, 0.0, [6.1, 3.0, 0.3]),
+    ];
+    let quad = |f: &dyn Fn(&[i32; 6]) -> Vec<i32>| -> Vec<[([Fx; 4], Vec<i32>); 3]> {
+        [[0, 1, 2], [0, 2, 3]]
+            .iter()
+            .map(|t| t.map(|k| (c[k].0, f(&c[k].1))))
+            .collect()
+    };
+    fn render<S: Shader<Varyings = [i32; N]>, const N: usize>(
+        s: S,
+        tris: Vec<[([Fx; 4], Vec<i32>); 3]>,
+    ) -> Vec<u16> {
+        let tris: Vec<[Vertex<N>; 3]> = tris
+            .into_iter()
+            .map(|t| t.map(|(p, v)| Vertex::new(p, core::array::from_fn(|i| v[i]))))
+            .collect();
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(
+            s,
+            Viewport::new(0, 0, 160, 120).unwrap(),
+            Cull::Back,
+        )
+        .unwrap();
+        let mut color = vec![Rgb565::default(); 160 * 120];
+        let mut frame = Frame::new(&mut color, 160, 120).unwrap();
+        draw.clip_triangles(&tris, &mut frame);
+        color
+            .iter()
+            .map(|&p| RawU16::from(p).into_inner())
+            .collect()
+    }
+    let band = BandLimit::new(5);
+    let both = render(
+        SolidTimesTexture {
+            tex: bind(),
+            pattern: ramps.marble(),
+            octaves: band,
+            granularity: LodGranularity::Span,
+        },
+        quad(&|v| v.to_vec()),
+    );
+    let tex = render(Replace { tex: bind() }, quad(&|v| v[..2].to_vec()));
+    let solid = render(
+        SolidShader::new(ramps.marble(), band),
+        quad(&|v| v[2..].to_vec()),
+    );
+    let f = |c: u16| {
+        let (r, g, b) = (
+            u32::from(c >> 11),
+            u32::from((c >> 5) & 63),
+            u32::from(c & 31),
+        );
+        (
+            ((r * 256 + 15) / 31) as u16,
+            ((g * 256 + 31) / 63) as u16,
+            ((b * 256 + 15) / 31) as u16,
+        )
+    };
+    let mut covered = 0;
+    for i in 0..both.len() {
+        if solid[i] != 0 || tex[i] != 0 {
+            covered += 1;
+            let (r, g, b) = f(solid[i]);
+            assert_eq!(both[i], modulate_rgb(tex[i], r, g, b), "pixel {i}");
+        }
+    }
+    assert!(covered > 5000);
+}

@@ -11,6 +11,7 @@
 //!   3D + time).
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map (seed `000` §4.3), trilinear
 //!   (`cargo xtask bake-light3d`).
+//! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light.
 //! * [`SolidMesh`]: mesh vertices with the object-space point as varyings; [`presets`]: the
 //!   demonstration colours and parameters.
 //!
@@ -80,6 +81,7 @@
 //! assert!((0..65_536).contains(&t));
 //! ```
 
+mod compose;
 mod flame;
 mod lightmap3d;
 mod patterns;
@@ -88,6 +90,7 @@ mod scene;
 mod solid;
 mod turbulence;
 
+pub use compose::SolidTimesTexture;
 pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
 };
