@@ -56,7 +56,7 @@ pub fn flame(ramp: &Ramp, x: i32, y: i32, t: i32, octaves: u32) -> u16 {
     let arg = x.unsigned_abs().min(1 << 17) as i32 + (y.clamp(0, 1 << 17) >> 1) + bend;
     let index = (arg >> 8).clamp(0, 255) as u8;
     // Height fade 1 − y'/h with the height pushed by the turbulence too.
-    let fade = (65_536 - y + (bend >> 1)).clamp(0, 65_536);
+    let fade = (65_536 - y.clamp(-65_536, 1 << 17) + (bend >> 1)).clamp(0, 65_536);
     modulate_scalar(ramp.at(index), (fade >> 8) as u16)
 }
 

@@ -196,7 +196,9 @@ fn lerp(a: i32, b: i32, w: i32) -> i32 {
 #[inline]
 pub fn noise3(x: i32, y: i32, z: i32) -> i32 {
     // Cell (mod 256) and Q16 fraction; arithmetic shift floors negative coordinates.
-    let (xi, yi, zi) = ((x >> 16) as u32, (y >> 16) as u32, (z >> 16) as u32);
+    // Cells masked to 0..=255 first, so every hash sum below stays under 512.
+    let cell = |c: i32| ((c >> 16) & 255) as u32;
+    let (xi, yi, zi) = (cell(x), cell(y), cell(z));
     let (xf, yf, zf) = (x as u32 & 0xFFFF, y as u32 & 0xFFFF, z as u32 & 0xFFFF);
     let (u, v, w) = (fade_q14(xf), fade_q14(yf), fade_q14(zf));
     // Offsets from the low corner (Q15, 0..32767) and from the high one (−32768..−1).
