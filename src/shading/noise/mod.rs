@@ -32,9 +32,9 @@
 //!
 //! # Cost
 //!
-//! One [`noise3`] call: **219 instructions on Cortex-M4F, 292 on Cortex-M0+** (exact QEMU
+//! One [`noise3`] call: **218 instructions on Cortex-M4F, 292 on Cortex-M0+** (exact QEMU
 //! counts, firmware bin `noise_cost`, loop included). One octave of turbulence adds about
-//! 195 (M4F) and 295 (M0+) instructions per pixel; the README's section "Solid textures
+//! 194 (M4F) and 295 (M0+) instructions per pixel; the README's section "Solid textures
 //! (Perlin noise)" has the per-octave table and the errors. Flash: about 1.9 KB for
 //! band-limited turbulence with the noise inlined, plus the 256-byte permutation and the
 //! 514-byte fade table; nothing for draws that do not use it.
