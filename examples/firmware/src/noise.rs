@@ -12,7 +12,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{sin_cos, Angle, Fx, Mat4, Vec3};
-use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw};
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::presets::{marble_sphere_model, SHOWCASE_SCALE};
 use fixel::shading::noise::SolidMesh;
@@ -121,8 +121,18 @@ pub fn render<S: Shader<Varyings = [i32; 4]>>(
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    let draw =
-        ShadedDraw::<S, Exact, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    render_in::<S, Exact>(shader, buf, pause, resume)
+}
+
+/// [`render`] with projection `P` (the scene uses [`Exact`]; `report_noise` also measures
+/// `SubdividedBy<3>`, perspective-correct every 8 pixels).
+pub fn render_in<S: Shader<Varyings = [i32; 4]>, P: ProjectionStage>(
+    shader: S,
+    buf: &mut NoiseBuffers,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let draw = ShadedDraw::<S, P, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
     vertices(&mut buf.verts);
     let tri = |verts: &[Option<Vertex<4>>; VERTS], t: &[u16; 3]| -> Option<[Vertex<4>; 3]> {
         let v = |k: usize| verts.get(usize::from(t[k])).copied().flatten();

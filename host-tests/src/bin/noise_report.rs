@@ -7,8 +7,8 @@
 //!
 //! * The firmware scene (`examples/firmware/src/noise.rs`: the marble sphere, 320 x 240, 8-row
 //!   bands), one row per variant of `report_noise`: marble with 0 to 6 fixed octaves, marble
-//!   band-limited (at most 6, footprint per span or per pixel), wood and granite
-//!   band-limited. Host ns/px (the firmware's band code, median of N runs), exact
+//!   band-limited (at most 6, footprint per span or per pixel; and with the projection
+//!   subdivided every 8 pixels instead of exact), wood and granite band-limited. Host ns/px (the firmware's band code, median of N runs), exact
 //!   instructions per pixel on Cortex-M0+ and M4F (from `mcu.tsv`, checksums checked against
 //!   this program's), error against the f64 reference with the same octave rule, and
 //!   against the 6 x 6 supersampled, 8-octave f64 reference (the ideal).
@@ -32,7 +32,7 @@ use std::time::Instant;
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
-use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw, SubdividedBy};
 use fixel::shading::noise::{BandLimit, Fixed, Ramps, SolidShader};
 use fixel::shading::Shader;
 use fixel::surface::Frame;
@@ -79,12 +79,18 @@ fn sphere_frame<S: Shader<Varyings = [i32; 4]>>(
     tris: &[[Vertex<4>; 3]],
     runs: u32,
 ) -> (Vec<u16>, Vec<bool>, u32, f64) {
-    let draw = ShadedDraw::<S, Exact, NoDepth>::new(
-        shader,
-        Viewport::new(0, 0, W, H).unwrap(),
-        Cull::Back,
-    )
-    .unwrap();
+    sphere_frame_in::<S, Exact>(shader, tris, runs)
+}
+
+/// [`sphere_frame`] with projection `J`.
+fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
+    shader: S,
+    tris: &[[Vertex<4>; 3]],
+    runs: u32,
+) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    let draw =
+        ShadedDraw::<S, J, NoDepth>::new(shader, Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
+            .unwrap();
     let n = (W * H) as usize;
     let mut color = vec![Rgb565::new(0, 0, 0); n];
     let mut frame = Frame::new(&mut color, W, H).unwrap();
@@ -114,7 +120,7 @@ fn sphere_frame<S: Shader<Varyings = [i32; 4]>>(
     let mut pixels = 1;
     for _ in 0..runs {
         let t0 = Instant::now();
-        let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+        let r = noise::render_in::<S, J>(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
         times.push(t0.elapsed().as_secs_f64());
         assert_eq!(r.checksum, sum.0, "band and whole frames differ");
         pixels = r.stats.pixels.max(1);
@@ -247,6 +253,9 @@ fn main() {
     px_shader.granularity = LodGranularity::Pixel;
     let res = sphere_frame(px_shader, &tris, runs);
     measure("marble-band6-pixel", res, marble, rband, &ideal_marble);
+    let res =
+        sphere_frame_in::<_, SubdividedBy<3>>(SolidShader::new(ramps.marble(), band), &tris, runs);
+    measure("marble-band6-span-sub8", res, marble, rband, &ideal_marble);
     let ideal_wood = ideal_cache(wood);
     let res = sphere_frame(SolidShader::new(ramps.wood(), band), &tris, runs);
     measure("wood-band6-span", res, wood, rband, &ideal_wood);

@@ -4,6 +4,7 @@
 #![no_std]
 #![no_main]
 
+use fixel::pipeline::{Exact, ProjectionStage, SubdividedBy};
 use fixel::shading::noise::{BandLimit, Fixed, Octaves, Pattern, Ramps, SolidShader};
 use fixel::texture::LodGranularity;
 use fixel_firmware::{bench_end, bench_mark, bench_start, noise, outln, report_begin};
@@ -16,8 +17,17 @@ fn mode<P: Pattern, O: Octaves>(
     shader: SolidShader<P, O>,
     buf: &mut noise::NoiseBuffers,
 ) -> bool {
+    mode_in::<P, O, Exact>(name, shader, buf)
+}
+
+#[inline(never)]
+fn mode_in<P: Pattern, O: Octaves, J: ProjectionStage>(
+    name: &str,
+    shader: SolidShader<P, O>,
+    buf: &mut noise::NoiseBuffers,
+) -> bool {
     bench_start();
-    let r = noise::render(shader, buf, &mut || bench_end(), &mut || bench_start());
+    let r = noise::render_in::<_, J>(shader, buf, &mut || bench_end(), &mut || bench_start());
     bench_end();
     bench_mark();
     match r {
@@ -68,6 +78,11 @@ fn run() -> bool {
     px.granularity = LodGranularity::Pixel;
     ok &= mode("marble-band6-pixel", px, buf);
     ok &= mode("wood-band6-span", SolidShader::new(ramps.wood(), band), buf);
+    ok &= mode_in::<_, _, SubdividedBy<3>>(
+        "marble-band6-span-sub8",
+        SolidShader::new(ramps.marble(), band),
+        buf,
+    );
     ok &= mode(
         "granite-band6-span",
         SolidShader::new(ramps.granite(), band),
