@@ -7,6 +7,7 @@
 pub mod adapter;
 pub mod golden;
 pub mod metrics;
+pub mod noise_scenes;
 pub mod plot_font;
 pub mod png_io;
 pub mod reference;

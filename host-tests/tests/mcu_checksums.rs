@@ -177,4 +177,29 @@ fn mcu_frames() {
         (r.checksum, r.stats.pixels),
         "floor_bilinear: bands differ from the whole frame"
     );
+    // Printed from this test, in order: a parallel test's line could follow the quiet
+    // harness's progress dots and not start with `mcu-expected`.
+    mcu_noise_frame();
+    mcu_noise_flame();
+}
+
+#[path = "../../examples/firmware/src/noise.rs"]
+#[allow(dead_code)]
+mod noise;
+
+/// The solid-texture firmware (`examples/firmware/src/bin/noise.rs`): the same band code.
+fn mcu_noise_frame() {
+    use fixel::shading::noise::{BandLimit, Ramps, SolidShader};
+    let ramps = Ramps::new().unwrap();
+    let mut buf = Box::new(noise::NoiseBuffers::new());
+    let shader = SolidShader::new(ramps.marble(), BandLimit::new(6));
+    let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+    print("noise", &r);
+}
+
+/// The flame firmware (`examples/firmware/src/bin/noise_flame.rs`).
+fn mcu_noise_flame() {
+    let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
+    let r = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
+    print("noise_flame", &r);
 }

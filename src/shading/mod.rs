@@ -179,5 +179,6 @@ pub trait Shader: Copy {
     fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
 }
 
+pub mod noise;
 pub mod pcf;
 pub mod shadow;

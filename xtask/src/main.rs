@@ -5,6 +5,7 @@
 //! dependency is the `png` decoder for `bake`.
 
 mod bake;
+mod light3d;
 
 mod mcu;
 
@@ -26,7 +27,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 4] = ["showcase", "scenes", "preview", "shadow"];
+const RENDER_EXAMPLES: [&str; 5] = ["showcase", "scenes", "preview", "shadow", "noise"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -47,7 +48,7 @@ COMMANDS:
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
     render      Render the demo scenes (examples `showcase`, `scenes`, `preview` and
-                `shadow`, release) to target/pictures/*.png
+                `shadow` and `noise`, release) to target/pictures/*.png
     count [--frames N] [FILTER...]
                 Exact x86_64 instructions per drawn pixel of the benchmark
                 scenes and modes: builds the `count_scene` example (release),
@@ -90,6 +91,10 @@ COMMANDS:
                 file stem in upper case; --levels defaults to full (down to
                 1x1); --rgb565 is the path of the colour type in the output
                 (default embedded_graphics_core::pixelcolor::Rgb565)
+    bake-light3d <output.rs> [--side N] [--origin X,Y,Z] [--texel LOG2] [--ambient A]
+                 --light X,Y,Z,P [--light ...] [--name NAME]
+                Bake a 3D light map (fixel::shading::noise::LightMap3d) from point
+                lights with inverse-square falloff (see xtask/src/light3d.rs)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -121,6 +126,13 @@ fn main() -> ExitCode {
         "mcu" => mcu::mcu(rest),
         "size" => mcu::size(rest),
         "report" => report(rest),
+        "bake-light3d" => match light3d::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cargo xtask bake-light3d: {e}");
+                ExitCode::from(1)
+            }
+        },
         "bake" => match bake::run(rest) {
             Ok(()) => ExitCode::SUCCESS,
             Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake: {e}")),
@@ -839,6 +851,12 @@ fn report(flags: &[String]) -> ExitCode {
         "shadow_report",
     ];
     if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s]].concat()).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    // Solid textures: their own report, same output directory and MCU counts.
+    args[6] = "noise_report";
+    if let Err(e) = cargo(&args).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }

@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 10] = [
+const SCENES: [&str; 12] = [
     "cube",
     "sphere",
     "floor",
@@ -63,6 +63,9 @@ const SCENES: [&str; 10] = [
     "shadow_pcf2x2",
     "shadow_pcf3x3",
     "shadow_spot",
+    // Solid textures: the marble sphere and the flame.
+    "noise",
+    "noise_flame",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
@@ -169,7 +172,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 7] = [
+const SIZES: [(&str, &str); 8] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -177,6 +180,10 @@ const SIZES: [(&str, &str); 7] = [
     ("size_lighting", "+ lighting"),
     ("size_depth", "+ depth buffer"),
     ("size_everything", "everything (Draw::dynamic)"),
+    (
+        "size_noise",
+        "lit band-limited marble solid texture (ShadedDraw, no texture)",
+    ),
 ];
 
 const QEMU_TIMEOUT: Duration = Duration::from_secs(120);
@@ -1028,11 +1035,12 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 4] = [
+const REPORT_BINS: [&str; 5] = [
     "report_cube",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
+    "report_noise",
 ];
 
 /// One mode of one report firmware on one MCU.

@@ -304,3 +304,4 @@ macro_rules! report_modes {
     }};
 }
 pub mod shadow;
+pub mod noise;

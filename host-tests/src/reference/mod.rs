@@ -244,4 +244,5 @@ fn shade_fragment(
     img.covered[idx] = true;
     img.depth[idx] = z;
 }
+pub mod noise;
 pub mod shadow;

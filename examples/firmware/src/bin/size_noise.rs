@@ -1,0 +1,89 @@
+//! `cargo xtask size`: one lit triangle with a band-limited marble solid texture
+//! (`SolidShader<Marble, BandLimit>`, exact perspective, no depth) in 8-row bands: the flash
+//! of Perlin noise, turbulence, the marble pattern and its ramp. The other `size_*` images
+//! do not link any of it (no `PERM` or `FADE_Q15` symbol in them).
+#![no_std]
+#![no_main]
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::geometry::{Cull, Viewport};
+use fixel::math::{Fx, Mat4, Vec3};
+use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+use fixel::scene::DirectionalLight;
+use fixel::shading::noise::presets::{MARBLE_AMP, MARBLE_FREQ, MARBLE_KEYS};
+use fixel::shading::noise::{BandLimit, Marble, Ramp, SolidMesh, SolidShader};
+use fixel::surface::Frame;
+use fixel_firmware::outln;
+use fixel_firmware::scenes::{Fnv1a, H, ROWS, W};
+
+static POSITIONS: [Vec3; 3] = [
+    Vec3::new(
+        Fx::from_bits(-65536),
+        Fx::from_bits(-65536),
+        Fx::from_bits(-3 << 16),
+    ),
+    Vec3::new(
+        Fx::from_bits(65536),
+        Fx::from_bits(-65536),
+        Fx::from_bits(-3 << 16),
+    ),
+    Vec3::new(
+        Fx::from_bits(0),
+        Fx::from_bits(65536),
+        Fx::from_bits(-4 << 16),
+    ),
+];
+static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
+static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
+
+fn run() -> bool {
+    let Ok(ramp) = Ramp::sine(core::hint::black_box(&MARBLE_KEYS)) else {
+        return false;
+    };
+    let marble = Marble {
+        ramp: &ramp,
+        freq: MARBLE_FREQ,
+        amp: MARBLE_AMP,
+    };
+    let shader = SolidShader::new(marble, BandLimit::new(core::hint::black_box(6)));
+    let Ok(vp) = Viewport::new(0, 0, W, H) else {
+        return false;
+    };
+    let Ok(draw) = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::Back) else {
+        return false;
+    };
+    let mesh = SolidMesh {
+        positions: &POSITIONS,
+        normals: Some(&NORMALS),
+        indices: &INDICES,
+        scale: Fx::from_num(2),
+    };
+    let mut color = [Rgb565::new(0, 0, 0); (W * ROWS) as usize];
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0;
+    for band in 0..H / ROWS {
+        let Ok(frame) = Frame::new(&mut color, W, ROWS) else {
+            return false;
+        };
+        let mut frame = frame.at_row(band * ROWS);
+        frame.clear(Rgb565::new(0, 0, 0));
+        if draw.check_target(&frame).is_err() {
+            return false;
+        }
+        mesh.triangles(
+            &Mat4::IDENTITY,
+            &demo::camera(20),
+            Some(&DirectionalLight::default()),
+            |t| {
+                // The target was checked above.
+                pixels += draw.clip_triangles(&[*t], &mut frame).unwrap_or(0);
+            },
+        );
+        sum.pixels(frame.pixels());
+    }
+    outln!("checksum=0x{:08x} pixels={}", sum.0, pixels);
+    true
+}
+
+fixel_firmware::entry!(run);

@@ -1,0 +1,461 @@
+//! Speed against error for the solid textures (issue 13), run by `cargo xtask report` after
+//! the main report:
+//!
+//! ```text
+//! noise_report --out DIR [--runs N] [--mcu mcu.tsv]
+//! ```
+//!
+//! * The firmware scene (`examples/firmware/src/noise.rs`: the marble sphere, 320 x 240, 8-row
+//!   bands), one row per variant of `report_noise`: marble with 0 to 6 fixed octaves, marble
+//!   band-limited (at most 6, footprint per span or per pixel; and with the projection
+//!   subdivided every 8 pixels instead of exact), wood and granite band-limited. Host ns/px (the firmware's band code, median of N runs), exact
+//!   instructions per pixel on Cortex-M0+ and M4F (from `mcu.tsv`, checksums checked against
+//!   this program's), error against the f64 reference with the same octave rule, and
+//!   against the 6 x 6 supersampled, 8-octave f64 reference (the ideal).
+//! * The granite floor running to the horizon (`host_tests::noise_scenes`, 160 x 120): fixed
+//!   1 to 6 octaves against band-limited, same figures on the host, where band-limiting
+//!   matters most.
+//!
+//! Writes `noise.md`, `noise_plot.png` (cost against PSNR to the ideal) and the frames.
+
+#[path = "../../../examples/firmware/src/noise.rs"]
+#[allow(dead_code)]
+mod noise;
+#[path = "../../../examples/firmware/src/scenes.rs"]
+#[allow(dead_code)]
+mod scenes;
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw, SubdividedBy};
+use fixel::shading::noise::{BandLimit, Fixed, Ramps, SolidShader};
+use fixel::shading::Shader;
+use fixel::surface::Frame;
+use fixel::texture::LodGranularity;
+use host_tests::metrics::{compare_rgb565, Report};
+use host_tests::noise_scenes::{OctaveMode, SolidScene};
+use host_tests::png_io::write_png_rgb8;
+use host_tests::reference::noise::{render_solid, RefOctaves, RefPattern};
+
+const W: u32 = scenes::W;
+const H: u32 = scenes::H;
+
+/// One measured variant.
+struct Row {
+    name: String,
+    ns_px: f64,
+    m0: Option<(f64, bool)>,
+    m4: Option<(f64, bool)>,
+    vs_ref: Report,
+    vs_ideal: Report,
+}
+
+fn bits(px: &[Rgb565]) -> Vec<u16> {
+    px.iter().map(|&c| RawU16::from(c).into_inner()).collect()
+}
+
+/// The sphere's triangles, from the firmware's vertex code.
+fn sphere_tris() -> Vec<[Vertex<4>; 3]> {
+    let mut verts = [None; noise::VERTS];
+    noise::vertices(&mut verts);
+    (0..noise::TRIS)
+        .filter_map(|t| {
+            let i = noise::sphere_triangle(t);
+            let v = |k: usize| verts[usize::from(i[k])];
+            Some([v(0)?, v(1)?, v(2)?])
+        })
+        .collect()
+}
+
+/// Whole-frame pixels, coverage and FNV-1a checksum of the firmware scene with `shader`,
+/// and host ns/px of the firmware's band code (median of `runs`).
+fn sphere_frame<S: Shader<Varyings = [i32; 4]>>(
+    shader: S,
+    tris: &[[Vertex<4>; 3]],
+    runs: u32,
+) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    sphere_frame_in::<S, Exact>(shader, tris, runs)
+}
+
+/// [`sphere_frame`] with projection `J`.
+fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
+    shader: S,
+    tris: &[[Vertex<4>; 3]],
+    runs: u32,
+) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    let draw =
+        ShadedDraw::<S, J, NoDepth>::new(shader, Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
+            .unwrap();
+    let n = (W * H) as usize;
+    let mut color = vec![Rgb565::new(0, 0, 0); n];
+    let mut frame = Frame::new(&mut color, W, H).unwrap();
+    frame.clear(Rgb565::new(0, 0, 0));
+    for t in tris {
+        draw.clip_triangles(&[*t], &mut frame).unwrap();
+    }
+    let mut sum = scenes::Fnv1a::default();
+    sum.pixels(frame.pixels());
+    let px = bits(frame.pixels());
+    // Coverage: the same triangles drawn flat white into a black frame.
+    let marker = ShadedDraw::<_, Exact, NoDepth>::new(
+        fixel::shading::Flat(0xFFFF),
+        Viewport::new(0, 0, W, H).unwrap(),
+        Cull::Back,
+    )
+    .unwrap();
+    let mut mc = vec![Rgb565::new(0, 0, 0); n];
+    let mut mf = Frame::new(&mut mc, W, H).unwrap();
+    for t in tris {
+        let flat: [Vertex<0>; 3] = t.map(|v| Vertex::new(v.position, []));
+        marker.clip_triangles(&[flat], &mut mf).unwrap();
+    }
+    let cov: Vec<bool> = bits(mf.pixels()).iter().map(|&c| c != 0).collect();
+    let mut buf = Box::new(noise::NoiseBuffers::new());
+    let mut times = Vec::new();
+    let mut pixels = 1;
+    for _ in 0..runs {
+        let t0 = Instant::now();
+        let r = noise::render_in::<S, J>(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+        times.push(t0.elapsed().as_secs_f64());
+        assert_eq!(r.checksum, sum.0, "band and whole frames differ");
+        pixels = r.stats.pixels.max(1);
+    }
+    times.sort_by(f64::total_cmp);
+    (
+        px,
+        cov,
+        sum.0,
+        times[times.len() / 2] * 1e9 / f64::from(pixels),
+    )
+}
+
+fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Vec::new();
+    };
+    text.lines()
+        .skip(1)
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split('\t').collect();
+            if f.len() < 6 || f[0] != "noise" {
+                return None;
+            }
+            let insns: f64 = f[3].parse().ok()?;
+            let px: f64 = f[4].parse().ok()?;
+            Some((
+                f[1].to_string(),
+                f[2].to_string(),
+                insns / px.max(1.0),
+                f[5].to_string(),
+            ))
+        })
+        .collect()
+}
+
+fn rgb8(px: &[u16]) -> Vec<u8> {
+    px.iter()
+        .flat_map(|&c| {
+            let (r, g, b) = ((c >> 11) & 31, (c >> 5) & 63, c & 31);
+            [
+                ((r << 3) | (r >> 2)) as u8,
+                ((g << 2) | (g >> 4)) as u8,
+                ((b << 3) | (b >> 2)) as u8,
+            ]
+        })
+        .collect()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 5u32, None);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
+            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
+            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
+            other => {
+                eprintln!(
+                    "usage: noise_report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)"
+                );
+                std::process::exit(2);
+            }
+        }
+    }
+    std::fs::create_dir_all(&out).expect("output directory");
+    let font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    match std::fs::read(font_path) {
+        Ok(font) => {
+            let _ = plotters::style::register_font(
+                "sans-serif",
+                plotters::style::FontStyle::Normal,
+                Box::leak(font.into_boxed_slice()),
+            );
+        }
+        Err(e) => eprintln!("noise_report: {font_path}: {e}; no plot"),
+    }
+    let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();
+    let ramps = Ramps::new().expect("ramps");
+    let tris = sphere_tris();
+    let [marble, wood, granite] = RefPattern::presets();
+
+    // ---- The firmware scene.
+    let mut rows = Vec::new();
+    let ideal_cache = |p: RefPattern| render_solid(&tris, p, RefOctaves::Fixed(8), 6, W, H);
+    let ideal_marble = ideal_cache(marble);
+    let mut measure = |name: &str,
+                       res: (Vec<u16>, Vec<bool>, u32, f64),
+                       pattern: RefPattern,
+                       oct: RefOctaves,
+                       ideal: &host_tests::reference::noise::RefSolidImage| {
+        let (px, cov, sum, ns) = res;
+        let r = render_solid(&tris, pattern, oct, 1, W, H);
+        let vs_ref = compare_rgb565(&px, &cov, &r.rgb565(), &r.covered);
+        let vs_ideal = compare_rgb565(&px, &cov, &ideal.rgb565(), &ideal.covered);
+        let get = |t: &str| {
+            mcu.iter()
+                .find(|(m, tt, _, _)| m == name && tt == t)
+                .map(|(_, _, ipp, c)| (*ipp, *c == format!("0x{sum:08x}")))
+        };
+        if name == "marble-band6-span" {
+            let _ = write_png_rgb8(out.join("noise_marble.png"), W, H, &rgb8(&px));
+        }
+        eprintln!("noise_report: {name}: {ns:.1} ns/px, {vs_ref}");
+        rows.push(Row {
+            name: name.to_string(),
+            ns_px: ns,
+            m0: get("Cortex-M0+"),
+            m4: get("Cortex-M4F"),
+            vs_ref,
+            vs_ideal,
+        });
+    };
+    for k in 0..=6u8 {
+        let res = sphere_frame(SolidShader::new(ramps.marble(), Fixed(k)), &tris, runs);
+        measure(
+            &format!("marble-fixed{k}"),
+            res,
+            marble,
+            RefOctaves::Fixed(u32::from(k)),
+            &ideal_marble,
+        );
+    }
+    let band = BandLimit::new(6);
+    let rband = RefOctaves::Band { max: 6, bias: 0.0 };
+    let res = sphere_frame(SolidShader::new(ramps.marble(), band), &tris, runs);
+    measure("marble-band6-span", res, marble, rband, &ideal_marble);
+    let mut px_shader = SolidShader::new(ramps.marble(), band);
+    px_shader.granularity = LodGranularity::Pixel;
+    let res = sphere_frame(px_shader, &tris, runs);
+    measure("marble-band6-pixel", res, marble, rband, &ideal_marble);
+    let res =
+        sphere_frame_in::<_, SubdividedBy<3>>(SolidShader::new(ramps.marble(), band), &tris, runs);
+    measure("marble-band6-span-sub8", res, marble, rband, &ideal_marble);
+    let ideal_wood = ideal_cache(wood);
+    let res = sphere_frame(SolidShader::new(ramps.wood(), band), &tris, runs);
+    measure("wood-band6-span", res, wood, rband, &ideal_wood);
+    let ideal_granite = ideal_cache(granite);
+    let res = sphere_frame(SolidShader::new(ramps.granite(), band), &tris, runs);
+    measure("granite-band6-span", res, granite, rband, &ideal_granite);
+
+    // ---- The granite floor (host only).
+    let mut floor_rows = Vec::new();
+    let floor_ideal = SolidScene::Granite.reference(RefOctaves::Fixed(8), 6);
+    let floor_ideal565 = floor_ideal.rgb565();
+    let modes: Vec<(String, OctaveMode)> = (1..=6u8)
+        .map(|k| (format!("granite-fixed{k}"), OctaveMode::Fixed(k)))
+        .chain([
+            (
+                "granite-band6-span".to_string(),
+                OctaveMode::Band(6, LodGranularity::Span),
+            ),
+            (
+                "granite-band6-pixel".to_string(),
+                OctaveMode::Band(6, LodGranularity::Pixel),
+            ),
+        ])
+        .collect();
+    for (name, mode) in modes {
+        let mut times = Vec::new();
+        let mut res = (Vec::new(), Vec::new());
+        for _ in 0..runs {
+            let t0 = Instant::now();
+            res = SolidScene::Granite.draw(&ramps, mode);
+            times.push(t0.elapsed().as_secs_f64());
+        }
+        times.sort_by(f64::total_cmp);
+        let (px, cov) = res;
+        let n = cov.iter().filter(|&&c| c).count().max(1);
+        let r = SolidScene::Granite.reference(mode.reference(), 1);
+        let vs_ref = compare_rgb565(&px, &cov, &r.rgb565(), &r.covered);
+        let vs_ideal = compare_rgb565(&px, &cov, &floor_ideal565, &floor_ideal.covered);
+        if name == "granite-fixed6" || name == "granite-band6-span" {
+            let _ = write_png_rgb8(
+                out.join(format!("noise_floor_{name}.png")),
+                160,
+                120,
+                &rgb8(&px),
+            );
+        }
+        floor_rows.push(Row {
+            name,
+            ns_px: times[times.len() / 2] * 1e9 / n as f64,
+            m0: None,
+            m4: None,
+            vs_ref,
+            vs_ideal,
+        });
+    }
+    let _ = write_png_rgb8(
+        out.join("noise_floor_ideal.png"),
+        160,
+        120,
+        &rgb8(&floor_ideal565),
+    );
+
+    // ---- Markdown.
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "# Solid textures (Perlin noise): speed against error\n\n\
+         Reproduce: `cargo xtask report` (or `cargo run --release -p host-tests --bin noise_report -- --out target/report [--mcu target/report/mcu.tsv]`).\n\n\
+         Error columns: RGB565 LSBs and PSNR of fixel's frame against the f64 reference with the \
+         same octave rule (`ref`: fixed-point error) and against a 6 x 6 supersampled, 8-octave \
+         f64 reference (`ideal`: fixed-point plus aliasing and truncation error). Instructions \
+         per pixel: exact (QEMU), frame 0, pixels written, geometry and set-up included.\n"
+    );
+    let table = |md: &mut String, title: &str, rows: &[Row]| {
+        let _ = writeln!(md, "## {title}\n");
+        let _ = writeln!(
+            md,
+            "| variant | host ns/px | M0+ instr/px | M4F instr/px | PSNR ref | max ref | p99 ref | PSNR ideal | mean ideal |\n|---|---|---|---|---|---|---|---|---|"
+        );
+        for r in rows {
+            let f = |v: Option<(f64, bool)>| {
+                v.map_or("-".to_string(), |(x, ok)| {
+                    format!("{x:.0}{}", if ok { "" } else { " (**checksum!**)" })
+                })
+            };
+            let _ = writeln!(
+                md,
+                "| `{}` | {:.1} | {} | {} | {:.2} | {} | {} | {:.2} | {:.2} |",
+                r.name,
+                r.ns_px,
+                f(r.m0),
+                f(r.m4),
+                r.vs_ref.psnr_db,
+                r.vs_ref.max,
+                r.vs_ref.p99,
+                r.vs_ideal.psnr_db,
+                r.vs_ideal.mean
+            );
+        }
+        let _ = writeln!(md);
+    };
+    table(
+        &mut md,
+        "Firmware scene: the marble sphere, 320 x 240 (17,306 pixels)",
+        &rows,
+    );
+    table(
+        &mut md,
+        "The granite floor to the horizon, 160 x 120 (host)",
+        &floor_rows,
+    );
+    std::fs::write(out.join("noise.md"), &md).expect("write noise.md");
+    if let Err(e) = plot(&rows, &floor_rows, &out.join("noise_plot.png")) {
+        eprintln!("noise_report: plot: {e}");
+    }
+    print!("{md}");
+}
+
+/// Left: M4F instructions per pixel (host ns/px without MCU figures) against PSNR to the
+/// ideal on the sphere; right: host ns/px against PSNR to the ideal on the floor.
+fn plot(rows: &[Row], floor: &[Row], path: &Path) -> Result<(), String> {
+    use plotters::prelude::*;
+    let (w, h) = (1200u32, 520u32);
+    let mut buf = vec![255u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let (left, right) = root.split_horizontally(w / 2);
+        let mcu = rows.iter().all(|r| r.m4.is_some());
+        for (area, rows, title, xdesc, use_m4, strip) in [
+            (
+                &left,
+                rows,
+                "marble sphere (firmware scene)",
+                if mcu {
+                    "Cortex-M4F instructions / pixel"
+                } else {
+                    "host ns / pixel"
+                },
+                mcu,
+                "marble-",
+            ),
+            (
+                &right,
+                floor,
+                "granite floor to the horizon",
+                "host ns / pixel",
+                false,
+                "granite-",
+            ),
+        ] {
+            let pts: Vec<(f64, f64, &str)> = rows
+                .iter()
+                .map(|r| {
+                    let x = if use_m4 {
+                        r.m4.map_or(r.ns_px, |m| m.0)
+                    } else {
+                        r.ns_px
+                    };
+                    (x, r.vs_ideal.psnr_db.min(99.0), r.name.as_str())
+                })
+                .collect();
+            let x1 = pts.iter().map(|p| p.0).fold(0.0, f64::max) * 1.25;
+            let (y0, y1) = pts
+                .iter()
+                .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+            let mut chart = ChartBuilder::on(area)
+                .caption(title, ("sans-serif", 18))
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(50)
+                .build_cartesian_2d(0.0..x1.max(1.0), (y0 - 1.0)..(y1 + 1.0))
+                .map_err(|e| e.to_string())?;
+            chart
+                .configure_mesh()
+                .x_desc(xdesc)
+                .y_desc("PSNR vs supersampled, dB")
+                .label_style(("sans-serif", 13))
+                .draw()
+                .map_err(|e| e.to_string())?;
+            for (x, y, name) in pts {
+                let band = name.contains("band");
+                let c = if band {
+                    RGBColor(200, 60, 40)
+                } else {
+                    RGBColor(40, 80, 200)
+                };
+                chart
+                    .draw_series(std::iter::once(Circle::new((x, y), 5, c.filled())))
+                    .map_err(|e| e.to_string())?;
+                chart
+                    .draw_series(std::iter::once(Text::new(
+                        name.replace(strip, ""),
+                        (x, y),
+                        ("sans-serif", 12).into_font(),
+                    )))
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        root.present().map_err(|e| e.to_string())?;
+    }
+    write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
+}
