@@ -178,3 +178,4 @@ pub trait Shader: Copy {
     /// [`Shader::DISCARDS`], or the depth is written anyway).
     fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
 }
+pub mod env;
