@@ -26,7 +26,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 3] = ["showcase", "scenes", "preview"];
+const RENDER_EXAMPLES: [&str; 4] = ["showcase", "scenes", "preview", "envmap"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel

@@ -117,12 +117,18 @@ pub fn face_coords(dir: [i32; 3]) -> FaceCoords {
     let n = ma.leading_zeros();
     let d = (ma << n) >> 16; // [2^15, 2^16)
     let r = recip16(d); // 2^31 / d, Q1.15
-    // |sc| / |ma| in Q16: (m / d) * 2^16 = m * (2^31 / d) / 2^15. m <= d, and m * r stays
-    // within 2^31 (1 + 2^-14) < 2^32.
+                        // |sc| / |ma| in Q16: (m / d) * 2^16 = m * (2^31 / d) / 2^15. m <= d, and m * r stays
+                        // within 2^31 (1 + 2^-14) < 2^32.
     let q = |m: u32| ((((m << n) >> 16) * r + (1 << 14)) >> 15).min(1 << 16);
     let (qs, qt) = (q(sm), q(tm));
     // s = (1 ± q) / 2 in Q16.
-    let half = |q: u32, neg: bool| if neg { (65536 - q) >> 1 } else { (65536 + q) >> 1 };
+    let half = |q: u32, neg: bool| {
+        if neg {
+            (65536 - q) >> 1
+        } else {
+            (65536 + q) >> 1
+        }
+    };
     FaceCoords {
         face,
         s: half(qs, sn),

@@ -47,3 +47,4 @@ pub mod reflect;
 
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+pub mod sky;

@@ -1,0 +1,222 @@
+//! Environment mapping showcase: a chrome sphere and a chrome torus in a cube-mapped
+//! outdoor scene (the procedural sky of `fixel::shading::env::sky`: sky, sun, a skyline of
+//! windowed buildings, a checkered ground), the background drawn from the same cube map.
+//!
+//! ```text
+//! cargo run --release --example envmap
+//! ```
+//!
+//! Writes to `target/pictures/`:
+//! * `envmap.png`: 320 x 240, per-pixel reflection, bilinear, 256-texel faces;
+//! * `envmap_faces.png`: the six faces as a cross (+Y on top, -Y below, -X +Z +X -Z across);
+//! * `envmap_vertex_vs_pixel.png`: the benchmark sphere (24 x 48), left per-vertex `r`,
+//!   right per-pixel `r`.
+
+mod common;
+
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+use fixel::shading::env::{
+    sky, CubeMap, EnvLookup, EnvVertices, ReflectPerPixel, ReflectPerVertex,
+};
+use fixel::surface::Frame;
+use fixel::texture::{Bilinear, Texture};
+use fixel::Rgb565;
+
+const W: u32 = 320;
+const H: u32 = 240;
+
+/// A torus about the y axis: major radius `a`, minor `b`, `nu` x `nv` quads.
+fn torus(a: f64, b: f64, nu: u16, nv: u16) -> (Vec<Vec3>, Vec<Vec3>, Vec<[u16; 3]>) {
+    let (mut p, mut n, mut idx) = (Vec::new(), Vec::new(), Vec::new());
+    for i in 0..=nu {
+        let u = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(nu);
+        for j in 0..=nv {
+            let v = 2.0 * std::f64::consts::PI * f64::from(j) / f64::from(nv);
+            let nn = [v.cos() * u.cos(), v.sin(), -v.cos() * u.sin()];
+            let c = [a * u.cos(), 0.0, -a * u.sin()];
+            p.push(Vec3::from_num(
+                c[0] + b * nn[0],
+                c[1] + b * nn[1],
+                c[2] + b * nn[2],
+            ));
+            n.push(Vec3::from_num(nn[0], nn[1], nn[2]));
+        }
+    }
+    let id = |i: u16, j: u16| i * (nv + 1) + j;
+    for i in 0..nu {
+        for j in 0..nv {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            idx.push([a, c, b]);
+            idx.push([a, d, c]);
+        }
+    }
+    (p, n, idx)
+}
+
+fn sky_faces(size: u32) -> Vec<Vec<Rgb565>> {
+    (0..6)
+        .map(|f| {
+            let mut t = vec![Rgb565::new(0, 0, 0); (size * size) as usize];
+            sky::sky_face(f, size, &mut t).expect("face");
+            t
+        })
+        .collect()
+}
+
+/// The cube map's colour along each pixel's view ray (camera at the origin, -z, 45 degrees).
+fn background<M: EnvLookup>(env: &M, frame: &mut [Rgb565], view: &Mat4) {
+    let f = f64::from(H) / 2.0 / (22.5f64).to_radians().tan();
+    for y in 0..H {
+        for x in 0..W {
+            let d = [
+                (f64::from(x) + 0.5 - f64::from(W) / 2.0) / f,
+                -(f64::from(y) + 0.5 - f64::from(H) / 2.0) / f,
+                -1.0,
+            ];
+            // World direction = view rotation transposed times d.
+            let m = &view.m;
+            let w = [0, 1, 2].map(|c| (0..3).map(|r| m[r][c].to_num::<f64>() * d[r]).sum::<f64>());
+            let dir = w.map(|c| (c * 16384.0) as i32);
+            frame[(y * W + x) as usize] = raw(env.lookup(dir));
+        }
+    }
+}
+
+fn raw(c: u16) -> Rgb565 {
+    Rgb565::new((c >> 11) as u8, ((c >> 5) & 63) as u8, (c & 31) as u8)
+}
+
+fn tris<const N: usize>(
+    p: &[Vec3],
+    n: &[Vec3],
+    idx: &[[u16; 3]],
+    vert: impl Fn(Vec3, Vec3) -> Option<Vertex<N>>,
+) -> Vec<[Vertex<N>; 3]> {
+    idx.iter()
+        .filter_map(|t| {
+            let v = t.map(|i| vert(p[usize::from(i)], n[usize::from(i)]));
+            Some([v[0]?, v[1]?, v[2]?])
+        })
+        .collect()
+}
+
+fn main() -> Result<(), fixel::Error> {
+    let out = common::out_dir();
+    let size = 256;
+    let faces = sky_faces(size);
+    let textures: [Texture<'_>; 6] =
+        core::array::from_fn(|i| Texture::new(&faces[i], size, size).expect("face"));
+    let cube = CubeMap::new(textures, Bilinear)?;
+    let proj = Mat4::perspective(Angle::from_degrees(fx(45)), fx(4.0 / 3.0), fx(0.5), fx(20))?;
+    let vp = Viewport::new(0, 0, W, H)?;
+
+    // The main picture: the camera looks a little down, from slightly above.
+    let view = Mat4::rotation_x(Angle::from_degrees(fx(8)));
+    let vproj = proj.mul(&view);
+    let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+    let mut depth = vec![0u16; (W * H) as usize];
+    background(&cube, &mut color, &view);
+    {
+        let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
+        let draw = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)?;
+        let eye = Vec3::ZERO;
+        let sphere = fixel::demo::sphere();
+        let model = Mat4::translation(Vec3::from_num(-1.05, -0.35, -5.2));
+        let s = EnvVertices::new(&model, &vproj, eye);
+        let st = tris(
+            &sphere.positions,
+            &sphere.normals,
+            &sphere.indices,
+            |p, n| s.per_pixel(Vec3::new(p.x * fx(0.75), p.y * fx(0.75), p.z * fx(0.75)), n),
+        );
+        draw.clip_triangles(&st, &mut frame)?;
+        let (tp, tn, ti) = torus(0.85, 0.32, 64, 24);
+        let model = Mat4::translation(Vec3::from_num(1.25, -0.2, -5.6))
+            * Mat4::rotation_x(Angle::from_degrees(fx(62)))
+            * Mat4::rotation_z(Angle::from_degrees(fx(-18)));
+        let s = EnvVertices::new(&model, &vproj, eye);
+        let tt = tris(&tp, &tn, &ti, |p, n| s.per_pixel(p, n));
+        draw.clip_triangles(&tt, &mut frame)?;
+    }
+    common::write_png(&out.join("envmap.png"), W, H, &color);
+
+    // The faces as a cross.
+    let (cw, ch) = (4 * size, 3 * size);
+    let mut cross = vec![Rgb565::new(0, 0, 0); (cw * ch) as usize];
+    for (face, (cx, cy)) in [(2, 0), (0, 1), (1, 1), (4, 1), (3, 1), (1, 2)]
+        .iter()
+        .enumerate()
+        .map(|(k, &(a, b))| ([2usize, 3, 1, 0, 4, 5][k], (a, b)))
+        .map(|(f, (a, b))| (f, (a, b)))
+    {
+        // Layout: +Y above +Z; row 1: -X +Z +X -Z; -Y below +Z.
+        let (ox, oy) = match face {
+            2 => (1, 0),
+            1 => (0, 1),
+            4 => (1, 1),
+            0 => (2, 1),
+            5 => (3, 1),
+            _ => (1, 2),
+        };
+        let _ = (cx, cy);
+        for j in 0..size {
+            for i in 0..size {
+                cross[((oy * size + j) * cw + ox * size + i) as usize] =
+                    faces[face][(j * size + i) as usize];
+            }
+        }
+    }
+    common::write_png(&out.join("envmap_faces.png"), cw, ch, &cross);
+
+    // Per-vertex vs per-pixel r on the benchmark sphere (radius 1.5 at z = -5).
+    let mut pair = vec![Rgb565::new(0, 0, 0); (2 * W * H) as usize];
+    let sphere = fixel::demo::sphere();
+    let s = EnvVertices::new(
+        &Mat4::translation(Vec3::from_num(0, 0, -5)),
+        &proj,
+        Vec3::ZERO,
+    );
+    for (k, per_pixel) in [false, true].into_iter().enumerate() {
+        let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut depth = vec![0u16; (W * H) as usize];
+        background(&cube, &mut color, &Mat4::IDENTITY);
+        {
+            let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
+            if per_pixel {
+                let d =
+                    ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)?;
+                let t = tris(
+                    &sphere.positions,
+                    &sphere.normals,
+                    &sphere.indices,
+                    |p, n| s.per_pixel(p, n),
+                );
+                d.clip_triangles(&t, &mut frame)?;
+            } else {
+                let d =
+                    ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerVertex(cube), vp, Cull::Back)?;
+                let t = tris(
+                    &sphere.positions,
+                    &sphere.normals,
+                    &sphere.indices,
+                    |p, n| s.per_vertex(p, n),
+                );
+                d.clip_triangles(&t, &mut frame)?;
+            }
+        }
+        for y in 0..H {
+            for x in 0..W {
+                pair[(y * 2 * W + k as u32 * W + x) as usize] = color[(y * W + x) as usize];
+            }
+        }
+    }
+    common::write_png(&out.join("envmap_vertex_vs_pixel.png"), 2 * W, H, &pair);
+    println!(
+        "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png to {}",
+        out.display()
+    );
+    let _ = Fx::ZERO;
+    Ok(())
+}
