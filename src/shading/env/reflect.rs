@@ -26,24 +26,32 @@
 //!
 //! # Fixed point of the per-pixel reflection
 //!
-//! The shader's [`Shader::triangle`] hook shifts the three vertices' normals (and,
-//! separately, their eye vectors) by a common power of two so that the largest component
-//! magnitude is in `[2^12, 2^13)`: the direction is kept, tiny and huge inputs alike get
-//! 13 significant bits. Per pixel (all `i32`, no overflow since `|n|, |v| < 2^13 √3`):
-//! `k = (2 n·v) >> 13`, `m = (n·n) >> 13`, `r = k n − m v` (components below 2^30).
+//! The shaders' [`Shader::triangle`] hook shifts the three vertices' normals (and,
+//! separately, their eye vectors, or the per-vertex `r`) by a common power of two so that
+//! the largest component magnitude is in `[2^23, 2^24)`: the direction is kept, tiny and
+//! huge inputs alike are interpolated with 24 significant bits (the span interpolators'
+//! error is a roughly constant number of units, so small varyings would lose precision).
+//! Per pixel each component is shifted right by 11 (below 2^13), then (all `i32`, no
+//! overflow since `|n|, |v| < 2^13 √3`): `k = (2 n·v) >> 13`, `m = (n·n) >> 13`,
+//! `r = k n − m v` (components below 2^30).
 
 use super::cube::EnvLookup;
 use crate::geometry::Vertex;
 use crate::math::{div_round_i64, isqrt_u64, Mat4, Vec3};
 use crate::shading::{Fragment, Shader};
 
-/// Bits of the largest component magnitude after the per-triangle rescale (`< 2^13`).
+/// Bits of the components the per-pixel products use (`< 2^13`).
 const FIT_BITS: u32 = 13;
 
+/// Bits of the largest varying magnitude after the per-triangle rescale (`< 2^24`): the
+/// span interpolators' error is a roughly constant number of units (about 2^7 on the
+/// benchmark cube), so varyings are interpolated large and shifted down per pixel.
+const VARYING_BITS: u32 = 24;
+
 /// Shifts components `g..g + 3` of the three vertices by one power of two so that their
-/// largest magnitude is in `[2^12, 2^13)` (all zero stays zero).
+/// largest magnitude is in `[2^(BITS-1), 2^BITS)` (all zero stays zero).
 #[inline]
-fn fit_group<const N: usize>(v: &mut [[i32; N]; 3], g: usize) {
+fn fit_group<const N: usize, const BITS: u32>(v: &mut [[i32; N]; 3], g: usize) {
     let mut max = 0u32;
     for vert in v.iter() {
         for c in vert.iter().skip(g).take(3) {
@@ -56,11 +64,11 @@ fn fit_group<const N: usize>(v: &mut [[i32; N]; 3], g: usize) {
     let bits = 32 - max.leading_zeros();
     for vert in v.iter_mut() {
         for c in vert.iter_mut().skip(g).take(3) {
-            *c = if bits > FIT_BITS {
-                *c >> (bits - FIT_BITS)
+            *c = if bits > BITS {
+                *c >> (bits - BITS)
             } else {
-                // |c| < 2^bits, so the shift keeps it below 2^13.
-                *c << (FIT_BITS - bits)
+                // |c| < 2^bits, so the shift keeps it below 2^BITS.
+                *c << (BITS - bits)
             };
         }
     }
@@ -91,13 +99,14 @@ impl<M: EnvLookup> Shader for ReflectPerPixel<M> {
 
     #[inline]
     fn triangle(&self, v: &mut [[i32; 6]; 3]) {
-        fit_group(v, 0);
-        fit_group(v, 3);
+        fit_group::<6, VARYING_BITS>(v, 0);
+        fit_group::<6, VARYING_BITS>(v, 3);
     }
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 6], ()>) -> Option<u16> {
-        let [nx, ny, nz, vx, vy, vz] = f.varyings;
+        const S: u32 = VARYING_BITS - FIT_BITS;
+        let [nx, ny, nz, vx, vy, vz] = f.varyings.map(|c| c >> S);
         Some(self.0.lookup(reflect_fit([nx, ny, nz], [vx, vy, vz])))
     }
 }
@@ -112,7 +121,9 @@ impl<M: EnvLookup> Shader for ReflectPerVertex<M> {
     type Triangle = ();
 
     #[inline]
-    fn triangle(&self, _: &mut [[i32; 3]; 3]) {}
+    fn triangle(&self, v: &mut [[i32; 3]; 3]) {
+        fit_group::<3, VARYING_BITS>(v, 0);
+    }
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 3], ()>) -> Option<u16> {
@@ -226,8 +237,8 @@ mod tests {
     #[test]
     fn fit_group_keeps_direction_and_bounds() {
         let mut v = [[3, -1, 0, i32::MAX, i32::MIN, 5]; 3];
-        fit_group(&mut v, 0);
-        fit_group(&mut v, 3);
+        fit_group::<6, FIT_BITS>(&mut v, 0);
+        fit_group::<6, FIT_BITS>(&mut v, 3);
         assert_eq!(&v[0][..3], &[3 << 11, -(1 << 11), 0]);
         assert!(v[0][3..].iter().all(|c| c.unsigned_abs() < 1 << 13));
         assert_eq!(v[0][4], -(1 << 12));

@@ -1,0 +1,117 @@
+//! Environment mapping in f64, written from the formulas (seed 000 §3.3, GL ES 3.0
+//! §3.8.10), sharing only data with fixel (texels, vertex bits).
+//!
+//! * [`reflect`]: `r = 2 (n·v) n − (n·n) v`, the mirror image of `v` about `n` (any
+//!   lengths; the direction of the unit formula `2 (n̂·v̂) n̂ − v̂`).
+//! * [`cube_face_st`]: GL's face table with an exact division by the major axis. Ties
+//!   (equal magnitudes) pick x before y before z, fixel's documented choice; the zero
+//!   direction gives the centre of face 0.
+//! * [`cube_sample`]: the face sampled with the reference's GL nearest or bilinear filter,
+//!   `CLAMP_TO_EDGE` on both axes.
+//! * [`render_varyings`]: a depth-tested, back-face-culled rasterization of clip-space
+//!   triangles with `N` varyings interpolated perspective-correctly, each pixel's colour
+//!   computed by a closure of the pixel and the interpolated varyings (as f64 of their bits).
+
+use fixel::geometry::Vertex;
+
+use super::raster::{rasterize, signed_area2, to_window};
+use super::sample::sample;
+use super::{rgb565_from_f64, RefFilter, RefTexture, RefVertex, RefWrap};
+
+/// `2 (n·v) n − (n·n) v`.
+pub fn reflect(n: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+    let nv = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    let nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    [0, 1, 2].map(|i| 2.0 * nv * n[i] - nn * v[i])
+}
+
+/// Face (GL order `+X, -X, +Y, -Y, +Z, -Z`) and `(s, t)` in `[0, 1]` of direction `d`.
+pub fn cube_face_st(d: [f64; 3]) -> (usize, f64, f64) {
+    let [x, y, z] = d;
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    // (face, sc, tc, ma) from Table 3.21.
+    let (face, sc, tc, ma) = if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, -z, -y, ax)
+        } else {
+            (1, z, -y, ax)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, x, z, ay)
+        } else {
+            (3, x, -z, ay)
+        }
+    } else if z >= 0.0 {
+        (4, x, -y, az)
+    } else {
+        (5, -x, -y, az)
+    };
+    if ma == 0.0 {
+        return (0, 0.5, 0.5);
+    }
+    (face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0))
+}
+
+/// The cube map's colour (RGB in `0..=1`) in direction `d`.
+pub fn cube_sample(faces: &[RefTexture; 6], d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (f, s, t) = cube_face_st(d);
+    sample(
+        &faces[f],
+        [s, t],
+        filter,
+        RefWrap::ClampToEdge,
+        RefWrap::ClampToEdge,
+    )
+}
+
+/// Rasterizes `tris` into a `width x height` frame (depth test less, back faces culled;
+/// every vertex must have `w > 0`: no clipping), calling `shade` with the perspective-
+/// correct interpolation of the varyings (f64 of their raw bits). Returns RGB565 per pixel
+/// and coverage.
+pub fn render_varyings<const N: usize>(
+    tris: &[[Vertex<N>; 3]],
+    width: u32,
+    height: u32,
+    mut shade: impl FnMut(u32, u32, [f64; N]) -> [f64; 3],
+) -> (Vec<u16>, Vec<bool>) {
+    let n = (width * height) as usize;
+    let (mut rgb, mut cov, mut depth) = (vec![0u16; n], vec![false; n], vec![f64::MAX; n]);
+    for tri in tris {
+        let win = tri.map(|v| {
+            to_window(
+                &RefVertex {
+                    clip: v.position.map(|c| c.to_num::<f64>()),
+                    uv: [0.0; 2],
+                    color: [0.0; 3],
+                },
+                width,
+                height,
+            )
+        });
+        let [Some(a), Some(b), Some(c)] = win else {
+            continue;
+        };
+        let win = [a, b, c];
+        // Negative area: counter-clockwise in NDC, a front face.
+        if signed_area2(&win) >= 0.0 {
+            continue;
+        }
+        let vary = tri.map(|v| v.varyings.map(f64::from));
+        rasterize(&win, width, height, |x, y, l| {
+            let i = (y * width + x) as usize;
+            let z = l[0] * win[0].z + l[1] * win[1].z + l[2] * win[2].z;
+            if z >= depth[i] {
+                return;
+            }
+            depth[i] = z;
+            let q = [0, 1, 2].map(|k| l[k] * win[k].inv_w);
+            let qs = q[0] + q[1] + q[2];
+            let a: [f64; N] =
+                core::array::from_fn(|j| (0..3).map(|k| q[k] * vary[k][j]).sum::<f64>() / qs);
+            rgb[i] = rgb565_from_f64(shade(x, y, a));
+            cov[i] = true;
+        });
+    }
+    (rgb, cov)
+}
