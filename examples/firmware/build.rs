@@ -71,6 +71,17 @@ fn main() {
     // link it).
     let f = Box::new(fixel::demo::fine_sphere());
     fs::write(out.join("fine_sphere.rs"), mesh_source(&f)).unwrap();
+
+    // The environment-mapping scene's cube map: the procedural sky, six 64 x 64 faces.
+    for face in 0..6 {
+        let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+        fixel::shading::env::sky::sky_face(face, 64, &mut t).unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join(format!("sky64-{face}.bin")), bytes).unwrap();
+    }
 }
 
 /// A `MeshData { … }` literal of `s` (I16F16 bits through `v`/`uv`).

@@ -178,3 +178,6 @@ fn mcu_frames() {
         "floor_bilinear: bands differ from the whole frame"
     );
 }
+
+// The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.
+mod env_mcu;

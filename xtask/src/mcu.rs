@@ -50,7 +50,14 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 4] = ["cube", "sphere", "floor", "floor_bilinear"];
+const SCENES: [&str; 6] = [
+    "cube",
+    "sphere",
+    "floor",
+    "floor_bilinear",
+    "env_pixel",
+    "env_vertex",
+];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers.

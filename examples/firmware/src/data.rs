@@ -64,3 +64,14 @@ pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
 /// 10,080 triangles), ~230 KB of flash: linked by the whole-layout `geometry` firmware only.
 pub static FINE_SPHERE: MeshData<FINE_SPHERE_VERTICES, FINE_SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/fine_sphere.rs"));
+
+/// The environment-mapping scene's cube map: the procedural sky
+/// (`fixel::shading::env::sky`), six 64 x 64 faces in GL order, 48 KB.
+pub static SKY64: [[Rgb565; 64 * 64]; 6] = [
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-0.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-1.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-2.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-3.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-4.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-5.bin"))),
+];
