@@ -828,6 +828,12 @@ fn report(flags: &[String]) -> ExitCode {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }
+    // Environment mapping rows (issue 11): same flags, written to env.md.
+    args[6] = "report_env";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
     if docs {
         let dst = root().join("docs").join("report");
         let copied = std::fs::create_dir_all(&dst).and_then(|()| {

@@ -163,7 +163,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 7] = [
+const SIZES: [(&str, &str); 8] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -171,6 +171,10 @@ const SIZES: [(&str, &str); 7] = [
     ("size_lighting", "+ lighting"),
     ("size_depth", "+ depth buffer"),
     ("size_everything", "everything (Draw::dynamic)"),
+    (
+        "size_env",
+        "depth-tested cube-map mirror (per-pixel r, bilinear, exact)",
+    ),
 ];
 
 const QEMU_TIMEOUT: Duration = Duration::from_secs(120);
@@ -1018,11 +1022,12 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 4] = [
+const REPORT_BINS: [&str; 5] = [
     "report_cube",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
+    "report_env",
 ];
 
 /// One mode of one report firmware on one MCU.
