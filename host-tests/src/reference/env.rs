@@ -115,3 +115,50 @@ pub fn render_varyings<const N: usize>(
     }
     (rgb, cov)
 }
+
+/// Sphere-map `(s, t)` of direction `d` (seed 000 §3.3): `r̂ = d / |d|`,
+/// `m = 2 sqrt(r̂x² + r̂y² + (r̂z + 1)²)`, `s = r̂x / m + 1/2`, `t = r̂y / m + 1/2`. At the
+/// rim singularity (`m = 0`, `r̂ = (0, 0, -1)`) and for the zero direction: fixel's
+/// documented choices, `(1, 1/2)` and `(1/2, 1/2)`.
+pub fn sphere_st(d: [f64; 3]) -> (f64, f64) {
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if len == 0.0 {
+        return (0.5, 0.5);
+    }
+    let r = d.map(|c| c / len);
+    let m = 2.0 * (r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0) * (r[2] + 1.0)).sqrt();
+    if m == 0.0 {
+        return (1.0, 0.5);
+    }
+    (r[0] / m + 0.5, r[1] / m + 0.5)
+}
+
+/// Latitude-longitude `(s, t)` of direction `d`: `s = atan2(x, −z) / 2π + 1/2` in `[0, 1)`,
+/// `t = 1/2 − asin(y / |d|) / π`. The zero direction gives `(1/2, 1/2)`.
+pub fn latlong_st(d: [f64; 3]) -> (f64, f64) {
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if len == 0.0 {
+        return (0.5, 0.5);
+    }
+    let s = (d[0].atan2(-d[2]) / core::f64::consts::TAU + 0.5).rem_euclid(1.0);
+    let t = 0.5 - (d[1] / len).asin() / core::f64::consts::PI;
+    (s, t)
+}
+
+/// The sphere map's colour in direction `d` (clamp-to-edge).
+pub fn sphere_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (s, t) = sphere_st(d);
+    sample(
+        tex,
+        [s, t],
+        filter,
+        RefWrap::ClampToEdge,
+        RefWrap::ClampToEdge,
+    )
+}
+
+/// The latitude-longitude map's colour in direction `d` (repeat along `s`, clamp along `t`).
+pub fn latlong_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (s, t) = latlong_st(d);
+    sample(tex, [s, t], filter, RefWrap::Repeat, RefWrap::ClampToEdge)
+}

@@ -3,6 +3,9 @@
 //!
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
 //!   major axis through a reciprocal table, nearest or bilinear within a face.
+//! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
+//!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
+//!   table: no square root, no divide.
 //! * [`reflect`]: the reflection per pixel ([`ReflectPerPixel`], from interpolated `n` and
 //!   `v`, no square root) or per vertex ([`ReflectPerVertex`], interpolated `r`), and
 //!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals.
@@ -42,9 +45,14 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
+pub mod angles;
 pub mod cube;
+pub mod latlong;
 pub mod reflect;
 
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
+pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+pub use sphere::SphereMap;
 pub mod sky;
+pub mod sphere;

@@ -174,3 +174,66 @@ pub fn sky_face(face: usize, size: u32, out: &mut [Rgb565]) -> Result<(), Error>
     }
     Ok(())
 }
+
+/// Fills `out` (`w * h`, row 0 first) with the sky as a latitude-longitude map (see
+/// [`latlong`](super::latlong): column `i` at longitude `λ = ((i + 0.5) / w − 1/2) 2π`, row
+/// `j` at latitude `β = (1/2 − (j + 0.5) / h) π`), one sample per texel.
+///
+/// # Errors
+/// [`Error::WrongLength`] if `out` is not `w * h` long.
+pub fn sky_latlong(w: u32, h: u32, out: &mut [Rgb565]) -> Result<(), Error> {
+    use micromath::F32Ext;
+    let need = w as usize * h as usize;
+    if out.len() != need {
+        return Err(Error::WrongLength {
+            expected: need,
+            actual: out.len(),
+        });
+    }
+    let pi = core::f32::consts::PI;
+    for (k, px) in out.iter_mut().enumerate() {
+        let (i, j) = ((k as u32) % w, (k as u32) / w);
+        let lam = ((i as f32 + 0.5) / w as f32 - 0.5) * 2.0 * pi;
+        let beta = (0.5 - (j as f32 + 0.5) / h as f32) * pi;
+        let d = [beta.cos() * lam.sin(), beta.sin(), -beta.cos() * lam.cos()];
+        *px = quantize(sky_colour(d));
+    }
+    Ok(())
+}
+
+/// Fills `out` (`size * size`, row 0 first) with the sky as a sphere map (see
+/// [`sphere`](super::sphere): texel centre `(s, t)`, `ρ = |(2s − 1, 2t − 1)|` = `sin(θ/2)`,
+/// black outside the disc), one sample per texel.
+///
+/// # Errors
+/// [`Error::WrongLength`] if `out` is not `size * size` long.
+pub fn sky_spheremap(size: u32, out: &mut [Rgb565]) -> Result<(), Error> {
+    use micromath::F32Ext;
+    let need = size as usize * size as usize;
+    if out.len() != need {
+        return Err(Error::WrongLength {
+            expected: need,
+            actual: out.len(),
+        });
+    }
+    for (k, px) in out.iter_mut().enumerate() {
+        let (i, j) = ((k as u32) % size, (k as u32) / size);
+        let sx = 2.0 * (i as f32 + 0.5) / size as f32 - 1.0;
+        let ty = 2.0 * (j as f32 + 0.5) / size as f32 - 1.0;
+        let rho2 = sx * sx + ty * ty;
+        if rho2 > 1.0 {
+            *px = Rgb565::new(0, 0, 0);
+            continue;
+        }
+        // rho = sin(θ/2): cos θ = 1 − 2 ρ², sin θ = 2 ρ sqrt(1 − ρ²); (rx, ry) along (sx, ty).
+        let cz = 1.0 - 2.0 * rho2;
+        let k = 2.0 * (1.0 - rho2).max(0.0).sqrt();
+        *px = quantize(sky_colour([sx * k, ty * k, cz]));
+    }
+    Ok(())
+}
+
+fn quantize(c: [f32; 3]) -> Rgb565 {
+    let q = |c: f32, max: f32| (c.clamp(0.0, 1.0) * max + 0.5) as u8;
+    Rgb565::new(q(c[0], 31.0), q(c[1], 63.0), q(c[2], 31.0))
+}
