@@ -10,7 +10,9 @@
 //! * `envmap.png`: 320 x 240, per-pixel reflection, bilinear, 256-texel faces;
 //! * `envmap_faces.png`: the six faces as a cross (+Y on top, -Y below, -X +Z +X -Z across);
 //! * `envmap_vertex_vs_pixel.png`: the benchmark sphere (24 x 48), left per-vertex `r`,
-//!   right per-pixel `r`.
+//!   right per-pixel `r`;
+//! * `envmap_cube_sphere_latlong.png`: the torus mirroring the same sky through a cube map
+//!   (6 x 64²), a sphere map (128²) and a latitude-longitude map (256 x 128).
 
 mod common;
 
@@ -18,7 +20,7 @@ use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    sky, CubeMap, EnvLookup, EnvVertices, ReflectPerPixel, ReflectPerVertex,
+    sky, CubeMap, EnvLookup, EnvVertices, LatLongMap, ReflectPerPixel, ReflectPerVertex, SphereMap,
 };
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, Texture};
@@ -213,8 +215,56 @@ fn main() -> Result<(), fixel::Error> {
         }
     }
     common::write_png(&out.join("envmap_vertex_vs_pixel.png"), 2 * W, H, &pair);
+    // The three lookups side by side on the torus.
+    let f64s = sky_faces(64);
+    let cube64 = CubeMap::new(
+        core::array::from_fn(|i| Texture::new(&f64s[i], 64, 64).expect("face")),
+        Bilinear,
+    )?;
+    let mut st = vec![Rgb565::new(0, 0, 0); 128 * 128];
+    sky::sky_spheremap(128, &mut st)?;
+    let mut lt = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    sky::sky_latlong(256, 128, &mut lt)?;
+    let sm = SphereMap::new(Texture::new(&st, 128, 128)?, Bilinear);
+    let ll = LatLongMap::new(Texture::new(&lt, 256, 128)?, Bilinear);
+    let (tp, tn, ti) = torus(1.0, 0.4, 64, 24);
+    let model = Mat4::translation(Vec3::from_num(0, 0, -4.2))
+        * Mat4::rotation_x(Angle::from_degrees(fx(55)))
+        * Mat4::rotation_z(Angle::from_degrees(fx(-15)));
+    let s = EnvVertices::new(&model, &proj, Vec3::ZERO);
+    let tt = tris(&tp, &tn, &ti, |p, n| s.per_pixel(p, n));
+    let mut three = vec![Rgb565::new(0, 0, 0); (3 * W * H) as usize];
+    for k in 0..3 {
+        let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut depth = vec![0u16; (W * H) as usize];
+        background(&cube64, &mut color, &Mat4::IDENTITY);
+        {
+            let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
+            match k {
+                0 => {
+                    ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube64), vp, Cull::Back)?
+                        .clip_triangles(&tt, &mut frame)?
+                }
+                1 => ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(sm), vp, Cull::Back)?
+                    .clip_triangles(&tt, &mut frame)?,
+                _ => ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(ll), vp, Cull::Back)?
+                    .clip_triangles(&tt, &mut frame)?,
+            };
+        }
+        for y in 0..H {
+            for x in 0..W {
+                three[(y * 3 * W + k * W + x) as usize] = color[(y * W + x) as usize];
+            }
+        }
+    }
+    common::write_png(
+        &out.join("envmap_cube_sphere_latlong.png"),
+        3 * W,
+        H,
+        &three,
+    );
     println!(
-        "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png to {}",
+        "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png, envmap_cube_sphere_latlong.png to {}",
         out.display()
     );
     let _ = Fx::ZERO;

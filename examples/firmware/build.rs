@@ -82,6 +82,21 @@ fn main() {
             .collect();
         fs::write(out.join(format!("sky64-{face}.bin")), bytes).unwrap();
     }
+    // The same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map.
+    let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    fixel::shading::env::sky::sky_spheremap(64, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 128 * 64];
+    fixel::shading::env::sky::sky_latlong(128, 64, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-latlong128x64.bin"), bytes).unwrap();
 }
 
 /// A `MeshData { … }` literal of `s` (I16F16 bits through `v`/`uv`).

@@ -75,3 +75,15 @@ pub static SKY64: [[Rgb565; 64 * 64]; 6] = [
     texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-4.bin"))),
     texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-5.bin"))),
 ];
+
+/// The same sky as a 64 x 64 sphere map (8 KB).
+pub static SKY_SPHERE64: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-sphere64.bin"
+)));
+
+/// The same sky as a 128 x 64 latitude-longitude map (16 KB).
+pub static SKY_LATLONG128X64: [Rgb565; 128 * 64] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-latlong128x64.bin"
+)));

@@ -1,6 +1,7 @@
 //! `cargo xtask report`, environment mapping (issue 11): one row per variant of the
 //! environment-mapped benchmark sphere (frame 0, the 64-texel procedural sky cube map,
-//! exact perspective): reflection per pixel or per vertex, nearest or bilinear.
+//! exact perspective): reflection per pixel or per vertex, nearest or bilinear; then the
+//! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map.
 //!
 //! ```text
 //! report_env --out DIR [--runs N] [--mcu mcu.tsv]
@@ -30,13 +31,15 @@ use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    sky, CubeMap, EnvLookup, EnvVertices, ReflectPerPixel, ReflectPerVertex,
+    sky, CubeMap, EnvLookup, EnvVertices, LatLongMap, ReflectPerPixel, ReflectPerVertex, SphereMap,
 };
 use fixel::shading::Shader;
 use fixel::surface::{Frame, DEPTH_CLEAR};
 use fixel::texture::{Bilinear, Nearest, Texture};
 use host_tests::metrics::{compare_rgb565, Report};
-use host_tests::reference::env::{cube_sample, reflect, render_varyings};
+use host_tests::reference::env::{
+    cube_sample, latlong_sample, reflect, render_varyings, sphere_sample,
+};
 use host_tests::reference::{RefFilter, RefTexture};
 
 const W: u32 = 320;
@@ -320,6 +323,54 @@ fn main() {
             mcu_cell(v.name, &want, "Cortex-M4F"),
             fmt_err(&e),
             own.as_ref().map_or("-".into(), fmt_err)
+        );
+    }
+
+    // The same sky as a sphere map and a lat-long map (per pixel, bilinear).
+    let tex = |w: u32, h: u32, sphere: bool| -> Vec<Rgb565> {
+        let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+        if sphere {
+            sky::sky_spheremap(w, &mut t).expect("sphere map");
+        } else {
+            sky::sky_latlong(w, h, &mut t).expect("lat-long");
+        }
+        t
+    };
+    let (st, lt) = (tex(64, 64, true), tex(128, 64, false));
+    let refmap = |t: &[Rgb565], w: u32, h: u32| RefTexture {
+        width: w,
+        height: h,
+        texels: t.iter().map(|c| c.into_storage()).collect(),
+        border: 0,
+    };
+    let (rst, rlt) = (refmap(&st, 64, 64), refmap(&lt, 128, 64));
+    let sm = SphereMap::new(Texture::new(&st, 64, 64).expect("tex"), Bilinear);
+    let ll = LatLongMap::new(Texture::new(&lt, 128, 64).expect("tex"), Bilinear);
+    let rr = |a: [f64; 6]| reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]);
+    {
+        let name = "sphere-pixel-bilinear";
+        let reference = render_varyings(&sphere.pixel, W, H, |_, _, a| {
+            sphere_sample(&rst, rr(a), RefFilter::Bilinear)
+        });
+        let (img, ns) = run(ReflectPerPixel(sm), &sphere.pixel, runs);
+        let want = band_checksum(ReflectPerPixel(sm), EnvVertices::per_pixel);
+        md += &format!(
+            "| {name} (64 x 64 sphere map) | {ns:.1} | {} | {} | {} | - |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&cmp(&img, &reference))
+        );
+        let name = "latlong-pixel-bilinear";
+        let reference = render_varyings(&sphere.pixel, W, H, |_, _, a| {
+            latlong_sample(&rlt, rr(a), RefFilter::Bilinear)
+        });
+        let (img, ns) = run(ReflectPerPixel(ll), &sphere.pixel, runs);
+        let want = band_checksum(ReflectPerPixel(ll), EnvVertices::per_pixel);
+        md += &format!(
+            "| {name} (128 x 64 lat-long map) | {ns:.1} | {} | {} | {} | - |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&cmp(&img, &reference))
         );
     }
 

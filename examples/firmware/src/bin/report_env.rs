@@ -1,12 +1,16 @@
 //! `cargo xtask report`: the environment-mapping frame (`env::env_frame`: the benchmark
 //! sphere mirroring the 64-texel sky cube map, exact perspective, 8-row bands) once per
-//! variant: reflection per pixel or per vertex, nearest or bilinear within a face.
+//! variant: reflection per pixel or per vertex, nearest or bilinear within a face; then the
+//! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map (per pixel,
+//! bilinear).
 #![no_std]
 #![no_main]
 
 use fixel::pipeline::Exact;
-use fixel::shading::env::{EnvLookup, EnvVertices, ReflectPerPixel, ReflectPerVertex};
-use fixel::texture::{Bilinear, Nearest};
+use fixel::shading::env::{
+    EnvLookup, EnvVertices, LatLongMap, ReflectPerPixel, ReflectPerVertex, SphereMap,
+};
+use fixel::texture::{Bilinear, Nearest, Texture};
 use fixel_firmware::env::{self, EnvBuffers};
 use fixel_firmware::scenes::FrameResult;
 use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln, report_begin};
@@ -83,6 +87,22 @@ fn run() -> bool {
     ok &= per_pixel(&mut buf, "pixel-nearest", cube.with_filter(Nearest));
     ok &= per_vertex(&mut buf, "vertex-bilinear", cube.with_filter(Bilinear));
     ok &= per_vertex(&mut buf, "vertex-nearest", cube.with_filter(Nearest));
+    let (Ok(sm), Ok(ll)) = (
+        Texture::new(core::hint::black_box(&data::SKY_SPHERE64), 64, 64),
+        Texture::new(core::hint::black_box(&data::SKY_LATLONG128X64), 128, 64),
+    ) else {
+        return false;
+    };
+    ok &= per_pixel(
+        &mut buf,
+        "sphere-pixel-bilinear",
+        SphereMap::new(sm, Bilinear),
+    );
+    ok &= per_pixel(
+        &mut buf,
+        "latlong-pixel-bilinear",
+        LatLongMap::new(ll, Bilinear),
+    );
     ok
 }
 
