@@ -12,18 +12,24 @@
 //! * `envmap_vertex_vs_pixel.png`: the benchmark sphere (24 x 48), left per-vertex `r`,
 //!   right per-pixel `r`;
 //! * `envmap_cube_sphere_latlong.png`: the torus mirroring the same sky through a cube map
-//!   (6 x 64²), a sphere map (128²) and a latitude-longitude map (256 x 128).
+//!   (6 x 64²), a sphere map (128²) and a latitude-longitude map (256 x 128);
+//! * `envmap_diffuse_glossy.png`: the benchmark sphere with its texture `T(256, 128)` lit
+//!   by the sky (maps of 6 x 16² baked from 6 x 32² by `convolve_face`): base × irradiance,
+//!   base × irradiance + 0.31 × glossy (Phong e = 16), glossy alone.
 
 mod common;
 
+use embedded_graphics_core::pixelcolor::IntoStorage;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    sky, CubeMap, EnvLookup, EnvVertices, LatLongMap, ReflectPerPixel, ReflectPerVertex, SphereMap,
+    convolve_face, sky, CubeMap, EnvLit, EnvLookup, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
+    ReflectPerVertex, SphereMap,
 };
+use fixel::shading::TexBinding;
 use fixel::surface::Frame;
-use fixel::texture::{Bilinear, Texture};
+use fixel::texture::{Bilinear, Lod, MipTexture, Repeat, Texture};
 use fixel::Rgb565;
 
 const W: u32 = 320;
@@ -263,8 +269,95 @@ fn main() -> Result<(), fixel::Error> {
         H,
         &three,
     );
+
+    // Diffuse + glossy on the textured benchmark sphere.
+    let src: Vec<Vec<u16>> = sky_faces(32)
+        .iter()
+        .map(|f| f.iter().map(|c| c.into_storage()).collect())
+        .collect();
+    let srcs: [&[u16]; 6] = core::array::from_fn(|i| &src[i][..]);
+    let bake = |lobe| -> Result<Vec<Vec<Rgb565>>, fixel::Error> {
+        (0..6)
+            .map(|f| {
+                let mut o = vec![Rgb565::new(0, 0, 0); 16 * 16];
+                convolve_face(srcs, 32, lobe, f, 16, &mut o)?;
+                Ok(o)
+            })
+            .collect()
+    };
+    let (diff, glos) = (bake(Lobe::Cosine)?, bake(Lobe::Phong(16))?);
+    let dcube = CubeMap::new(
+        core::array::from_fn(|i| Texture::new(&diff[i], 16, 16).expect("face")),
+        Bilinear,
+    )?;
+    let gcube = CubeMap::new(
+        core::array::from_fn(|i| Texture::new(&glos[i], 16, 16).expect("face")),
+        Bilinear,
+    )?;
+    let mut base = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    fixel::demo::checker_texture(256, 128, &mut base)?;
+    let black = [Rgb565::new(0, 0, 0); 1];
+    let none = CubeMap::new([Texture::new(&black, 1, 1)?; 6], Bilinear)?;
+    let mip = MipTexture::single(Texture::new(&base, 256, 128)?);
+    let binding = TexBinding::new(&mip, Bilinear, Repeat, Repeat, Lod::default())?;
+    let sphere = fixel::demo::sphere();
+    let s = EnvVertices::new(&fixel::demo::sphere_model(0), &proj, Vec3::ZERO);
+    let t8: Vec<[Vertex<8>; 3]> = sphere
+        .indices
+        .iter()
+        .filter_map(|t| {
+            let v = t.map(|i| {
+                let i = usize::from(i);
+                let v = s.per_pixel(sphere.positions[i], sphere.normals[i])?;
+                let a = v.varyings;
+                let uv = sphere.uvs[i].map(|c| c.to_bits());
+                Some(Vertex::new(
+                    v.position,
+                    [a[0], a[1], a[2], a[3], a[4], a[5], uv[0], uv[1]],
+                ))
+            });
+            Some([v[0]?, v[1]?, v[2]?])
+        })
+        .collect();
+    let mut dg = vec![Rgb565::new(0, 0, 0); (3 * W * H) as usize];
+    for k in 0..3u32 {
+        let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut depth = vec![0u16; (W * H) as usize];
+        background(&cube, &mut color, &Mat4::IDENTITY);
+        {
+            let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
+            let shader = match k {
+                0 => EnvLit {
+                    base: binding,
+                    diffuse: dcube,
+                    glossy: none,
+                    specular: 256,
+                },
+                1 => EnvLit {
+                    base: binding,
+                    diffuse: dcube,
+                    glossy: gcube,
+                    specular: 80,
+                },
+                _ => EnvLit {
+                    base: binding,
+                    diffuse: none,
+                    glossy: gcube,
+                    specular: 256,
+                },
+            };
+            ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back)?
+                .clip_triangles(&t8, &mut frame)?;
+        }
+        for y in 0..H {
+            for x in 0..W {
+                dg[(y * 3 * W + k * W + x) as usize] = color[(y * W + x) as usize];
+            }
+        }
+    }
+    common::write_png(&out.join("envmap_diffuse_glossy.png"), 3 * W, H, &dg);
     println!(
-        "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png, envmap_cube_sphere_latlong.png to {}",
+        "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png, envmap_cube_sphere_latlong.png, envmap_diffuse_glossy.png to {}",
         out.display()
     );
     let _ = Fx::ZERO;

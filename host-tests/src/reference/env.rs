@@ -162,3 +162,52 @@ pub fn latlong_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64;
     let (s, t) = latlong_st(d);
     sample(tex, [s, t], filter, RefWrap::Repeat, RefWrap::ClampToEdge)
 }
+
+/// The unit direction through the centre of texel `(i, j)` of face `face` (GL order) of a
+/// cube map of side `size` (the inverse of GL's face table).
+pub fn texel_dir(face: usize, i: u32, j: u32, size: u32) -> [f64; 3] {
+    let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
+    let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
+    let d = match face {
+        0 => [1.0, -tc, -sc],
+        1 => [-1.0, -tc, sc],
+        2 => [sc, 1.0, tc],
+        3 => [sc, -1.0, -tc],
+        4 => [sc, -tc, 1.0],
+        _ => [-sc, -tc, -1.0],
+    };
+    let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    d.map(|c| c / l)
+}
+
+/// Seed 000 §3.3.3 by brute force, in f64: the environment `faces` (RGB565, GL order)
+/// convolved with the cosine lobe (`exponent = None`: `(1/π) ∫ L max(0, n·ω) dω`) or the
+/// Phong lobe (`((e + 1)/2π) ∫ L max(0, r·ω)^e dω`) in unit direction `n`, each source texel
+/// weighted by its solid angle `(2/S)² / (1 + sc² + tc²)^(3/2)`.
+pub fn convolve(faces: &[RefTexture; 6], n: [f64; 3], exponent: Option<u32>) -> [f64; 3] {
+    let size = faces[0].width;
+    let mut acc = [0.0; 3];
+    for (f, tex) in faces.iter().enumerate() {
+        for j in 0..size {
+            for i in 0..size {
+                let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
+                let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
+                let dw = 4.0 / f64::from(size * size) / (1.0 + sc * sc + tc * tc).powf(1.5);
+                let w = texel_dir(f, i, j, size);
+                let c = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+                if c <= 0.0 {
+                    continue;
+                }
+                let k = match exponent {
+                    None => c / core::f64::consts::PI,
+                    Some(e) => c.powi(e as i32) * f64::from(e + 1) / core::f64::consts::TAU,
+                };
+                let l = super::types::rgb565_to_f64(tex.texel(i, j));
+                for ch in 0..3 {
+                    acc[ch] += l[ch] * k * dw;
+                }
+            }
+        }
+    }
+    acc
+}

@@ -6,6 +6,8 @@
 //! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
+//! * [`convolve`]: diffuse (irradiance) and glossy (Phong-lobe) maps baked from a cube map
+//!   ([`convolve_face`]) and [`EnvLit`]: base texture × diffuse + glossy.
 //! * [`reflect`]: the reflection per pixel ([`ReflectPerPixel`], from interpolated `n` and
 //!   `v`, no square root) or per vertex ([`ReflectPerVertex`], interpolated `r`), and
 //!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals.
@@ -46,10 +48,12 @@
 //! ```
 
 pub mod angles;
+pub mod convolve;
 pub mod cube;
 pub mod latlong;
 pub mod reflect;
 
+pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};

@@ -41,17 +41,17 @@ use crate::math::{div_round_i64, isqrt_u64, Mat4, Vec3};
 use crate::shading::{Fragment, Shader};
 
 /// Bits of the components the per-pixel products use (`< 2^13`).
-const FIT_BITS: u32 = 13;
+pub(crate) const FIT_BITS: u32 = 13;
 
 /// Bits of the largest varying magnitude after the per-triangle rescale (`< 2^24`): the
 /// span interpolators' error is a roughly constant number of units (about 2^7 on the
 /// benchmark cube), so varyings are interpolated large and shifted down per pixel.
-const VARYING_BITS: u32 = 24;
+pub(crate) const VARYING_BITS: u32 = 24;
 
 /// Shifts components `g..g + 3` of the three vertices by one power of two so that their
 /// largest magnitude is in `[2^(BITS-1), 2^BITS)` (all zero stays zero).
 #[inline]
-fn fit_group<const N: usize, const BITS: u32>(v: &mut [[i32; N]; 3], g: usize) {
+pub(crate) fn fit_group<const N: usize, const BITS: u32>(v: &mut [[i32; N]; 3], g: usize) {
     let mut max = 0u32;
     for vert in v.iter() {
         for c in vert.iter().skip(g).take(3) {
