@@ -153,22 +153,15 @@ fn main() -> Result<(), fixel::Error> {
     // The faces as a cross.
     let (cw, ch) = (4 * size, 3 * size);
     let mut cross = vec![Rgb565::new(0, 0, 0); (cw * ch) as usize];
-    for (face, (cx, cy)) in [(2, 0), (0, 1), (1, 1), (4, 1), (3, 1), (1, 2)]
-        .iter()
-        .enumerate()
-        .map(|(k, &(a, b))| ([2usize, 3, 1, 0, 4, 5][k], (a, b)))
-        .map(|(f, (a, b))| (f, (a, b)))
-    {
-        // Layout: +Y above +Z; row 1: -X +Z +X -Z; -Y below +Z.
-        let (ox, oy) = match face {
-            2 => (1, 0),
-            1 => (0, 1),
-            4 => (1, 1),
-            0 => (2, 1),
-            5 => (3, 1),
-            _ => (1, 2),
-        };
-        let _ = (cx, cy);
+    // Layout: +Y above +Z; row 1: -X +Z +X -Z; -Y below +Z.
+    for (face, (ox, oy)) in [
+        (0, (2, 1)),
+        (1, (0, 1)),
+        (2, (1, 0)),
+        (3, (1, 2)),
+        (4, (1, 1)),
+        (5, (3, 1)),
+    ] {
         for j in 0..size {
             for i in 0..size {
                 cross[((oy * size + j) * cw + ox * size + i) as usize] =

@@ -45,7 +45,7 @@ fn sqrt(x: f32) -> f32 {
     if x <= 0.0 {
         return 0.0;
     }
-    let mut y = x.sqrt();
+    let mut y = F32Ext::sqrt(x);
     for _ in 0..2 {
         y = 0.5 * (y + x / y);
     }

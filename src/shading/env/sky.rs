@@ -182,7 +182,7 @@ pub fn sky_face(face: usize, size: u32, out: &mut [Rgb565]) -> Result<(), Error>
 /// # Errors
 /// [`Error::WrongLength`] if `out` is not `w * h` long.
 pub fn sky_latlong(w: u32, h: u32, out: &mut [Rgb565]) -> Result<(), Error> {
-    use micromath::F32Ext;
+    use micromath::F32Ext as M;
     let need = w as usize * h as usize;
     if out.len() != need {
         return Err(Error::WrongLength {
@@ -195,7 +195,8 @@ pub fn sky_latlong(w: u32, h: u32, out: &mut [Rgb565]) -> Result<(), Error> {
         let (i, j) = ((k as u32) % w, (k as u32) / w);
         let lam = ((i as f32 + 0.5) / w as f32 - 0.5) * 2.0 * pi;
         let beta = (0.5 - (j as f32 + 0.5) / h as f32) * pi;
-        let d = [beta.cos() * lam.sin(), beta.sin(), -beta.cos() * lam.cos()];
+        let (sb, cb, sl, cl) = (M::sin(beta), M::cos(beta), M::sin(lam), M::cos(lam));
+        let d = [cb * sl, sb, -cb * cl];
         *px = quantize(sky_colour(d));
     }
     Ok(())
@@ -208,7 +209,7 @@ pub fn sky_latlong(w: u32, h: u32, out: &mut [Rgb565]) -> Result<(), Error> {
 /// # Errors
 /// [`Error::WrongLength`] if `out` is not `size * size` long.
 pub fn sky_spheremap(size: u32, out: &mut [Rgb565]) -> Result<(), Error> {
-    use micromath::F32Ext;
+    use micromath::F32Ext as M;
     let need = size as usize * size as usize;
     if out.len() != need {
         return Err(Error::WrongLength {
@@ -227,7 +228,7 @@ pub fn sky_spheremap(size: u32, out: &mut [Rgb565]) -> Result<(), Error> {
         }
         // rho = sin(θ/2): cos θ = 1 − 2 ρ², sin θ = 2 ρ sqrt(1 − ρ²); (rx, ry) along (sx, ty).
         let cz = 1.0 - 2.0 * rho2;
-        let k = 2.0 * (1.0 - rho2).max(0.0).sqrt();
+        let k = 2.0 * M::sqrt((1.0 - rho2).max(0.0));
         *px = quantize(sky_colour([sx * k, ty * k, cz]));
     }
     Ok(())
