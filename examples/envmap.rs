@@ -21,7 +21,7 @@ mod common;
 
 use embedded_graphics_core::pixelcolor::IntoStorage;
 use fixel::geometry::{Cull, Vertex, Viewport};
-use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
+use fixel::math::{fx, Angle, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
     convolve_face, sky, CubeMap, EnvLit, EnvLookup, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
@@ -353,6 +353,5 @@ fn main() -> Result<(), fixel::Error> {
         "wrote envmap.png, envmap_faces.png, envmap_vertex_vs_pixel.png, envmap_cube_sphere_latlong.png, envmap_diffuse_glossy.png to {}",
         out.display()
     );
-    let _ = Fx::ZERO;
     Ok(())
 }

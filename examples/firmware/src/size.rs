@@ -131,7 +131,7 @@ pub fn base() -> bool {
 
 /// The same triangle mirroring a cube map (six 8 x 8 faces: `T(8, 8)` each) with the
 /// reflection per pixel, bilinear, exact perspective, depth-tested, in bands: the flash an
-/// environment-mapped draw adds (`cargo xtask size`, row "+ environment map").
+/// environment-mapped draw links (`cargo xtask size`, row "depth-tested cube-map mirror").
 pub fn env() -> bool {
     use fixel::geometry::Vertex;
     use fixel::pipeline::{DepthLess, Exact, ShadedDraw};

@@ -629,17 +629,10 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 continue;
             }
             let lw = 7 * label.len() as i32 + 2;
-            let spot = [
-                (9, -7),
-                (9, -20),
-                (9, 6),
-                (-lw - 9, -7),
-                (-lw / 2, -24),
-                (-lw / 2, 10),
-            ]
-            .into_iter()
-            .map(|(dx, dy)| (px + dx, py + dy, px + dx + lw, py + dy + 14))
-            .find(|b| !boxes.iter().any(|o| overlaps(b, o)));
+            let spot = [(9, -7), (9, -20), (9, 6), (-lw - 9, -7), (-lw / 2, -24), (-lw / 2, 10)]
+                .into_iter()
+                .map(|(dx, dy)| (px + dx, py + dy, px + dx + lw, py + dy + 14))
+                .find(|b| !boxes.iter().any(|o| overlaps(b, o)));
             let Some(b) = spot else {
                 continue;
             };
