@@ -6,7 +6,8 @@
 //! from the same code.
 //!
 //! One pass projects every triangle once and keeps the band range it covers (2 B per
-//! triangle); each 320 x 8 band then re-projects only the triangles that meet it.
+//! triangle) and, per band, the run of triangle indices that meets it; each 320 x 8 band
+//! then scans its run and re-projects only the triangles that meet it.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
@@ -29,8 +30,8 @@ pub const ENV_TRIS: usize = demo::SPHERE_TRIANGLES;
 /// The cube map the scene reads.
 pub type EnvCube<'a> = fixel::shading::env::CubeMap<'a, Bilinear>;
 
-/// Band buffers and one band range per triangle (first and last band; `first > last` when
-/// the triangle is culled or off screen): 10 KiB + 4.4 KB.
+/// Band buffers, one band range per triangle (first and last band; `first > last` when
+/// the triangle is culled or off screen) and one index run per band: 10 KiB + 4.5 KB.
 pub struct EnvBuffers {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
@@ -38,6 +39,9 @@ pub struct EnvBuffers {
     pub depth: [u16; BAND_PIXELS],
     /// Band range per triangle.
     pub ranges: [[u8; 2]; ENV_TRIS],
+    /// Per band, the first and one past the last triangle index that meets it (a mesh
+    /// stored row by row, like the UV sphere, meets each band with a short index run).
+    pub runs: [[u16; 2]; (H / ROWS) as usize],
 }
 
 impl EnvBuffers {
@@ -47,6 +51,7 @@ impl EnvBuffers {
             color: [Rgb565::new(0, 0, 0); BAND_PIXELS],
             depth: [0; BAND_PIXELS],
             ranges: [[1, 0]; ENV_TRIS],
+            runs: [[0, 0]; (H / ROWS) as usize],
         }
     }
 }
@@ -113,7 +118,8 @@ where
         };
         Some([v(t[0])?, v(t[1])?, v(t[2])?])
     };
-    for (t, range) in indices.iter().zip(buf.ranges.iter_mut()) {
+    buf.runs = [[u16::MAX, 0]; (H / ROWS) as usize];
+    for (k, (t, range)) in indices.iter().zip(buf.ranges.iter_mut()).enumerate() {
         *range = [1, 0];
         let Some(v) = clip(t) else { continue };
         let (mut lo, mut hi) = (i32::MAX, i32::MIN);
@@ -127,6 +133,11 @@ where
             stats.triangles += 1;
             let band = |y: i32| ((y >> 4).clamp(0, H as i32 - 1) as u32 / ROWS) as u8;
             *range = [band(lo), band(hi + 15)];
+            let k = k as u16;
+            for run in buf.runs[usize::from(range[0])..=usize::from(range[1])].iter_mut() {
+                run[0] = run[0].min(k);
+                run[1] = run[1].max(k + 1);
+            }
         }
     }
     let mut hash = Fnv1a::default();
@@ -136,7 +147,11 @@ where
             .with_depth(&mut buf.depth[..])?;
         frame.clear(Rgb565::new(0, 0, 0));
         let b8 = b as u8;
-        for (t, r) in indices.iter().zip(buf.ranges.iter()) {
+        let [first, end] = buf.runs[b as usize];
+        let (first, end) = (usize::from(first), usize::from(end).max(usize::from(first)));
+        let tris = indices.get(first..end).unwrap_or(&[]);
+        let ranges = buf.ranges.get(first..end).unwrap_or(&[]);
+        for (t, r) in tris.iter().zip(ranges.iter()) {
             if r[0] > b8 || r[1] < b8 {
                 continue;
             }
