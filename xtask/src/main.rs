@@ -5,6 +5,7 @@
 //! dependency is the `png` decoder for `bake`.
 
 mod bake;
+mod bake_cube;
 
 mod mcu;
 
@@ -90,6 +91,9 @@ COMMANDS:
                 file stem in upper case; --levels defaults to full (down to
                 1x1); --rgb565 is the path of the colour type in the output
                 (default embedded_graphics_core::pixelcolor::Rgb565)
+    bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]
+                Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
+                as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -126,6 +130,14 @@ fn main() -> ExitCode {
             Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake: {e}")),
             Err(bake::BakeError::Failed(e)) => {
                 eprintln!("cargo xtask bake: {e}");
+                ExitCode::from(1)
+            }
+        },
+        "bake-cube" => match bake_cube::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-cube: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
+                eprintln!("cargo xtask bake-cube: {e}");
                 ExitCode::from(1)
             }
         },
