@@ -17,8 +17,11 @@ use crate::bake::{read_rgb8, to_565, BakeError};
 /// `(column, row)` of each face (GL order) in the cross, in face units.
 const CROSS: [(u32, u32); 6] = [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)];
 
+/// Six faces of `[r5, g6, b5]` texels, GL order.
+type Faces = Vec<Vec<[u8; 3]>>;
+
 /// The six faces (GL order) of a cross or strip image, each `s * s` texels `[r5, g6, b5]`.
-pub fn split(w: u32, h: u32, px: &[[u8; 3]]) -> Result<(u32, Vec<Vec<[u8; 3]>>), String> {
+pub fn split(w: u32, h: u32, px: &[[u8; 3]]) -> Result<(u32, Faces), String> {
     let (s, at): (u32, Vec<(u32, u32)>) = if w * 3 == h * 4 {
         (w / 4, CROSS.to_vec())
     } else if w == h * 6 {

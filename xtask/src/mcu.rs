@@ -505,7 +505,10 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
         "cargo test -p host-tests --test mcu_checksums -- --nocapture",
     )?;
     let mut m = BTreeMap::new();
-    for l in out.lines().filter(|l| l.starts_with("mcu-expected ")) {
+    // `cargo test -q` prints a `.` per finished test, possibly at the start of another
+    // test's line (mcu_checksums runs two tests in parallel).
+    let lines = out.lines().map(|l| l.trim_start_matches('.'));
+    for l in lines.filter(|l| l.starts_with("mcu-expected ")) {
         if let (Some(s), Some(c), Some(p)) = (kv(l, "scene"), kv(l, "checksum"), num(l, "pixels")) {
             m.insert(s.to_string(), (c.to_string(), p));
         }
