@@ -87,3 +87,13 @@ pub static SKY_LATLONG128X64: [Rgb565; 128 * 64] = texels(include_bytes!(concat!
     env!("OUT_DIR"),
     "/sky-latlong128x64.bin"
 )));
+
+/// The sky's irradiance (cosine-convolved) and glossy (Phong e = 16) maps, six 16 x 16
+/// faces each in GL order (`fixel::shading::env::convolve_face` on the 32 x 32 sky), 3 KB
+/// each.
+pub static SKY_IRR16: [Rgb565; 6 * 256] =
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky-irr16.bin")));
+
+/// See [`SKY_IRR16`].
+pub static SKY_GLOSS16: [Rgb565; 6 * 256] =
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky-gloss16.bin")));

@@ -89,6 +89,25 @@ where
     S: Shader<Varyings = [i32; N]>,
     P: ProjectionStage,
 {
+    let v = |s: &EnvVertices, i: usize| vertex(s, *positions.get(i)?, *normals.get(i)?);
+    env_frame_indexed::<S, P, N>(buf, shader, positions, indices, v, pause, resume)
+}
+
+/// [`env_frame`] with vertices made from their index (for varyings beyond `n` and `v`,
+/// such as texture coordinates): `vertex(setup, i)`.
+pub fn env_frame_indexed<S, P, const N: usize>(
+    buf: &mut EnvBuffers,
+    shader: S,
+    positions: &[Vec3],
+    indices: &[[u16; 3]],
+    vertex: impl Fn(&EnvVertices, usize) -> Option<Vertex<N>>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error>
+where
+    S: Shader<Varyings = [i32; N]>,
+    P: ProjectionStage,
+{
     let cam = demo::camera(20);
     let setup = EnvVertices::new(
         &demo::sphere_model(0),
@@ -97,10 +116,7 @@ where
     );
     let draw = ShadedDraw::<S, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
     let tri = |t: &[u16; 3]| -> Option<[Vertex<N>; 3]> {
-        let v = |i: u16| {
-            let i = usize::from(i);
-            vertex(&setup, *positions.get(i)?, *normals.get(i)?)
-        };
+        let v = |i: u16| vertex(&setup, usize::from(i));
         Some([v(t[0])?, v(t[1])?, v(t[2])?])
     };
     let bands = H / ROWS;
@@ -171,4 +187,31 @@ where
         checksum: hash.0,
         stats,
     })
+}
+
+/// A vertex for `EnvLit`: `n`, `v` as [`EnvVertices::per_pixel`], then the texture
+/// coordinates of vertex `i`.
+pub fn lit_vertex(
+    setup: &EnvVertices,
+    positions: &[Vec3],
+    normals: &[Vec3],
+    uvs: &[[fixel::math::Fx; 2]],
+    i: usize,
+) -> Option<Vertex<8>> {
+    let v = setup.per_pixel(*positions.get(i)?, *normals.get(i)?)?;
+    let a = v.varyings;
+    let uv = uvs.get(i)?;
+    Some(Vertex::new(
+        v.position,
+        [
+            a[0],
+            a[1],
+            a[2],
+            a[3],
+            a[4],
+            a[5],
+            uv[0].to_bits(),
+            uv[1].to_bits(),
+        ],
+    ))
 }

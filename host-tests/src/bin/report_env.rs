@@ -1,7 +1,8 @@
 //! `cargo xtask report`, environment mapping (issue 11): one row per variant of the
 //! environment-mapped benchmark sphere (frame 0, the 64-texel procedural sky cube map,
 //! exact perspective): reflection per pixel or per vertex, nearest or bilinear; then the
-//! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map.
+//! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map; then the
+//! textured sphere lit by the sky's irradiance and glossy maps (`EnvLit`).
 //!
 //! ```text
 //! report_env --out DIR [--runs N] [--mcu mcu.tsv]
@@ -31,11 +32,13 @@ use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    sky, CubeMap, EnvVertices, LatLongMap, ReflectPerPixel, ReflectPerVertex, SphereMap,
+    convolve_face, sky, CubeMap, EnvLit, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
+    ReflectPerVertex, SphereMap,
 };
 use fixel::shading::Shader;
+use fixel::shading::TexBinding;
 use fixel::surface::{Frame, DEPTH_CLEAR};
-use fixel::texture::{Bilinear, Nearest, Texture};
+use fixel::texture::{Bilinear, Lod, MipTexture, Nearest, Repeat, Texture};
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::reference::env::{
     cube_sample, latlong_sample, reflect, render_varyings, sphere_sample,
@@ -368,6 +371,111 @@ fn main() {
         let want = band_checksum(ReflectPerPixel(ll), EnvVertices::per_pixel);
         md += &format!(
             "| {name} (128 x 64 lat-long map) | {ns:.1} | {} | {} | {} | - |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&cmp(&img, &reference))
+        );
+    }
+
+    // The textured sphere lit by the sky: T(256, 128) x irradiance + 0.5 x glossy (e = 16),
+    // maps of 6 x 16 x 16 baked from the 32 x 32 sky (as the firmware's build script does).
+    {
+        let src: Vec<Vec<u16>> = (0..6)
+            .map(|f| {
+                let mut t = vec![Rgb565::new(0, 0, 0); 32 * 32];
+                sky::sky_face(f, 32, &mut t).expect("face");
+                t.iter().map(|c| c.into_storage()).collect()
+            })
+            .collect();
+        let srcs: [&[u16]; 6] = core::array::from_fn(|i| &src[i][..]);
+        let bake = |lobe| -> Vec<Vec<Rgb565>> {
+            (0..6)
+                .map(|f| {
+                    let mut o = vec![Rgb565::new(0, 0, 0); 16 * 16];
+                    convolve_face(srcs, 32, lobe, f, 16, &mut o).expect("bake");
+                    o
+                })
+                .collect()
+        };
+        let (diff, glos) = (bake(Lobe::Cosine), bake(Lobe::Phong(16)));
+        fn cube16(m: &[Vec<Rgb565>]) -> CubeMap<'_, Bilinear> {
+            CubeMap::new(
+                core::array::from_fn(|i| Texture::new(&m[i], 16, 16).expect("face")),
+                Bilinear,
+            )
+            .expect("cube")
+        }
+        let mut base = vec![Rgb565::new(0, 0, 0); 256 * 128];
+        fixel::demo::checker_texture(256, 128, &mut base).expect("texture");
+        let mip = MipTexture::single(Texture::new(&base, 256, 128).expect("texture"));
+        let shader = EnvLit {
+            base: TexBinding::new(&mip, Bilinear, Repeat, Repeat, Lod::default()).expect("tex"),
+            diffuse: cube16(&diff),
+            glossy: cube16(&glos),
+            specular: 128,
+        };
+        let m = Box::new(fixel::demo::sphere());
+        let cam = fixel::demo::camera(20);
+        let setup = EnvVertices::new(
+            &fixel::demo::sphere_model(0),
+            &cam.projection.mul(&cam.view),
+            Vec3::ZERO,
+        );
+        let tris: Vec<[Vertex<8>; 3]> = m
+            .indices
+            .iter()
+            .map(|t| {
+                t.map(|i| {
+                    env::lit_vertex(&setup, &m.positions, &m.normals, &m.uvs, usize::from(i))
+                        .expect("vertex")
+                })
+            })
+            .collect();
+        let to_ref = |t: &[Vec<Rgb565>]| -> [RefTexture; 6] {
+            core::array::from_fn(|i| RefTexture {
+                width: 16,
+                height: 16,
+                texels: t[i].iter().map(|c| c.into_storage()).collect(),
+                border: 0,
+            })
+        };
+        let (rd, rg) = (to_ref(&diff), to_ref(&glos));
+        let rb = RefTexture {
+            width: 256,
+            height: 128,
+            texels: base.iter().map(|c| c.into_storage()).collect(),
+            border: 0,
+        };
+        let reference = render_varyings(&tris, W, H, |_, _, a| {
+            let n = [a[0], a[1], a[2]];
+            let e = cube_sample(&rd, n, RefFilter::Bilinear);
+            let g = cube_sample(&rg, reflect(n, [a[3], a[4], a[5]]), RefFilter::Bilinear);
+            let b = host_tests::reference::sample::sample(
+                &rb,
+                [a[6] / 65536.0, a[7] / 65536.0],
+                RefFilter::Bilinear,
+                host_tests::reference::RefWrap::Repeat,
+                host_tests::reference::RefWrap::Repeat,
+            );
+            [0, 1, 2].map(|k| (b[k] * e[k] + 0.5 * g[k]).min(1.0))
+        });
+        let (img, ns) = run(shader, &tris, runs);
+        let mut buf = Box::new(env::EnvBuffers::new());
+        let (mut a, mut b) = (|| {}, || {});
+        let r = env::env_frame_indexed::<_, Exact, 8>(
+            &mut buf,
+            shader,
+            &m.positions,
+            &m.indices,
+            |s, i| env::lit_vertex(s, &m.positions, &m.normals, &m.uvs, i),
+            &mut a,
+            &mut b,
+        )
+        .expect("band frame");
+        let want = (format!("0x{:08x}", r.checksum), u64::from(r.stats.pixels));
+        let name = "envlit-bilinear";
+        md += &format!(
+            "| {name} (T(256, 128) x irradiance + 0.5 glossy, 6 x 16² each) | {ns:.1} | {} | {} | {} | - |\n",
             mcu_cell(name, &want, "Cortex-M0+"),
             mcu_cell(name, &want, "Cortex-M4F"),
             fmt_err(&cmp(&img, &reference))
