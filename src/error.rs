@@ -84,6 +84,15 @@ pub enum Error {
         /// What was converted.
         what: &'static str,
     },
+    /// A cube-map face is not square or not the size of face 0.
+    BadCubeMap {
+        /// The face (0..=5: +X, -X, +Y, -Y, +Z, -Z).
+        face: u8,
+        /// Its width.
+        width: u32,
+        /// Its height.
+        height: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -134,6 +143,14 @@ impl fmt::Display for Error {
             Error::OutOfRange { what } => {
                 write!(f, "{what} is NaN or outside the fixed-point range")
             }
+            Error::BadCubeMap {
+                face,
+                width,
+                height,
+            } => write!(
+                f,
+                "cube-map face {face} is {width}x{height}: faces must be square and the size of face 0"
+            ),
         }
     }
 }

@@ -38,6 +38,12 @@ fn main() {
     println!("cargo:rerun-if-changed=memory-whole.x");
     println!("cargo:rerun-if-changed=link-whole.ld");
     println!("cargo:rerun-if-env-changed=FIXEL_FW_MEMORY");
+    // The report layout (1M of flash) links the largest report modes (`report_env`'s
+    // textured, environment-lit sphere); the 256K default layout leaves them out.
+    println!("cargo::rustc-check-cfg=cfg(fixel_fw_report)");
+    if env::var("FIXEL_FW_MEMORY").as_deref() == Ok("report") {
+        println!("cargo:rustc-cfg=fixel_fw_report");
+    }
     println!("cargo:rerun-if-changed=link.ld");
     println!("cargo:rerun-if-changed=build.rs");
 
@@ -71,6 +77,56 @@ fn main() {
     // link it).
     let f = Box::new(fixel::demo::fine_sphere());
     fs::write(out.join("fine_sphere.rs"), mesh_source(&f)).unwrap();
+
+    // The environment-mapping scene's cube map: the procedural sky, six 64 x 64 faces.
+    for face in 0..6 {
+        let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+        fixel::shading::env::sky::sky_face(face, 64, &mut t).unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join(format!("sky64-{face}.bin")), bytes).unwrap();
+    }
+    // The same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map.
+    let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    fixel::shading::env::sky::sky_spheremap(64, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 128 * 64];
+    fixel::shading::env::sky::sky_latlong(128, 64, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-latlong128x64.bin"), bytes).unwrap();
+    // Irradiance and glossy (Phong e = 16) maps, 6 x 16 x 16, baked from the 32 x 32 sky.
+    let src: Vec<Vec<u16>> = (0..6)
+        .map(|f| {
+            let mut t = vec![Rgb565::new(0, 0, 0); 32 * 32];
+            fixel::shading::env::sky::sky_face(f, 32, &mut t).unwrap();
+            t.iter().map(|c| IntoStorage::into_storage(*c)).collect()
+        })
+        .collect();
+    let srcs: [&[u16]; 6] = core::array::from_fn(|i| &src[i][..]);
+    for (name, lobe) in [
+        ("irr16", fixel::shading::env::Lobe::Cosine),
+        ("gloss16", fixel::shading::env::Lobe::Phong(16)),
+    ] {
+        let mut bytes = Vec::new();
+        for f in 0..6 {
+            let mut t = vec![Rgb565::new(0, 0, 0); 16 * 16];
+            fixel::shading::env::convolve_face(srcs, 32, lobe, f, 16, &mut t).unwrap();
+            bytes.extend(
+                t.iter()
+                    .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes()),
+            );
+        }
+        fs::write(out.join(format!("sky-{name}.bin")), bytes).unwrap();
+    }
 }
 
 /// A `MeshData { … }` literal of `s` (I16F16 bits through `v`/`uv`).

@@ -203,3 +203,6 @@ fn mcu_noise_flame() {
     let r = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
     print("noise_flame", &r);
 }
+
+// The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.
+mod env_mcu;

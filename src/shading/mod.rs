@@ -179,6 +179,7 @@ pub trait Shader: Copy {
     fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
 }
 
+pub mod env;
 pub mod noise;
 pub mod pcf;
 pub mod shadow;

@@ -5,6 +5,7 @@
 //! dependency is the `png` decoder for `bake`.
 
 mod bake;
+mod bake_cube;
 mod light3d;
 
 mod mcu;
@@ -27,7 +28,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 5] = ["showcase", "scenes", "preview", "shadow", "noise"];
+const RENDER_EXAMPLES: [&str; 6] = ["showcase", "scenes", "preview", "shadow", "noise", "envmap"];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -48,7 +49,7 @@ COMMANDS:
     bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
                 then show which goldens changed (git status host-tests/golden)
     render      Render the demo scenes (examples `showcase`, `scenes`, `preview` and
-                `shadow` and `noise`, release) to target/pictures/*.png
+                `shadow`, `noise` and `envmap`, release) to target/pictures/*.png
     count [--frames N] [FILTER...]
                 Exact x86_64 instructions per drawn pixel of the benchmark
                 scenes and modes: builds the `count_scene` example (release),
@@ -95,6 +96,9 @@ COMMANDS:
                  --light X,Y,Z,P [--light ...] [--name NAME]
                 Bake a 3D light map (fixel::shading::noise::LightMap3d) from point
                 lights with inverse-square falloff (see xtask/src/light3d.rs)
+    bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]
+                Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
+                as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -138,6 +142,14 @@ fn main() -> ExitCode {
             Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake: {e}")),
             Err(bake::BakeError::Failed(e)) => {
                 eprintln!("cargo xtask bake: {e}");
+                ExitCode::from(1)
+            }
+        },
+        "bake-cube" => match bake_cube::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-cube: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
+                eprintln!("cargo xtask bake-cube: {e}");
                 ExitCode::from(1)
             }
         },
@@ -856,6 +868,12 @@ fn report(flags: &[String]) -> ExitCode {
     }
     // Solid textures: their own report, same output directory and MCU counts.
     args[6] = "noise_report";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    // Environment mapping rows: same flags, written to env.md.
+    args[6] = "report_env";
     if let Err(e) = cargo(&args).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;

@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 12] = [
+const SCENES: [&str; 14] = [
     "cube",
     "sphere",
     "floor",
@@ -66,6 +66,9 @@ const SCENES: [&str; 12] = [
     // Solid textures: the marble sphere and the flame.
     "noise",
     "noise_flame",
+    // Environment maps: the sphere as a mirror, r per pixel and per vertex.
+    "env_pixel",
+    "env_vertex",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
@@ -172,7 +175,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 8] = [
+const SIZES: [(&str, &str); 9] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -183,6 +186,10 @@ const SIZES: [(&str, &str); 8] = [
     (
         "size_noise",
         "lit band-limited marble solid texture (ShadedDraw, no texture)",
+    ),
+    (
+        "size_env",
+        "depth-tested cube-map mirror (per-pixel r, bilinear, exact)",
     ),
 ];
 
@@ -516,7 +523,10 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
         "cargo test -p host-tests --test mcu_checksums --test shadow_mcu -- --nocapture",
     )?;
     let mut m = BTreeMap::new();
-    for l in out.lines().filter(|l| l.starts_with("mcu-expected ")) {
+    // `cargo test -q` prints a `.` per finished test, possibly at the start of another
+    // test's line (mcu_checksums runs two tests in parallel).
+    let lines = out.lines().map(|l| l.trim_start_matches('.'));
+    for l in lines.filter(|l| l.starts_with("mcu-expected ")) {
         if let (Some(s), Some(c), Some(p)) = (kv(l, "scene"), kv(l, "checksum"), num(l, "pixels")) {
             m.insert(s.to_string(), (c.to_string(), p));
         }
@@ -1035,12 +1045,13 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 5] = [
+const REPORT_BINS: [&str; 6] = [
     "report_cube",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
     "report_noise",
+    "report_env",
 ];
 
 /// One mode of one report firmware on one MCU.

@@ -64,3 +64,36 @@ pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
 /// 10,080 triangles), ~230 KB of flash: linked by the whole-layout `geometry` firmware only.
 pub static FINE_SPHERE: MeshData<FINE_SPHERE_VERTICES, FINE_SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/fine_sphere.rs"));
+
+/// The environment-mapping scene's cube map: the procedural sky
+/// (`fixel::shading::env::sky`), six 64 x 64 faces in GL order, 48 KB.
+pub static SKY64: [[Rgb565; 64 * 64]; 6] = [
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-0.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-1.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-2.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-3.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-4.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-5.bin"))),
+];
+
+/// The same sky as a 64 x 64 sphere map (8 KB).
+pub static SKY_SPHERE64: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-sphere64.bin"
+)));
+
+/// The same sky as a 128 x 64 latitude-longitude map (16 KB).
+pub static SKY_LATLONG128X64: [Rgb565; 128 * 64] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-latlong128x64.bin"
+)));
+
+/// The sky's irradiance (cosine-convolved) and glossy (Phong e = 16) maps, six 16 x 16
+/// faces each in GL order (`fixel::shading::env::convolve_face` on the 32 x 32 sky), 3 KB
+/// each.
+pub static SKY_IRR16: [Rgb565; 6 * 256] =
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky-irr16.bin")));
+
+/// See [`SKY_IRR16`].
+pub static SKY_GLOSS16: [Rgb565; 6 * 256] =
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky-gloss16.bin")));

@@ -7,6 +7,7 @@
 #![no_std]
 
 pub mod data;
+pub mod env;
 pub mod modes;
 pub mod scenes;
 pub mod size;

@@ -128,3 +128,53 @@ pub fn base() -> bool {
     }
     print(Some((sum.0, pixels)))
 }
+
+/// The same triangle mirroring a cube map (six 8 x 8 faces: `T(8, 8)` each) with the
+/// reflection per pixel, bilinear, exact perspective, depth-tested, in bands: the flash an
+/// environment-mapped draw links (`cargo xtask size`, row "depth-tested cube-map mirror").
+pub fn env() -> bool {
+    use fixel::geometry::Vertex;
+    use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+    use fixel::shading::env::{CubeMap, EnvVertices, ReflectPerPixel};
+    use fixel::surface::Frame;
+    use fixel::texture::Bilinear;
+    let t = core::hint::black_box(data::T8);
+    let (Ok(cube), Ok(vp)) = (CubeMap::new([t; 6], Bilinear), Viewport::new(0, 0, W, H)) else {
+        return false;
+    };
+    let Ok(draw) = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)
+    else {
+        return false;
+    };
+    let camera = demo::camera(20);
+    let setup = EnvVertices::new(
+        &Mat4::IDENTITY,
+        &camera.projection.mul(&camera.view),
+        Vec3::ZERO,
+    );
+    let positions = core::hint::black_box(&POSITIONS);
+    let v = |i: usize| setup.per_pixel(positions[i], NORMALS[i]);
+    let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) else {
+        return false;
+    };
+    let tri: [[Vertex<6>; 3]; 1] = [[a, b, c]];
+    let mut color = [Rgb565::new(0, 0, 0); BAND];
+    let mut zbuf = [0u16; BAND];
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0u32;
+    for band in 0..H / ROWS {
+        let Ok(f) = Frame::new(&mut color, W, ROWS) else {
+            return false;
+        };
+        let Ok(mut f) = f.at_row(band * ROWS).with_depth(&mut zbuf) else {
+            return false;
+        };
+        f.clear(Rgb565::new(0, 0, 0));
+        let Ok(n) = draw.clip_triangles(&tri, &mut f) else {
+            return false;
+        };
+        pixels += n;
+        sum.pixels(f.pixels());
+    }
+    print(Some((sum.0, pixels)))
+}

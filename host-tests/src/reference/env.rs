@@ -1,0 +1,213 @@
+//! Environment mapping in f64, written from the formulas (seed 000 §3.3, GL ES 3.0
+//! §3.8.10), sharing only data with fixel (texels, vertex bits).
+//!
+//! * [`reflect`]: `r = 2 (n·v) n − (n·n) v`, the mirror image of `v` about `n` (any
+//!   lengths; the direction of the unit formula `2 (n̂·v̂) n̂ − v̂`).
+//! * [`cube_face_st`]: GL's face table with an exact division by the major axis. Ties
+//!   (equal magnitudes) pick x before y before z, fixel's documented choice; the zero
+//!   direction gives the centre of face 0.
+//! * [`cube_sample`]: the face sampled with the reference's GL nearest or bilinear filter,
+//!   `CLAMP_TO_EDGE` on both axes.
+//! * [`render_varyings`]: a depth-tested, back-face-culled rasterization of clip-space
+//!   triangles with `N` varyings interpolated perspective-correctly, each pixel's colour
+//!   computed by a closure of the pixel and the interpolated varyings (as f64 of their bits).
+
+use fixel::geometry::Vertex;
+
+use super::raster::{rasterize, signed_area2, to_window};
+use super::sample::sample;
+use super::{rgb565_from_f64, RefFilter, RefTexture, RefVertex, RefWrap};
+
+/// `2 (n·v) n − (n·n) v`.
+pub fn reflect(n: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+    let nv = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    let nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    [0, 1, 2].map(|i| 2.0 * nv * n[i] - nn * v[i])
+}
+
+/// Face (GL order `+X, -X, +Y, -Y, +Z, -Z`) and `(s, t)` in `[0, 1]` of direction `d`.
+pub fn cube_face_st(d: [f64; 3]) -> (usize, f64, f64) {
+    let [x, y, z] = d;
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    // (face, sc, tc, ma) from Table 3.21.
+    let (face, sc, tc, ma) = if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, -z, -y, ax)
+        } else {
+            (1, z, -y, ax)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, x, z, ay)
+        } else {
+            (3, x, -z, ay)
+        }
+    } else if z >= 0.0 {
+        (4, x, -y, az)
+    } else {
+        (5, -x, -y, az)
+    };
+    if ma == 0.0 {
+        return (0, 0.5, 0.5);
+    }
+    (face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0))
+}
+
+/// The cube map's colour (RGB in `0..=1`) in direction `d`.
+pub fn cube_sample(faces: &[RefTexture; 6], d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (f, s, t) = cube_face_st(d);
+    sample(
+        &faces[f],
+        [s, t],
+        filter,
+        RefWrap::ClampToEdge,
+        RefWrap::ClampToEdge,
+    )
+}
+
+/// Rasterizes `tris` into a `width x height` frame (depth test less, back faces culled;
+/// every vertex must have `w > 0`: no clipping), calling `shade` with the perspective-
+/// correct interpolation of the varyings (f64 of their raw bits). Returns RGB565 per pixel
+/// and coverage.
+pub fn render_varyings<const N: usize>(
+    tris: &[[Vertex<N>; 3]],
+    width: u32,
+    height: u32,
+    mut shade: impl FnMut(u32, u32, [f64; N]) -> [f64; 3],
+) -> (Vec<u16>, Vec<bool>) {
+    let n = (width * height) as usize;
+    let (mut rgb, mut cov, mut depth) = (vec![0u16; n], vec![false; n], vec![f64::MAX; n]);
+    for tri in tris {
+        let win = tri.map(|v| {
+            to_window(
+                &RefVertex {
+                    clip: v.position.map(|c| c.to_num::<f64>()),
+                    uv: [0.0; 2],
+                    color: [0.0; 3],
+                },
+                width,
+                height,
+            )
+        });
+        let [Some(a), Some(b), Some(c)] = win else {
+            continue;
+        };
+        let win = [a, b, c];
+        // Negative area: counter-clockwise in NDC, a front face.
+        if signed_area2(&win) >= 0.0 {
+            continue;
+        }
+        let vary = tri.map(|v| v.varyings.map(f64::from));
+        rasterize(&win, width, height, |x, y, l| {
+            let i = (y * width + x) as usize;
+            let z = l[0] * win[0].z + l[1] * win[1].z + l[2] * win[2].z;
+            if z >= depth[i] {
+                return;
+            }
+            depth[i] = z;
+            let q = [0, 1, 2].map(|k| l[k] * win[k].inv_w);
+            let qs = q[0] + q[1] + q[2];
+            let a: [f64; N] =
+                core::array::from_fn(|j| (0..3).map(|k| q[k] * vary[k][j]).sum::<f64>() / qs);
+            rgb[i] = rgb565_from_f64(shade(x, y, a));
+            cov[i] = true;
+        });
+    }
+    (rgb, cov)
+}
+
+/// Sphere-map `(s, t)` of direction `d` (seed 000 §3.3): `r̂ = d / |d|`,
+/// `m = 2 sqrt(r̂x² + r̂y² + (r̂z + 1)²)`, `s = r̂x / m + 1/2`, `t = r̂y / m + 1/2`. At the
+/// rim singularity (`m = 0`, `r̂ = (0, 0, -1)`) and for the zero direction: fixel's
+/// documented choices, `(1, 1/2)` and `(1/2, 1/2)`.
+pub fn sphere_st(d: [f64; 3]) -> (f64, f64) {
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if len == 0.0 {
+        return (0.5, 0.5);
+    }
+    let r = d.map(|c| c / len);
+    let m = 2.0 * (r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0) * (r[2] + 1.0)).sqrt();
+    if m == 0.0 {
+        return (1.0, 0.5);
+    }
+    (r[0] / m + 0.5, r[1] / m + 0.5)
+}
+
+/// Latitude-longitude `(s, t)` of direction `d`: `s = atan2(x, −z) / 2π + 1/2` in `[0, 1)`,
+/// `t = 1/2 − asin(y / |d|) / π`. The zero direction gives `(1/2, 1/2)`.
+pub fn latlong_st(d: [f64; 3]) -> (f64, f64) {
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if len == 0.0 {
+        return (0.5, 0.5);
+    }
+    let s = (d[0].atan2(-d[2]) / core::f64::consts::TAU + 0.5).rem_euclid(1.0);
+    let t = 0.5 - (d[1] / len).asin() / core::f64::consts::PI;
+    (s, t)
+}
+
+/// The sphere map's colour in direction `d` (clamp-to-edge).
+pub fn sphere_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (s, t) = sphere_st(d);
+    sample(
+        tex,
+        [s, t],
+        filter,
+        RefWrap::ClampToEdge,
+        RefWrap::ClampToEdge,
+    )
+}
+
+/// The latitude-longitude map's colour in direction `d` (repeat along `s`, clamp along `t`).
+pub fn latlong_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64; 3] {
+    let (s, t) = latlong_st(d);
+    sample(tex, [s, t], filter, RefWrap::Repeat, RefWrap::ClampToEdge)
+}
+
+/// The unit direction through the centre of texel `(i, j)` of face `face` (GL order) of a
+/// cube map of side `size` (the inverse of GL's face table).
+pub fn texel_dir(face: usize, i: u32, j: u32, size: u32) -> [f64; 3] {
+    let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
+    let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
+    let d = match face {
+        0 => [1.0, -tc, -sc],
+        1 => [-1.0, -tc, sc],
+        2 => [sc, 1.0, tc],
+        3 => [sc, -1.0, -tc],
+        4 => [sc, -tc, 1.0],
+        _ => [-sc, -tc, -1.0],
+    };
+    let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    d.map(|c| c / l)
+}
+
+/// Seed 000 §3.3.3 by brute force, in f64: the environment `faces` (RGB565, GL order)
+/// convolved with the cosine lobe (`exponent = None`: `(1/π) ∫ L max(0, n·ω) dω`) or the
+/// Phong lobe (`((e + 1)/2π) ∫ L max(0, r·ω)^e dω`) in unit direction `n`, each source texel
+/// weighted by its solid angle `(2/S)² / (1 + sc² + tc²)^(3/2)`.
+pub fn convolve(faces: &[RefTexture; 6], n: [f64; 3], exponent: Option<u32>) -> [f64; 3] {
+    let size = faces[0].width;
+    let mut acc = [0.0; 3];
+    for (f, tex) in faces.iter().enumerate() {
+        for j in 0..size {
+            for i in 0..size {
+                let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
+                let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
+                let dw = 4.0 / f64::from(size * size) / (1.0 + sc * sc + tc * tc).powf(1.5);
+                let w = texel_dir(f, i, j, size);
+                let c = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+                if c <= 0.0 {
+                    continue;
+                }
+                let k = match exponent {
+                    None => c / core::f64::consts::PI,
+                    Some(e) => c.powi(e as i32) * f64::from(e + 1) / core::f64::consts::TAU,
+                };
+                let l = super::types::rgb565_to_f64(tex.texel(i, j));
+                for ch in 0..3 {
+                    acc[ch] += l[ch] * k * dw;
+                }
+            }
+        }
+    }
+    acc
+}
