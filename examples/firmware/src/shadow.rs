@@ -211,3 +211,27 @@ fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
         stats,
     })
 }
+
+/// A whole `shadow_*` firmware under the high directional light: the light pass (not
+/// counted), then the lit pass with filter `F`, counted and reported as scene `name`.
+/// (Firmware only: the host tests include this file for the scene code above.)
+#[cfg(target_os = "none")]
+pub fn run_directional<F: ShadowFilter>(name: &str, buf: &mut ShadowBuffers) -> bool {
+    let Ok(space) = scene::directional(SceneLight::High) else {
+        return false;
+    };
+    if light_pass(&space, &mut buf.map).is_err() {
+        return false;
+    }
+    crate::report(name, |pause, resume| {
+        lit_pass::<_, F, 6>(
+            buf,
+            &space,
+            SceneLight::High,
+            core::hint::black_box(crate::data::T128),
+            core::hint::black_box(crate::data::T64),
+            pause,
+            resume,
+        )
+    })
+}

@@ -3,33 +3,15 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::shading::pcf::SingleTap;
 use fixel_firmware::shadow::{self, ShadowBuffers};
-use fixel_firmware::{data, report};
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 
 fn run() -> bool {
     // SAFETY: single-threaded firmware, the only reference to BUF.
     let buf = unsafe { &mut *core::ptr::addr_of_mut!(BUF) };
-    let Ok(space) = scene::directional(SceneLight::High) else {
-        return false;
-    };
-    if shadow::light_pass(&space, &mut buf.map).is_err() {
-        return false;
-    }
-    report("shadow_single", |pause, resume| {
-        shadow::lit_pass::<_, SingleTap, 6>(
-            buf,
-            &space,
-            SceneLight::High,
-            core::hint::black_box(data::T128),
-            core::hint::black_box(data::T64),
-            pause,
-            resume,
-        )
-    })
+    shadow::run_directional::<SingleTap>("shadow_single", buf)
 }
 
 fixel_firmware::entry!(run);
