@@ -17,10 +17,10 @@
 //!   corrections each;
 //! * otherwise: the 64-bit division.
 //!
-//! [`SmallDivisor`] divides many numerators by one divisor below 2^16 with a reciprocal.
+//! [`Divisor32`] divides many numerators by one divisor below 2^32 through a reciprocal.
 
 /// True on cores with a 32-bit divide instruction (Cortex-M3/M4/M7, RV32IM, hosts); false on
-/// ARMv6-M (Cortex-M0/M0+), where [`SmallDivisor`] beats the library division.
+/// ARMv6-M (Cortex-M0/M0+), where division is a library call.
 pub const HW_DIVIDE: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
 
 /// `n / d` rounded towards zero, exactly; `d` must not be zero (then `0` is returned, never
@@ -122,84 +122,6 @@ pub fn div_floor_i64(n: i64, d: i64) -> i64 {
         let m = n.unsigned_abs() + (d as u64 - 1);
         (div_u64(m, d as u64) as i64).wrapping_neg()
     }
-}
-
-/// Exact division of many numerators by one divisor below 2^16 (a triangle's doubled area
-/// in the raster set-up): a 32-bit reciprocal, so each 32-bit step is a multiply and a
-/// correction instead of a division (Cortex-M0+ has no divide instruction: its library
-/// division costs about 80 instructions).
-#[derive(Clone, Copy, Debug)]
-pub struct SmallDivisor {
-    d: u32,
-    /// `floor((2^32 - 1) / d)`.
-    m: u32,
-}
-
-impl SmallDivisor {
-    /// `None` unless `0 < d < 2^16`.
-    #[inline]
-    pub fn new(d: u64) -> Option<Self> {
-        if d == 0 || d >> 16 != 0 {
-            return None;
-        }
-        let d = d as u32;
-        Some(SmallDivisor { d, m: u32::MAX / d })
-    }
-
-    /// `(t / d, t % d)`, exactly.
-    #[inline(always)]
-    fn div32(&self, t: u32) -> (u32, u32) {
-        // t m / 2^32 > t / d - 2: at most two corrections.
-        let mut q = mul_hi(t, self.m);
-        let mut r = t.wrapping_sub(q.wrapping_mul(self.d));
-        while r >= self.d {
-            q += 1;
-            r -= self.d;
-        }
-        (q, r)
-    }
-
-    /// `n / d` rounded towards zero, exactly (base 2^16 long division as [`div_u64`]).
-    #[inline]
-    pub fn div(&self, n: u64) -> u64 {
-        let hi = (n >> 32) as u32;
-        let lo = n as u32;
-        if hi == 0 {
-            return u64::from(self.div32(lo).0);
-        }
-        let (q1, r1) = self.div32(hi);
-        let (q2, r2) = self.div32((r1 << 16) | (lo >> 16));
-        let (q3, _) = self.div32((r2 << 16) | (lo & 0xFFFF));
-        (u64::from(q1) << 32) | (u64::from(q2) << 16) | u64::from(q3)
-    }
-}
-
-/// High word of the 64-bit product `a b`: one `umull` where there is one; four 16x16
-/// products on ARMv6-M (the library's `__aeabi_lmul` is about 25 instructions and a call).
-#[inline(always)]
-fn mul_hi(a: u32, b: u32) -> u32 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
-        mul_hi_split(a, b)
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
-        ((u64::from(a) * u64::from(b)) >> 32) as u32
-    }
-}
-
-/// The 32-bit-multiply form of [`mul_hi`] (compiled everywhere so every target tests it).
-#[cfg_attr(
-    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-    allow(dead_code)
-)]
-#[inline(always)]
-fn mul_hi_split(a: u32, b: u32) -> u32 {
-    let (ah, al) = (a >> 16, a & 0xFFFF);
-    let (bh, bl) = (b >> 16, b & 0xFFFF);
-    let (mid1, mid2) = (ah * bl, al * bh);
-    let carry = ((al * bl) >> 16) + (mid1 & 0xFFFF) + (mid2 & 0xFFFF);
-    ah * bh + (mid1 >> 16) + (mid2 >> 16) + (carry >> 16)
 }
 
 /// Exact division of many 64-bit numerators by one divisor below 2^32 (a triangle's doubled
@@ -374,43 +296,6 @@ mod tests {
                 check(n, d);
             }
         }
-    }
-
-    #[test]
-    fn small_divisor_equals_the_plain_division() {
-        let mut x: u64 = 0x1234_5678_9ABC_DEF1;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
-        for d in (1u64..70).chain([255, 256, 4095, 65534, 65535]) {
-            let s = SmallDivisor::new(d).unwrap();
-            for n in [
-                0u64,
-                1,
-                d - 1,
-                d,
-                u32::MAX as u64,
-                1 << 32,
-                u64::MAX,
-                u64::MAX - 1,
-            ] {
-                assert_eq!(s.div(n), n / d, "{n} / {d}");
-            }
-        }
-        for _ in 0..200_000 {
-            let d = (next() >> 48).max(1);
-            let n = next() >> (next() % 64);
-            assert_eq!(SmallDivisor::new(d).unwrap().div(n), n / d, "{n} / {d}");
-            let (a, b) = (next() as u32, next() as u32);
-            assert_eq!(
-                mul_hi_split(a, b),
-                ((u64::from(a) * u64::from(b)) >> 32) as u32
-            );
-        }
-        assert!(SmallDivisor::new(0).is_none() && SmallDivisor::new(1 << 16).is_none());
     }
 
     #[test]

@@ -64,7 +64,7 @@ pub fn try_fx<T: fixed::traits::ToFixed + Copy>(v: T) -> Result<Fx, crate::Error
         .ok_or(crate::Error::OutOfRange { what: "number" })
 }
 
-pub use div::{div_floor_i64, div_round_i64, div_u64, Divisor32, SmallDivisor, HW_DIVIDE};
+pub use div::{div_floor_i64, div_round_i64, div_u64, Divisor32, HW_DIVIDE};
 pub use mat::Mat4;
 pub use recip::{div_fx, isqrt_u32, isqrt_u64, recip_fx, reciprocal_u32};
 pub use trig::{sin_cos, Angle};
