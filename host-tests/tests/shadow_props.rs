@@ -83,8 +83,10 @@ proptest! {
         }
     }
 
-    /// Spot light: s, t within 2^-15 of the map (1/128 texel on a 256 map), d within one
-    /// step (the per-pixel table reciprocal's relative error is below 2^-16).
+    /// Spot light: s, t within 2^-15 of the map (1/128 texel on a 256 map), d within 1.5
+    /// steps: half a step of rounding plus the per-pixel table reciprocal's relative error
+    /// below 2^-16, which is up to one step at depths near 65535 (a random case found 1.07
+    /// steps at depth 33,417, over the one step this bound used to claim).
     #[test]
     fn spot_projection_matches_f64(
         eye in prop::array::uniform3(-4.0f64..4.0), fov in 30.0f64..120.0,
@@ -101,7 +103,7 @@ proptest! {
         prop_assert_eq!(f.is_some(), r.is_some(), "{:?} vs {:?}", f, r);
         if let (Some(f), Some(r)) = (f, r) {
             prop_assert!((f.0 - r.0).abs() < 3.1e-5 && (f.1 - r.1).abs() < 3.1e-5, "{:?} vs {:?}", f, r);
-            prop_assert!((f.2 - r.2).abs() < 1.0, "{:?} vs {:?}", f, r);
+            prop_assert!((f.2 - r.2).abs() < 1.5, "{:?} vs {:?}", f, r);
         }
     }
 
