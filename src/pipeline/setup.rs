@@ -134,6 +134,10 @@ pub(crate) fn setup<V: Varyings>(
         let wmin = i64::from(pos[0].3.min(pos[1].3).min(pos[2].3).max(1));
         pos.map(|v| {
             let w = i64::from(v.3.max(1));
+            if w == wmin {
+                // The nearest vertex: exactly 1.0, no division.
+                return i64::from(Q_ONE);
+            }
             // Both positive: the exact 32-bit-path division of `math::div`.
             (div_u64((wmin << 30) as u64, w as u64) as i64)
                 .clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))

@@ -47,6 +47,13 @@ pub struct PlaneSetup {
     ref_dy: i64,
     /// `|area_n|` as a reciprocal: every gradient divides by it.
     recip: Divisor32,
+    /// `|area_n| / 2`, the rounding term of every gradient.
+    half_d: u64,
+    /// The common gradient path (`norm <= SHIFT`): the numerator's shift `SHIFT - norm`,
+    /// and the magnitude below which the shifted numerator fits `i64` (`0` when
+    /// `norm > SHIFT`, which sends every gradient down the general path).
+    k: u32,
+    fast_below: u64,
     /// Reference pixel.
     pub px_ref: i32,
     /// Reference row.
@@ -75,7 +82,12 @@ impl PlaneSetup {
         let half = one / 2;
         let norm = (64 - area2.unsigned_abs().leading_zeros()).saturating_sub(31);
         let area_n = area2 >> norm;
+        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
+        let k = SHIFT.saturating_sub(norm);
         Some(PlaneSetup {
+            half_d: area_n.unsigned_abs() / 2,
+            k,
+            fast_below: if norm > SHIFT { 0 } else { 1 << (62 - k) },
             dx1,
             dy1,
             dx2,
@@ -115,8 +127,26 @@ impl PlaneSetup {
     /// the shifted numerator fits `i64` (the common case), else a long division; for huge
     /// triangles (`norm > SHIFT`) the numerator is shifted right instead. Wraps modulo 2^64
     /// where the result does not fit.
-    #[inline]
+    #[inline(always)]
     fn gradient(&self, n: i64) -> i64 {
+        // The common case, with the shift, its bound and the rounding term precomputed
+        // per triangle: the same arithmetic as `div_round(n << k)` in the general path.
+        let m = n.unsigned_abs();
+        if m < self.fast_below {
+            let q = self.recip.div((m << self.k).wrapping_add(self.half_d)) as i64;
+            if (n < 0) == (self.area_n < 0) {
+                q
+            } else {
+                q.wrapping_neg()
+            }
+        } else {
+            self.gradient_general(n)
+        }
+    }
+
+    /// [`Self::gradient`] for any numerator (out of line: huge triangles and numerators).
+    #[inline(never)]
+    fn gradient_general(&self, n: i64) -> i64 {
         const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         if self.norm > SHIFT {
             let k = (self.norm - SHIFT).min(62);
@@ -259,6 +289,37 @@ mod tests {
         let l1 = ((x - p0.0) * (p2.1 - p0.1) - (p2.0 - p0.0) * (y - p0.1)) / area;
         let l2 = ((p1.0 - p0.0) * (y - p0.1) - (x - p0.0) * (p1.1 - p0.1)) / area;
         a[0] as f64 + l1 * (a[1] as f64 - a[0] as f64) + l2 * (a[2] as f64 - a[0] as f64)
+    }
+
+    /// The per-triangle fast path of `gradient` is the general path's arithmetic with its
+    /// shift and rounding precomputed: the same integers for every numerator.
+    #[test]
+    fn fast_gradient_equals_general_path() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let vp = Rect {
+            x0: 0,
+            y0: 0,
+            x1: 320,
+            y1: 240,
+        };
+        for _ in 0..20_000 {
+            let mut next = || {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                x
+            };
+            let scale = 8 + (next() % 13) as u32;
+            let mut c = || ((next() as i64 >> 40) as i32) >> (32 - scale);
+            let v = [(c(), c()), (c(), c()), (c(), c())];
+            let Some(ps) = PlaneSetup::new(v, vp) else {
+                continue;
+            };
+            for _ in 0..8 {
+                let n = (next() as i64) >> (next() % 63);
+                assert_eq!(ps.gradient(n), ps.gradient_general(n), "{v:?} {n}");
+            }
+        }
     }
 
     #[test]
