@@ -35,6 +35,17 @@ pub struct EdgeWalker {
 /// edge and band was a visible share of small triangles' cost on Cortex-M).
 #[inline]
 fn ceil_div_rem(n: i64, d: i64) -> (i64, i64) {
+    // On screen (the common case) both fit `i32`: one 32-bit division, inline.
+    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), i32::try_from(d)) {
+        if d32 > 0 && n32 != i32::MIN {
+            let (q, r) = (n32.div_euclid(d32), n32.rem_euclid(d32));
+            return if r == 0 {
+                (i64::from(q), 0)
+            } else {
+                (i64::from(q) + 1, i64::from(d32 - r))
+            };
+        }
+    }
     let q = div_floor_i64(n, d);
     // floor division: 0 <= r < d.
     let r = n.wrapping_sub(q.wrapping_mul(d));
