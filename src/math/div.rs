@@ -115,6 +115,13 @@ pub fn div_floor_i64(n: i64, d: i64) -> i64 {
     if d <= 0 {
         return 0;
     }
+    // Both within `i32` (on-screen projections): one 32-bit division instruction, inline,
+    // on cores that have one (on Cortex-M0+ the unsigned paths below measured faster).
+    if let (true, Ok(n32), Ok(d32)) = (HW_DIVIDE, i32::try_from(n), i32::try_from(d)) {
+        if n32 != i32::MIN {
+            return i64::from(n32.div_euclid(d32));
+        }
+    }
     if n >= 0 {
         div_u64(n as u64, d as u64) as i64
     } else {
