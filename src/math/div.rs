@@ -206,6 +206,26 @@ pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
     }
 }
 
+/// `a * b` as `i64`, exactly: one `smull` where the core has it; on ARMv6-M (no 64-bit
+/// product instruction) the 16-bit-split product of the magnitudes instead of the
+/// `__aeabi_lmul` library call that `i64` multiplication compiles to.
+#[inline(always)]
+pub(crate) fn mul_wide_signed(a: i32, b: i32) -> i64 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        let p = mul_wide_split(a.unsigned_abs(), b.unsigned_abs()) as i64;
+        if (a < 0) != (b < 0) {
+            p.wrapping_neg()
+        } else {
+            p
+        }
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        i64::from(a) * i64::from(b)
+    }
+}
+
 /// The 16-bit-multiply form of [`mul_wide`] (compiled everywhere so every target tests it).
 #[cfg_attr(
     not(all(target_arch = "arm", not(target_has_atomic = "32"))),
@@ -236,6 +256,8 @@ mod tests {
             x ^= x << 17;
             let (a, b) = ((x >> 32) as u32, x as u32);
             assert_eq!(mul_wide_split(a, b), u64::from(a) * u64::from(b));
+            let (sa, sb) = (a as i32, b as i32);
+            assert_eq!(mul_wide_signed(sa, sb), i64::from(sa) * i64::from(sb));
         }
         assert_eq!(
             mul_wide_split(u32::MAX, u32::MAX),

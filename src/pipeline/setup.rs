@@ -15,6 +15,7 @@
 
 use super::recip::{Q_FLOOR, Q_ONE};
 use super::stages::ProjKind;
+use crate::math::div::mul_wide_signed;
 use crate::math::div_u64;
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{Plane, Rect, ATTR_SUBPIXEL_BITS};
@@ -170,7 +171,9 @@ pub(crate) fn setup<V: Varyings>(
     for k in 0..V::N {
         let a = value(k);
         let a = if perspective {
-            [0, 1, 2].map(|i| ((a[i] * q[i]) >> 30) as i32)
+            // a within i32, q in 0..=2^30: a 32 x 32-bit product (no 64-bit library
+            // multiply on Cortex-M0+).
+            [0, 1, 2].map(|i| (mul_wide_signed(a[i] as i32, q[i] as i32) >> 30) as i32)
         } else {
             a.map(|x| x as i32)
         };
