@@ -77,6 +77,11 @@ impl<'a> Mesh<'a> {
     pub fn triangles(&self) -> usize {
         self.indices.len()
     }
+
+    /// Number of vertices.
+    pub fn vertices(&self) -> usize {
+        self.positions.len()
+    }
 }
 
 /// One vertex to clip space, lit if there is a light and a normal. `None` on overflow.

@@ -41,4 +41,6 @@ pub use mesh::{
 };
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
 mod shadow;
+mod uv_gen;
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
+pub use uv_gen::{map_mesh, map_mesh_capacity, Axis, MeshStorage, UvMapping};

@@ -1,0 +1,533 @@
+//! Texture coordinates generated from model-space positions (seed 000 §2): planar,
+//! cylindrical and spherical projections, per vertex, at bake time or at run time.
+//!
+//! For a position `p`, with `d = p − center` split along the mapping's axis into `up`
+//! (along the axis), `right` and `front` (a right-handed frame: for [`Axis::Y`] they are
+//! `+x`, `+y` and `+z`):
+//!
+//! ```text
+//! planar       u = (p − origin)·s                 v = (p − origin)·t
+//! cylindrical  u = 1/2 + atan2(right, front) / 2π  v = (top − up) / (top − bottom)
+//! spherical    u = 1/2 + atan2(right, front) / 2π  v = 1/2 − atan2(up, |(right, front)|) / π
+//! ```
+//!
+//! So the front of the object (`+z` for [`Axis::Y`]) shows the middle column of the texture,
+//! the seam is at the back, `u` grows to the right seen from the front (no mirroring), and
+//! `v = 0` (the first row of the image, GL's `t = 0`) is at the top.
+//!
+//! # Fixed point and error
+//!
+//! Positions are I16F16 ([`Vec3`]); `u, v` are I16F16 in texture units (1.0 = one texture).
+//! The angles come from the table `atan2` of
+//! [`env::angles`](crate::shading::env::angles) (no square root, no division): `u` and the
+//! spherical `v` are within 2 units of 2^-16 of the exact values (tested against the f64
+//! reference in `host-tests`); the planar and cylindrical products are exact then rounded
+//! once.
+//!
+//! # Seams and poles
+//!
+//! A triangle that straddles the seam has corners near `u = 1` and near `u = 0`: drawn as
+//! they are, the whole texture would be squeezed, backwards, into it. [`map_mesh`] handles
+//! it per triangle: when a triangle's `u` spans more than one half, the corners below one
+//! half get `u + 1` (a repeating wrap samples the same texels). A corner on the axis (a
+//! pole: `right = front = 0`, where every `u` is the same point) gets the mean `u` of the
+//! triangle's other corners. A corner whose `u` changed in a triangle is a new vertex (a copy
+//! of the position and normal), so [`map_mesh`] writes into caller storage with room for
+//! them: the source's vertex count plus, for a closed mesh around the axis, about one column
+//! of the seam and one copy per triangle at each pole ([`map_mesh_capacity`] gives the exact
+//! count).
+//!
+//! ```
+//! use fixel::math::{fx, Fx, Vec3};
+//! use fixel::scene::{map_mesh, Axis, MeshStorage, UvMapping};
+//!
+//! // A square pyramid around +y: its apex is a pole, its back faces straddle the seam.
+//! let positions = [
+//!     Vec3::from_num(0, 1, 0),
+//!     Vec3::from_num(1, 0, 1), Vec3::from_num(1, 0, -1),
+//!     Vec3::from_num(-1, 0, -1), Vec3::from_num(-1, 0, 1),
+//! ];
+//! let indices = [[0u16, 4, 1], [0, 1, 2], [0, 2, 3], [0, 3, 4]];
+//! let mapping = UvMapping::Cylindrical { center: Vec3::ZERO, axis: Axis::Y, top: fx(1), bottom: fx(0) };
+//! let (mut p, mut uv, mut ix) = ([Vec3::ZERO; 16], [[Fx::ZERO; 2]; 16], [[0u16; 3]; 4]);
+//! let storage = MeshStorage { positions: &mut p, normals: None, uvs: &mut uv, indices: &mut ix };
+//! let mesh = map_mesh(&mapping, &positions, None, &indices, storage)?;
+//! assert!(mesh.vertices() > 5); // seam and apex copies
+//! # Ok::<(), fixel::Error>(())
+//! ```
+
+use super::Mesh;
+use crate::math::{Fx, Vec3};
+use crate::shading::env::angles::atan2_hypot;
+use crate::Error;
+
+/// An axis of model space (the "up" of a cylindrical or spherical mapping).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Axis {
+    /// `+x` up; right `+z`, front `+y`.
+    X,
+    /// `+y` up (the default); right `+x`, front `+z`.
+    #[default]
+    Y,
+    /// `+z` up; right `+x`, front `−y`.
+    Z,
+}
+
+impl Axis {
+    /// `(right, up, front)` components of `d`, I16F16 bits.
+    fn frame(self, d: Vec3) -> (i32, i32, i32) {
+        let (x, y, z) = (d.x.to_bits(), d.y.to_bits(), d.z.to_bits());
+        match self {
+            Axis::X => (z, x, y),
+            Axis::Y => (x, y, z),
+            Axis::Z => (x, z, y.saturating_neg()),
+        }
+    }
+}
+
+/// How texture coordinates come from a model-space position (see the module docs for the
+/// formulas).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UvMapping {
+    /// A projection onto a plane: `u = (p − origin)·s`, `v = (p − origin)·t` (the lengths
+    /// of `s` and `t` are textures per model unit).
+    Planar {
+        /// Where `u = v = 0`.
+        origin: Vec3,
+        /// The `u` direction, scaled.
+        s: Vec3,
+        /// The `v` direction, scaled.
+        t: Vec3,
+    },
+    /// A cylinder around `axis` through `center`: `u` by angle, `v` from `top` (0) to
+    /// `bottom` (1) along the axis (model units from `center`).
+    Cylindrical {
+        /// A point on the axis.
+        center: Vec3,
+        /// The axis direction.
+        axis: Axis,
+        /// Height of `v = 0`.
+        top: Fx,
+        /// Height of `v = 1` (must differ from `top`).
+        bottom: Fx,
+    },
+    /// A sphere around `center`: `u` by longitude, `v` by latitude (0 at the top pole).
+    Spherical {
+        /// The sphere's centre.
+        center: Vec3,
+        /// The polar axis.
+        axis: Axis,
+    },
+}
+
+/// `1/2 + atan2(right, front) / 2π` in Q16 (`0..65536`): the middle column faces front.
+fn longitude(right: i32, front: i32) -> i32 {
+    let (turns, _) = atan2_hypot(
+        right.unsigned_abs(),
+        right < 0,
+        front.unsigned_abs(),
+        front < 0,
+    );
+    ((turns + 32768) & 0xFFFF) as i32
+}
+
+/// A mapping checked once, with its per-call constants.
+#[derive(Clone, Copy, Debug)]
+struct Prepared {
+    mapping: UvMapping,
+    /// Cylindrical: `1 / (top − bottom)` in Q32 (signed), as `i64`.
+    inv_height: i64,
+}
+
+impl Prepared {
+    fn new(mapping: &UvMapping) -> Result<Self, Error> {
+        let inv_height = match *mapping {
+            UvMapping::Cylindrical { top, bottom, .. } => {
+                let h = i64::from(top.to_bits()) - i64::from(bottom.to_bits());
+                if h == 0 {
+                    return Err(Error::OutOfRange {
+                        what: "cylinder height (top equals bottom)",
+                    });
+                }
+                // 2^48 / h in Q32 per I16F16 unit: (top − up) * inv >> 32 is v in Q16.
+                (1i64 << 48) / h
+            }
+            _ => 0,
+        };
+        Ok(Prepared {
+            mapping: *mapping,
+            inv_height,
+        })
+    }
+
+    /// `(u, v, on the axis)` of `p`, I16F16.
+    fn at(&self, p: Vec3) -> ([Fx; 2], bool) {
+        match self.mapping {
+            UvMapping::Planar { origin, s, t } => {
+                let d = p.sub(origin);
+                ([d.dot(s), d.dot(t)], false)
+            }
+            UvMapping::Cylindrical {
+                center, axis, top, ..
+            } => {
+                let (right, up, front) = axis.frame(p.sub(center));
+                let u = longitude(right, front);
+                let dh = i64::from(top.to_bits()) - i64::from(up);
+                let v = (dh.saturating_mul(self.inv_height) + (1 << 31)) >> 32;
+                let v = v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+                (
+                    [Fx::from_bits(u), Fx::from_bits(v)],
+                    right == 0 && front == 0,
+                )
+            }
+            UvMapping::Spherical { center, axis } => {
+                let (right, up, front) = axis.frame(p.sub(center));
+                let u = longitude(right, front);
+                let (_, radial) = atan2_hypot(
+                    right.unsigned_abs(),
+                    right < 0,
+                    front.unsigned_abs(),
+                    front < 0,
+                );
+                let (beta, _) = atan2_hypot(up.unsigned_abs(), up < 0, radial, false);
+                // Signed quarter turns: north in 0..=16384, south in 49152..65536.
+                let beta = if beta >= 32768 {
+                    beta as i32 - 65536
+                } else {
+                    beta as i32
+                };
+                let v = (32768 - 2 * beta).clamp(0, 65536);
+                (
+                    [Fx::from_bits(u), Fx::from_bits(v)],
+                    right == 0 && front == 0,
+                )
+            }
+        }
+    }
+
+    /// Whether `u` wraps around (so seams and poles need fixing).
+    fn wraps(&self) -> bool {
+        !matches!(self.mapping, UvMapping::Planar { .. })
+    }
+}
+
+impl UvMapping {
+    /// The texture coordinates of one model-space position (no seam or pole handling: see
+    /// [`map_mesh`]). Errors if the mapping is degenerate (a cylinder with `top == bottom`).
+    pub fn uv(&self, p: Vec3) -> Result<[Fx; 2], Error> {
+        Ok(Prepared::new(self)?.at(p).0)
+    }
+
+    /// Writes the texture coordinates of `positions` into `uvs` (same length), per vertex
+    /// with no seam or pole handling: right for planar mappings and for meshes that stay
+    /// clear of the seam; [`map_mesh`] otherwise.
+    pub fn generate(&self, positions: &[Vec3], uvs: &mut [[Fx; 2]]) -> Result<(), Error> {
+        if uvs.len() != positions.len() {
+            return Err(Error::WrongLength {
+                expected: positions.len(),
+                actual: uvs.len(),
+            });
+        }
+        let m = Prepared::new(self)?;
+        for (uv, &p) in uvs.iter_mut().zip(positions) {
+            *uv = m.at(p).0;
+        }
+        Ok(())
+    }
+}
+
+/// Caller storage for [`map_mesh`]'s output mesh.
+#[derive(Debug)]
+pub struct MeshStorage<'a> {
+    /// Positions (at least the source's count plus the seam and pole copies).
+    pub positions: &'a mut [Vec3],
+    /// Normals, when the source has them (as long as `positions`).
+    pub normals: Option<&'a mut [Vec3]>,
+    /// Texture coordinates (as long as `positions`).
+    pub uvs: &'a mut [[Fx; 2]],
+    /// Triangles (at least the source's count).
+    pub indices: &'a mut [[u16; 3]],
+}
+
+/// The texture coordinates of one triangle's corners after the seam and pole rules, from
+/// the per-vertex `(uv, on the axis)`.
+fn fix_triangle(mut c: [([Fx; 2], bool); 3]) -> [[Fx; 2]; 3] {
+    let half = 1 << 15;
+    let us = c.map(|(uv, pole)| (uv[0].to_bits(), pole));
+    let lo = us.iter().filter(|u| !u.1).map(|u| u.0).min();
+    let hi = us.iter().filter(|u| !u.1).map(|u| u.0).max();
+    if let (Some(lo), Some(hi)) = (lo, hi) {
+        if hi - lo > half {
+            for (uv, pole) in c.iter_mut() {
+                if !*pole && uv[0].to_bits() < half {
+                    uv[0] = Fx::from_bits(uv[0].to_bits() + (1 << 16));
+                }
+            }
+        }
+    }
+    let (sum, n) = c
+        .iter()
+        .filter(|(_, pole)| !pole)
+        .fold((0i64, 0i64), |(s, n), (uv, _)| {
+            (s + i64::from(uv[0].to_bits()), n + 1)
+        });
+    if n > 0 {
+        let mean = Fx::from_bits(((2 * sum + n) / (2 * n)) as i32);
+        for (uv, pole) in c.iter_mut() {
+            if *pole {
+                uv[0] = mean;
+            }
+        }
+    }
+    c.map(|(uv, _)| uv)
+}
+
+/// The vertex count [`map_mesh`] needs for this mesh and mapping (the source's vertices
+/// plus one copy per distinct seam or pole corner).
+pub fn map_mesh_capacity(
+    mapping: &UvMapping,
+    positions: &[Vec3],
+    indices: &[[u16; 3]],
+) -> Result<usize, Error> {
+    let m = Prepared::new(mapping)?;
+    let mut extra = 0usize;
+    if m.wraps() {
+        for tri in indices {
+            let c = tri.map(|i| {
+                positions
+                    .get(usize::from(i))
+                    .map_or(([Fx::ZERO; 2], false), |&p| m.at(p))
+            });
+            let fixed = fix_triangle(c);
+            extra += (0..3).filter(|&k| fixed[k] != c[k].0).count();
+        }
+    }
+    Ok(positions.len() + extra)
+}
+
+/// Generates texture coordinates for a mesh with `mapping`, handling the seam and the
+/// poles per triangle (see the module docs), into `out`; returns the mesh over `out`.
+///
+/// Errors: the source is invalid (as [`Mesh::new`]), the mapping is degenerate, or `out`
+/// is too small ([`Error::CapacityExceeded`] with the size it needs; see
+/// [`map_mesh_capacity`]), or the copies push the vertex count past what a `u16` index
+/// reaches ([`Error::MeshTooLarge`]).
+pub fn map_mesh<'a>(
+    mapping: &UvMapping,
+    positions: &[Vec3],
+    normals: Option<&[Vec3]>,
+    indices: &[[u16; 3]],
+    out: MeshStorage<'a>,
+) -> Result<Mesh<'a>, Error> {
+    let n = positions.len();
+    if let Some(nm) = normals {
+        if nm.len() != n {
+            return Err(Error::WrongLength {
+                expected: n,
+                actual: nm.len(),
+            });
+        }
+    }
+    for (t, tri) in indices.iter().enumerate() {
+        for (k, &i) in tri.iter().enumerate() {
+            if usize::from(i) >= n {
+                return Err(Error::IndexOutOfRange {
+                    at: t * 3 + k,
+                    index: i,
+                    vertices: n,
+                });
+            }
+        }
+    }
+    let m = Prepared::new(mapping)?;
+    let MeshStorage {
+        positions: out_p,
+        normals: out_n,
+        uvs: out_uv,
+        indices: out_i,
+    } = out;
+    let cap = out_p.len().min(out_uv.len()).min(match (&out_n, normals) {
+        (Some(o), Some(_)) => o.len(),
+        // Normals are copied only when both the source and the storage have them.
+        _ => usize::MAX,
+    });
+    if cap < n || out_i.len() < indices.len() {
+        return Err(Error::CapacityExceeded {
+            capacity: map_mesh_capacity(mapping, positions, indices)?,
+        });
+    }
+    let mut out_n = out_n;
+    for i in 0..n {
+        out_p[i] = positions[i];
+        out_uv[i] = m.at(positions[i]).0;
+        if let (Some(o), Some(src)) = (out_n.as_deref_mut(), normals) {
+            o[i] = src[i];
+        }
+    }
+    let mut count = n;
+    for (t, tri) in indices.iter().enumerate() {
+        let mut new_tri = *tri;
+        if m.wraps() {
+            let c = tri.map(|i| m.at(positions[usize::from(i)]));
+            let fixed = fix_triangle(c);
+            for k in 0..3 {
+                if fixed[k] == c[k].0 {
+                    continue;
+                }
+                let src = usize::from(tri[k]);
+                let normal = normals.map(|nm| nm[src]);
+                // Reuse an earlier copy of this vertex with the same coordinates.
+                let found = (n..count).find(|&j| {
+                    out_p[j] == positions[src]
+                        && out_uv[j] == fixed[k]
+                        && match (out_n.as_deref(), normal) {
+                            (Some(o), Some(nv)) => o[j] == nv,
+                            _ => true,
+                        }
+                });
+                let j = match found {
+                    Some(j) => j,
+                    None => {
+                        if count >= cap {
+                            return Err(Error::CapacityExceeded {
+                                capacity: map_mesh_capacity(mapping, positions, indices)?,
+                            });
+                        }
+                        if count >= 1 << 16 {
+                            return Err(Error::MeshTooLarge {
+                                what: "vertices (with seam and pole copies)",
+                                count: map_mesh_capacity(mapping, positions, indices)?,
+                                limit: 1 << 16,
+                            });
+                        }
+                        out_p[count] = positions[src];
+                        out_uv[count] = fixed[k];
+                        if let (Some(o), Some(nv)) = (out_n.as_deref_mut(), normal) {
+                            o[count] = nv;
+                        }
+                        count += 1;
+                        count - 1
+                    }
+                };
+                new_tri[k] = j as u16;
+            }
+        }
+        out_i[t] = new_tri;
+    }
+    // The storage, now written, is lent out for the mesh's lifetime.
+    let (out_p, out_uv, out_i): (&'a [Vec3], &'a [[Fx; 2]], &'a [[u16; 3]]) =
+        (out_p, out_uv, out_i);
+    let nm: Option<&'a [Vec3]> = match out_n {
+        Some(o) if normals.is_some() => Some(&o[..count]),
+        _ => None,
+    };
+    Mesh::new(
+        &out_p[..count],
+        nm,
+        &out_uv[..count],
+        &out_i[..indices.len()],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::demo;
+    use crate::math::fx;
+    use std::vec;
+
+    const CYL: UvMapping = UvMapping::Cylindrical {
+        center: Vec3::ZERO,
+        axis: Axis::Y,
+        top: Fx::from_bits(1 << 16),
+        bottom: Fx::from_bits(-(1 << 16)),
+    };
+
+    fn u_of(m: &UvMapping, x: f64, y: f64, z: f64) -> f64 {
+        m.uv(Vec3::from_num(x, y, z)).unwrap()[0].to_num::<f64>()
+    }
+
+    #[test]
+    fn front_is_the_middle_column_and_u_grows_to_the_right() {
+        assert!((u_of(&CYL, 0.0, 0.0, 1.0) - 0.5).abs() < 1e-4);
+        assert!((u_of(&CYL, 1.0, 0.0, 0.0) - 0.75).abs() < 1e-4);
+        assert!((u_of(&CYL, -1.0, 0.0, 0.0) - 0.25).abs() < 1e-4);
+        let v = |y: f64| CYL.uv(Vec3::from_num(1.0, y, 0.0)).unwrap()[1].to_num::<f64>();
+        assert!(v(1.0).abs() < 1e-4 && (v(-1.0) - 1.0).abs() < 1e-4 && (v(0.0) - 0.5).abs() < 1e-4);
+        let sph = UvMapping::Spherical {
+            center: Vec3::ZERO,
+            axis: Axis::Y,
+        };
+        let v = |p: Vec3| sph.uv(p).unwrap()[1].to_num::<f64>();
+        assert!(v(Vec3::from_num(0, 2, 0)).abs() < 1e-4);
+        assert!((v(Vec3::from_num(0, -2, 0)) - 1.0).abs() < 1e-4);
+        assert!((v(Vec3::from_num(1, 1, 0)) - 0.25).abs() < 1e-3);
+    }
+
+    #[test]
+    fn degenerate_cylinder_is_refused() {
+        let m = UvMapping::Cylindrical {
+            center: Vec3::ZERO,
+            axis: Axis::Y,
+            top: fx(1),
+            bottom: fx(1),
+        };
+        assert!(matches!(m.uv(Vec3::ZERO), Err(Error::OutOfRange { .. })));
+    }
+
+    /// The demo sphere mapped spherically: no triangle spans more than half the texture,
+    /// the poles take their neighbours' mean, and the capacity is what was used.
+    #[test]
+    fn seam_and_poles_are_fixed_per_triangle() {
+        let s = demo::sphere();
+        let m = UvMapping::Spherical {
+            center: Vec3::ZERO,
+            axis: Axis::Y,
+        };
+        let need = map_mesh_capacity(&m, &s.positions, &s.indices).unwrap();
+        assert!(need > s.positions.len());
+        let mut p = vec![Vec3::ZERO; need];
+        let mut nm = vec![Vec3::ZERO; need];
+        let mut uv = vec![[Fx::ZERO; 2]; need];
+        let mut ix = vec![[0u16; 3]; s.indices.len()];
+        let out = MeshStorage {
+            positions: &mut p,
+            normals: Some(&mut nm),
+            uvs: &mut uv,
+            indices: &mut ix,
+        };
+        let mesh = map_mesh(&m, &s.positions, Some(&s.normals), &s.indices, out).unwrap();
+        assert!(mesh.vertices() <= need);
+        for &tri in mesh.indices {
+            let us = tri.map(|i| mesh.uvs[usize::from(i)][0].to_bits());
+            let span = us.iter().max().unwrap() - us.iter().min().unwrap();
+            assert!(span <= 1 << 15, "{tri:?}: u {us:?}");
+        }
+        // Too little storage says how much is needed.
+        let mut small = vec![Vec3::ZERO; s.positions.len()];
+        let mut suv = vec![[Fx::ZERO; 2]; s.positions.len()];
+        let mut six = vec![[0u16; 3]; s.indices.len()];
+        let out = MeshStorage {
+            positions: &mut small,
+            normals: None,
+            uvs: &mut suv,
+            indices: &mut six,
+        };
+        assert_eq!(
+            map_mesh(&m, &s.positions, None, &s.indices, out).unwrap_err(),
+            Error::CapacityExceeded { capacity: need }
+        );
+    }
+
+    #[test]
+    fn planar_is_a_pair_of_dot_products() {
+        let m = UvMapping::Planar {
+            origin: Vec3::from_num(-1, 0, 0),
+            s: Vec3::from_num(0.5, 0, 0),
+            t: Vec3::from_num(0, 0, 0.25),
+        };
+        let uv = m.uv(Vec3::from_num(1, 7, 2)).unwrap();
+        assert_eq!(uv, [fx(1), fx(0.5)]);
+    }
+}
