@@ -282,8 +282,8 @@ fn fix_triangle(mut c: [([Fx; 2], bool); 3]) -> [[Fx; 2]; 3] {
     c.map(|(uv, _)| uv)
 }
 
-/// The vertex count [`map_mesh`] needs for this mesh and mapping (the source's vertices
-/// plus one copy per distinct seam or pole corner).
+/// Enough vertices for [`map_mesh`] with this mesh and mapping: the source's vertices plus
+/// one per seam or pole corner (an upper bound: corners that come out equal share a copy).
 pub fn map_mesh_capacity(
     mapping: &UvMapping,
     positions: &[Vec3],

@@ -247,3 +247,4 @@ fn shade_fragment(
 }
 pub mod noise;
 pub mod shadow;
+pub mod uv_gen;
