@@ -6,9 +6,11 @@
 
 mod bake;
 mod bake_cube;
+mod bake_obj;
 mod light3d;
 
 mod mcu;
+mod teapot;
 
 use std::env;
 use std::ffi::OsString;
@@ -28,7 +30,9 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 6] = ["showcase", "scenes", "preview", "shadow", "noise", "envmap"];
+const RENDER_EXAMPLES: [&str; 7] = [
+    "showcase", "scenes", "preview", "shadow", "noise", "envmap", "mappings",
+];
 
 const HELP: &str = "\
 cargo xtask: repository chores for fixel
@@ -145,6 +149,22 @@ fn main() -> ExitCode {
                 ExitCode::from(1)
             }
         },
+        "bake-obj" => match bake_obj::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-obj: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
+                eprintln!("bake-obj: {e}");
+                ExitCode::FAILURE
+            }
+        },
+        "teapot" => match teapot::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("teapot: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
+                eprintln!("teapot: {e}");
+                ExitCode::FAILURE
+            }
+        },
         "bake-cube" => match bake_cube::run(rest) {
             Ok(()) => ExitCode::SUCCESS,
             Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-cube: {e}")),
@@ -176,7 +196,7 @@ fn no_flags(cmd: &str, rest: &[String]) -> Result<(), ExitCode> {
 // ---------------------------------------------------------------------------
 
 /// Workspace root (parent of this crate's manifest dir).
-fn root() -> PathBuf {
+pub(crate) fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("xtask lives one level below the workspace root")
