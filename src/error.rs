@@ -84,6 +84,9 @@ pub enum Error {
         /// What was converted.
         what: &'static str,
     },
+    /// Four corners that no projective map of a square reaches: the reason ("three corners
+    /// are collinear", "the corners cross (a bow-tie)", "the quad is concave").
+    BadQuad(&'static str),
     /// A cube-map face is not square or not the size of face 0.
     BadCubeMap {
         /// The face (0..=5: +X, -X, +Y, -Y, +Z, -Z).
@@ -143,6 +146,7 @@ impl fmt::Display for Error {
             Error::OutOfRange { what } => {
                 write!(f, "{what} is NaN or outside the fixed-point range")
             }
+            Error::BadQuad(why) => write!(f, "quad refused: {why}"),
             Error::BadCubeMap {
                 face,
                 width,

@@ -12,6 +12,7 @@
 //! `[-1, 1]` maps to depth `[0, 1]`; NDC y up maps to screen y down.
 
 pub(crate) mod clip;
+pub(crate) mod homography;
 pub(crate) mod vertex;
 pub(crate) mod viewport;
 
@@ -19,5 +20,6 @@ pub use clip::{
     clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
     prepare_without_depth, W_MIN_BITS,
 };
+pub use homography::Homography;
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

@@ -40,7 +40,9 @@ pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
+mod quad;
 mod shadow;
 mod uv_gen;
+pub use quad::{draw_quad, quad_triangles};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
 pub use uv_gen::{map_mesh, map_mesh_capacity, Axis, MeshStorage, UvMapping};

@@ -246,5 +246,6 @@ fn shade_fragment(
     img.depth[idx] = z;
 }
 pub mod noise;
+pub mod quad;
 pub mod shadow;
 pub mod uv_gen;
