@@ -13,6 +13,11 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
+#[allow(dead_code)] // the scene needs no tangents
+mod teapot {
+    include!("../../assets/teapot/teapot_mesh.rs");
+}
+
 use scenes::{Fnv1a, FrameResult, SmallBuffers, SphereBuffers, Target, Whole, WholeTarget};
 
 fn texture(w: u32, h: u32) -> Vec<Rgb565> {
@@ -126,6 +131,31 @@ fn mcu_frames() {
         w,
         (r.checksum, r.stats.pixels),
         "sphere: bands differ from the whole frame"
+    );
+
+    // The teapot baked from OBJ (the firmware's `data::teapot`, the same generated file).
+    let mesh = Mesh::new(
+        &teapot::TEAPOT_POSITIONS,
+        Some(&teapot::TEAPOT_NORMALS),
+        &teapot::TEAPOT_UVS,
+        &teapot::TEAPOT_INDICES,
+    )
+    .unwrap();
+    let r = scenes::teapot(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("teapot", &r);
+    let w = whole::<scenes::LitSphere>(tex, &mesh, &scenes::teapot_model(0), 20, true);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "teapot: bands differ from the whole frame"
     );
 
     let t64 = texture(64, 64);

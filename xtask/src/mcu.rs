@@ -50,9 +50,11 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 14] = [
+const SCENES: [&str; 15] = [
     "cube",
     "sphere",
+    // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
+    "teapot",
     "floor",
     "floor_bilinear",
     // Shadow maps (bands of 4 rows, 64x64 map): light pass per map texel, the lit pass's

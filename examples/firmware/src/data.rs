@@ -97,3 +97,11 @@ pub static SKY_IRR16: [Rgb565; 6 * 256] =
 /// See [`SKY_IRR16`].
 pub static SKY_GLOSS16: [Rgb565; 6 * 256] =
     texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky-gloss16.bin")));
+
+/// The Utah teapot baked by `cargo xtask bake-obj assets/teapot/teapot.obj` (860 vertices,
+/// 1560 triangles, cylindrical texture coordinates): `TEAPOT_POSITIONS`, `TEAPOT_NORMALS`,
+/// `TEAPOT_UVS`, `TEAPOT_INDICES` (and `TEAPOT_TANGENTS`, which no scene links).
+#[allow(dead_code)]
+pub mod teapot {
+    include!("../../../assets/teapot/teapot_mesh.rs");
+}

@@ -304,5 +304,5 @@ macro_rules! report_modes {
         ok
     }};
 }
-pub mod shadow;
 pub mod noise;
+pub mod shadow;

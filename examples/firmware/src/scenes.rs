@@ -290,6 +290,38 @@ pub fn sphere<const R: usize, const V: usize, const B: usize>(
     )
 }
 
+/// Model matrix of the teapot scene, frame `i`: the teapot (y up, height centred) seen
+/// from slightly above, turning about y by `0.02 i` radians from -30 degrees.
+pub fn teapot_model(i: u32) -> Mat4 {
+    let turn = Angle::from_radians(Fx::from_bits(-34315 + (1311 * i as i32)));
+    Mat4::translation(Vec3::from_num(0, -0.2, -8))
+        * Mat4::rotation_x(Angle::from_radians(Fx::from_bits(22877)))
+        * Mat4::rotation_y(turn)
+}
+
+/// Scene `teapot`, frame `i`: the Utah teapot baked by `cargo xtask bake-obj` (`mesh`, 1560
+/// triangles with cylindrical texture coordinates) with `texture` `T(256, 128)`, lit,
+/// bilinear, perspective-correct, as the sphere.
+pub fn teapot<const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
+    texture: Texture<'_>,
+    mesh: &Mesh<'_>,
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    render::<LitSphere, R, V, B>(
+        buf,
+        texture,
+        mesh,
+        &teapot_model(i),
+        20,
+        true,
+        pause,
+        resume,
+    )
+}
+
 /// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`.
 pub fn floor<M, const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
