@@ -2,7 +2,8 @@
 //! patch data (`cargo xtask teapot`, then `cargo xtask bake-obj`): the same teapot and UV
 //! test grid under the planar, cylindrical and spherical generators of
 //! `fixel::scene::map_mesh`, and the cylindrical one without the per-triangle seam fix (the
-//! column of triangles across the seam shows the whole texture squeezed backwards).
+//! column of triangles across the seam shows the whole texture squeezed backwards), and
+//! triplanar mapping per pixel (`fixel::shading::triplanar`), which needs no coordinates.
 //!
 //! `cargo run --release --example mappings` (pictures in `target/pictures/`).
 
@@ -17,17 +18,20 @@ mod teapot {
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::{
     draw_mesh, map_mesh, map_mesh_capacity, Axis, Camera, DirectionalLight, Mesh, MeshStorage,
     UvMapping,
 };
+use fixel::shading::triplanar::{Triplanar, TriplanarMesh};
 use fixel::surface::Frame;
+use fixel::texture::Bilinear;
 use fixel::texture::{Filter, Texture, Wrap};
 use fixel::Error;
 
 const PANEL: u32 = 200;
-const H: u32 = 200;
+const H: u32 = 150;
 
 /// A UV test grid: 8 x 8 cells of hue by column and brightness by row, with dark lines,
 /// and a white dot in each cell's corner showing which way is up.
@@ -110,13 +114,13 @@ fn main() -> Result<(), Error> {
             },
         ),
     ];
-    let panels = mappings.len() as u32 + 1;
+    let panels = mappings.len() as u32 + 2;
     let w = PANEL * panels;
     let mut color = vec![Rgb565::new(26, 54, 28); (w * H) as usize];
     let mut depth = vec![0u16; (w * H) as usize];
     let mut frame = Frame::new(&mut color, w, H)?.with_depth(&mut depth)?;
     frame.clear(Rgb565::new(26, 54, 28));
-    let camera = Camera::perspective(Angle::from_degrees(fx(40)), fx(1), fx(0.5), fx(30))?;
+    let camera = Camera::perspective(Angle::from_degrees(fx(32)), fx(4) / 3, fx(0.5), fx(30))?;
     let light = DirectionalLight::default();
     let model = Mat4::translation(Vec3::from_num(-0.1, 0.1, -10.5))
         * Mat4::rotation_x(Angle::from_degrees(fx(20)))
@@ -163,6 +167,18 @@ fn main() -> Result<(), Error> {
     let vp = Viewport::new(3 * PANEL, 0, PANEL, H)?;
     let draw = Draw::dynamic(mode, Some(tex), vp)?;
     draw_mesh(&draw, &mesh, &back, &camera, Some(&light), &mut frame)?;
+    // Triplanar: no texture coordinates at all, three projections blended by the normal.
+    let mut tris = Vec::new();
+    TriplanarMesh {
+        positions: &teapot::TEAPOT_POSITIONS,
+        normals: &teapot::TEAPOT_NORMALS,
+        indices: &teapot::TEAPOT_INDICES,
+        texels_per_unit: fx(40),
+    }
+    .triangles(&model, &camera, Some(&light), |t| tris.push(*t));
+    let vp = Viewport::new(4 * PANEL, 0, PANEL, H)?;
+    ShadedDraw::<_, Exact, DepthLess>::new(Triplanar::new(tex, Bilinear), vp, Cull::Back)?
+        .clip_triangles(&tris, &mut frame)?;
     let path = common::out_dir().join("mappings.png");
     common::write_png(&path, w, H, &color);
     println!("wrote {}", path.display());

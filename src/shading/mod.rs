@@ -183,3 +183,4 @@ pub mod env;
 pub mod noise;
 pub mod pcf;
 pub mod shadow;
+pub mod triplanar;

@@ -248,4 +248,5 @@ fn shade_fragment(
 pub mod noise;
 pub mod quad;
 pub mod shadow;
+pub mod triplanar;
 pub mod uv_gen;
