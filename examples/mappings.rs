@@ -4,6 +4,9 @@
 //! `fixel::scene::map_mesh`, and the cylindrical one without the per-triangle seam fix (the
 //! column of triangles across the seam shows the whole texture squeezed backwards), and
 //! triplanar mapping per pixel (`fixel::shading::triplanar`), which needs no coordinates.
+//! Also `two_stage.png`: two-stage mapping (seed 000 §2.2), a row per intermediate surface
+//! (plane, cylinder, sphere, box) and a column per O-mapping rule (reflected ray, object
+//! normal, centroid, surface normal).
 //!
 //! `cargo run --release --example mappings` (pictures in `target/pictures/`).
 
@@ -21,8 +24,8 @@ use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::{
-    draw_mesh, map_mesh, map_mesh_capacity, Axis, Camera, DirectionalLight, Mesh, MeshStorage,
-    UvMapping,
+    draw_mesh, map_mesh, map_mesh_capacity, map_mesh_capacity_with, map_mesh_with, Axis, Camera,
+    DirectionalLight, Intermediate, Mesh, MeshStorage, OMapping, TwoStage, UvMapping,
 };
 use fixel::shading::triplanar::{Triplanar, TriplanarMesh};
 use fixel::surface::Frame;
@@ -181,6 +184,84 @@ fn main() -> Result<(), Error> {
         .clip_triangles(&tris, &mut frame)?;
     let path = common::out_dir().join("mappings.png");
     common::write_png(&path, w, H, &color);
+    println!("wrote {}", path.display());
+    two_stage(tex, &model, &camera, &light, mode)
+}
+
+/// The 4 x 4 gallery of two-stage mappings.
+fn two_stage(
+    tex: Texture<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: &DirectionalLight,
+    mode: DrawMode,
+) -> Result<(), Error> {
+    let (pw, ph) = (PANEL, H);
+    let (w, h) = (4 * pw, 4 * ph);
+    let mut color = vec![Rgb565::new(26, 54, 28); (w * h) as usize];
+    let mut depth = vec![0u16; (w * h) as usize];
+    let mut frame = Frame::new(&mut color, w, h)?.with_depth(&mut depth)?;
+    frame.clear(Rgb565::new(26, 54, 28));
+    let surfaces = [
+        Intermediate::Plane {
+            origin: Vec3::from_num(-3, 1.75, 4),
+            s: Vec3::from_num(1.0 / 6.0, 0, 0),
+            t: Vec3::from_num(0, -1.0 / 3.5, 0),
+        },
+        Intermediate::Cylinder {
+            center: Vec3::ZERO,
+            axis: Axis::Y,
+            radius: fx(4),
+            top: fx(2),
+            bottom: fx(-2),
+        },
+        Intermediate::Sphere {
+            center: Vec3::ZERO,
+            axis: Axis::Y,
+            radius: fx(4),
+        },
+        Intermediate::Box {
+            center: Vec3::ZERO,
+            half: Vec3::from_num(3.6, 2, 2.2),
+        },
+    ];
+    // The eye in model space (the camera sits at the origin of view space).
+    let eye = Vec3::from_num(0, 3, 10);
+    let rules = [
+        OMapping::ReflectedRay { eye },
+        OMapping::ObjectNormal,
+        OMapping::Centroid(Vec3::from_num(0.2, 0, 0)),
+        OMapping::SurfaceNormal,
+    ];
+    let (pos, nrm, ix) = (
+        &teapot::TEAPOT_POSITIONS,
+        &teapot::TEAPOT_NORMALS,
+        &teapot::TEAPOT_INDICES,
+    );
+    for (r, &surface) in surfaces.iter().enumerate() {
+        for (c, &rule) in rules.iter().enumerate() {
+            let two = TwoStage { surface, rule };
+            let need = map_mesh_capacity_with(&two, pos, Some(nrm), ix)?;
+            let mut s: Storage = (
+                vec![Vec3::ZERO; need],
+                vec![Vec3::ZERO; need],
+                vec![[Fx::ZERO; 2]; need],
+                vec![[0; 3]; ix.len()],
+            );
+            let out = MeshStorage {
+                positions: &mut s.0,
+                normals: Some(&mut s.1),
+                uvs: &mut s.2,
+                indices: &mut s.3,
+            };
+            let mesh = map_mesh_with(&two, pos, Some(nrm), ix, out)?;
+            let vp = Viewport::new(c as u32 * pw, r as u32 * ph, pw, ph)?;
+            let draw = Draw::dynamic(mode, Some(tex), vp)?;
+            draw_mesh(&draw, &mesh, model, camera, Some(light), &mut frame)?;
+        }
+    }
+    let path = common::out_dir().join("two_stage.png");
+    common::write_png(&path, w, h, &color);
     println!("wrote {}", path.display());
     Ok(())
 }

@@ -42,7 +42,12 @@ pub use mesh::{
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
 mod quad;
 mod shadow;
+mod two_stage;
 mod uv_gen;
 pub use quad::{draw_quad, quad_triangles};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
-pub use uv_gen::{map_mesh, map_mesh_capacity, Axis, MeshStorage, UvMapping};
+pub use two_stage::{Intermediate, OMapping, ReadyTwoStage, TwoStage};
+pub use uv_gen::{
+    map_mesh, map_mesh_capacity, map_mesh_capacity_with, map_mesh_with, Axis, MeshStorage,
+    ReadyMapping, UvAt, UvGenerator, UvMapping,
+};

@@ -131,15 +131,50 @@ fn longitude(right: i32, front: i32) -> i32 {
     ((turns + 32768) & 0xFFFF) as i32
 }
 
+/// A source of texture coordinates per vertex, for [`map_mesh_with`]: a [`UvMapping`], a
+/// [`TwoStage`](super::TwoStage) mapping, or your own.
+pub trait UvGenerator {
+    /// The checked generator with its per-call constants.
+    type Ready: UvAt;
+    /// Checks the generator (a degenerate one is an error) and prepares it.
+    fn ready(&self) -> Result<Self::Ready, Error>;
+}
+
+/// A prepared [`UvGenerator`].
+pub trait UvAt {
+    /// `(uv, on the axis)` of a vertex at model-space position `p` with unit normal `n`
+    /// (zero when the mesh has none): "on the axis" marks a pole (every `u` is the same
+    /// point), which takes its triangle's mean `u`.
+    fn at(&self, p: Vec3, n: Vec3) -> ([Fx; 2], bool);
+    /// Whether `u` wraps around (so seams and poles are fixed per triangle).
+    fn wraps(&self) -> bool;
+}
+
+impl UvGenerator for UvMapping {
+    type Ready = ReadyMapping;
+    fn ready(&self) -> Result<ReadyMapping, Error> {
+        ReadyMapping::new(self)
+    }
+}
+
+impl UvAt for ReadyMapping {
+    fn at(&self, p: Vec3, _: Vec3) -> ([Fx; 2], bool) {
+        ReadyMapping::at(self, p)
+    }
+    fn wraps(&self) -> bool {
+        ReadyMapping::wraps(self)
+    }
+}
+
 /// A mapping checked once, with its per-call constants.
 #[derive(Clone, Copy, Debug)]
-struct Prepared {
+pub struct ReadyMapping {
     mapping: UvMapping,
     /// Cylindrical: `1 / (top − bottom)` in Q32 (signed), as `i64`.
     inv_height: i64,
 }
 
-impl Prepared {
+impl ReadyMapping {
     fn new(mapping: &UvMapping) -> Result<Self, Error> {
         let inv_height = match *mapping {
             UvMapping::Cylindrical { top, bottom, .. } => {
@@ -154,7 +189,7 @@ impl Prepared {
             }
             _ => 0,
         };
-        Ok(Prepared {
+        Ok(ReadyMapping {
             mapping: *mapping,
             inv_height,
         })
@@ -215,7 +250,7 @@ impl UvMapping {
     /// The texture coordinates of one model-space position (no seam or pole handling: see
     /// [`map_mesh`]). Errors if the mapping is degenerate (a cylinder with `top == bottom`).
     pub fn uv(&self, p: Vec3) -> Result<[Fx; 2], Error> {
-        Ok(Prepared::new(self)?.at(p).0)
+        Ok(ReadyMapping::new(self)?.at(p).0)
     }
 
     /// Writes the texture coordinates of `positions` into `uvs` (same length), per vertex
@@ -228,7 +263,7 @@ impl UvMapping {
                 actual: uvs.len(),
             });
         }
-        let m = Prepared::new(self)?;
+        let m = ReadyMapping::new(self)?;
         for (uv, &p) in uvs.iter_mut().zip(positions) {
             *uv = m.at(p).0;
         }
@@ -289,14 +324,26 @@ pub fn map_mesh_capacity(
     positions: &[Vec3],
     indices: &[[u16; 3]],
 ) -> Result<usize, Error> {
-    let m = Prepared::new(mapping)?;
+    map_mesh_capacity_with(mapping, positions, None, indices)
+}
+
+/// [`map_mesh_capacity`] for any [`UvGenerator`] (`normals` as for [`map_mesh_with`]).
+pub fn map_mesh_capacity_with<G: UvGenerator>(
+    generator: &G,
+    positions: &[Vec3],
+    normals: Option<&[Vec3]>,
+    indices: &[[u16; 3]],
+) -> Result<usize, Error> {
+    let m = generator.ready()?;
     let mut extra = 0usize;
     if m.wraps() {
         for tri in indices {
             let c = tri.map(|i| {
-                positions
-                    .get(usize::from(i))
-                    .map_or(([Fx::ZERO; 2], false), |&p| m.at(p))
+                let i = usize::from(i);
+                match positions.get(i) {
+                    Some(&p) => m.at(p, normal_at(normals, i)),
+                    None => ([Fx::ZERO; 2], false),
+                }
             });
             let fixed = fix_triangle(c);
             extra += (0..3).filter(|&k| fixed[k] != c[k].0).count();
@@ -305,15 +352,34 @@ pub fn map_mesh_capacity(
     Ok(positions.len() + extra)
 }
 
-/// Generates texture coordinates for a mesh with `mapping`, handling the seam and the
-/// poles per triangle (see the module docs), into `out`; returns the mesh over `out`.
+fn normal_at(normals: Option<&[Vec3]>, i: usize) -> Vec3 {
+    normals
+        .and_then(|n| n.get(i))
+        .copied()
+        .unwrap_or(Vec3::ZERO)
+}
+
+/// [`map_mesh_with`] for a [`UvMapping`].
+pub fn map_mesh<'a>(
+    mapping: &UvMapping,
+    positions: &[Vec3],
+    normals: Option<&[Vec3]>,
+    indices: &[[u16; 3]],
+    out: MeshStorage<'a>,
+) -> Result<Mesh<'a>, Error> {
+    map_mesh_with(mapping, positions, normals, indices, out)
+}
+
+/// Generates texture coordinates for a mesh with `generator`, handling the seam and the
+/// poles per triangle (see the module docs), into `out`; returns the mesh over `out`. The
+/// generator sees each vertex's normal (zero when `normals` is `None`).
 ///
 /// Errors: the source is invalid (as [`Mesh::new`]), the mapping is degenerate, or `out`
 /// is too small ([`Error::CapacityExceeded`] with the size it needs; see
 /// [`map_mesh_capacity`]), or the copies push the vertex count past what a `u16` index
 /// reaches ([`Error::MeshTooLarge`]).
-pub fn map_mesh<'a>(
-    mapping: &UvMapping,
+pub fn map_mesh_with<'a, G: UvGenerator>(
+    generator: &G,
     positions: &[Vec3],
     normals: Option<&[Vec3]>,
     indices: &[[u16; 3]],
@@ -339,7 +405,8 @@ pub fn map_mesh<'a>(
             }
         }
     }
-    let m = Prepared::new(mapping)?;
+    let m = generator.ready()?;
+    let capacity = || map_mesh_capacity_with(generator, positions, normals, indices);
     let MeshStorage {
         positions: out_p,
         normals: out_n,
@@ -353,13 +420,13 @@ pub fn map_mesh<'a>(
     });
     if cap < n || out_i.len() < indices.len() {
         return Err(Error::CapacityExceeded {
-            capacity: map_mesh_capacity(mapping, positions, indices)?,
+            capacity: capacity()?,
         });
     }
     let mut out_n = out_n;
     for i in 0..n {
         out_p[i] = positions[i];
-        out_uv[i] = m.at(positions[i]).0;
+        out_uv[i] = m.at(positions[i], normal_at(normals, i)).0;
         if let (Some(o), Some(src)) = (out_n.as_deref_mut(), normals) {
             o[i] = src[i];
         }
@@ -368,7 +435,10 @@ pub fn map_mesh<'a>(
     for (t, tri) in indices.iter().enumerate() {
         let mut new_tri = *tri;
         if m.wraps() {
-            let c = tri.map(|i| m.at(positions[usize::from(i)]));
+            let c = tri.map(|i| {
+                let i = usize::from(i);
+                m.at(positions[i], normal_at(normals, i))
+            });
             let fixed = fix_triangle(c);
             for k in 0..3 {
                 if fixed[k] == c[k].0 {
@@ -390,13 +460,13 @@ pub fn map_mesh<'a>(
                     None => {
                         if count >= cap {
                             return Err(Error::CapacityExceeded {
-                                capacity: map_mesh_capacity(mapping, positions, indices)?,
+                                capacity: capacity()?,
                             });
                         }
                         if count >= 1 << 16 {
                             return Err(Error::MeshTooLarge {
                                 what: "vertices (with seam and pole copies)",
-                                count: map_mesh_capacity(mapping, positions, indices)?,
+                                count: capacity()?,
                                 limit: 1 << 16,
                             });
                         }

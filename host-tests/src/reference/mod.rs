@@ -249,4 +249,5 @@ pub mod noise;
 pub mod quad;
 pub mod shadow;
 pub mod triplanar;
+pub mod two_stage;
 pub mod uv_gen;
