@@ -898,6 +898,12 @@ fn report(flags: &[String]) -> ExitCode {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }
+    // Texture-coordinate generation rows: same flags, written to mapping.md.
+    args[6] = "mapping_report";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
     if docs {
         let dst = root().join("docs").join("report");
         let copied = std::fs::create_dir_all(&dst).and_then(|()| {

@@ -1047,13 +1047,14 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 6] = [
+const REPORT_BINS: [&str; 7] = [
     "report_cube",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
     "report_noise",
     "report_env",
+    "report_mapping",
 ];
 
 /// One mode of one report firmware on one MCU.

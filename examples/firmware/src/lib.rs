@@ -8,6 +8,7 @@
 
 pub mod data;
 pub mod env;
+pub mod mapping;
 pub mod modes;
 pub mod scenes;
 pub mod size;

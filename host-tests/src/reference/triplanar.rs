@@ -26,7 +26,7 @@ pub fn weights(n: [f64; 3], k: f64) -> [f64; 3] {
 }
 
 /// Renders triplanar-mapped triangles (fixel's [`Vertex<7>`] layout: point in I16F16
-/// texels, normal, Q8.16 intensity), back faces culled, no depth test (one convex object).
+/// texels, normal, Q8.16 intensity), back faces culled, with GL_LESS on the window depth.
 pub fn render(
     tris: &[[Vertex<7>; 3]],
     tex: &RefTexture,
@@ -36,6 +36,7 @@ pub fn render(
     height: u32,
 ) -> RefImage {
     let mut img = RefImage::new(width, height);
+    let mut zbuf = vec![f64::INFINITY; (width * height) as usize];
     for tri in tris {
         let w = |v: &Vertex<7>| {
             to_window(
@@ -58,6 +59,12 @@ pub fn render(
         let attr = tri.map(|v| v.varyings.map(f64::from));
         rasterize(&win, width, height, |x, y, _| {
             let l = barycentrics(&win, f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let z: f64 = (0..3).map(|i| l[i] * win[i].z).sum();
+            let idx = (y * width + x) as usize;
+            if z >= zbuf[idx] {
+                return;
+            }
+            zbuf[idx] = z;
             let q = [0, 1, 2].map(|i| l[i] * win[i].inv_w);
             let qs: f64 = q.iter().sum();
             let at = |j: usize| (0..3).map(|i| q[i] * attr[i][j]).sum::<f64>() / qs;
@@ -78,7 +85,6 @@ pub fn render(
                     }
                 }
             }
-            let idx = (y * width + x) as usize;
             img.rgb[idx] = col.map(|c| c * intensity);
             img.covered[idx] = true;
         });
