@@ -110,7 +110,7 @@ pub fn div_round_i64(n: i64, d: i64) -> i64 {
 
 /// `floor(n / d)` for signed `n` and positive `d` (`i64::div_euclid` for `d > 0`); `d <= 0`
 /// gives 0.
-#[inline]
+#[inline(never)]
 pub fn div_floor_i64(n: i64, d: i64) -> i64 {
     if d <= 0 {
         return 0;
