@@ -1,0 +1,222 @@
+//! Anti-aliasing (`fixel::surface::{resolve_box, Accumulator}`, `fixel::scene::{jittered,
+//! SamplePattern}`) against an 8 x 8 supersampled f64 reference of the benchmark cube:
+//! regular-grid supersampling through a `k`-times frame and a box resolve, and accumulation
+//! of jittered frames (rotated grid, stratified jitter). Errors on edge pixels (those the
+//! reference covers partly) and on the whole frame.
+
+use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
+use fixel::demo;
+use fixel::geometry::{Cull, Viewport};
+use fixel::math::Fx;
+use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection};
+use fixel::scene::{draw_mesh, jittered, Camera, DirectionalLight, SamplePattern};
+use fixel::surface::{resolve_box, Accumulator, Frame};
+use fixel::texture::{Filter, Texture};
+use fixel::Rgb565;
+use host_tests::reference;
+use host_tests::scenes;
+
+const W: u32 = 320;
+const H: u32 = 240;
+const FRAME: u32 = 20;
+
+fn tex() -> Vec<Rgb565> {
+    let mut t = vec![Rgb565::new(0, 0, 0); 128 * 128];
+    demo::checker_texture(128, 128, &mut t).unwrap();
+    t
+}
+
+fn mode() -> DrawMode {
+    DrawMode {
+        projection: Projection::Exact,
+        filter: Filter::Bilinear,
+        depth: DepthTest::Less,
+        cull: Cull::Back,
+        ..DrawMode::default()
+    }
+}
+
+/// The cube drawn by fixel into a `w x h` frame with `camera`.
+fn fixel_cube(w: u32, h: u32, camera: &Camera, texels: &[Rgb565]) -> Vec<Rgb565> {
+    let t = Texture::new(texels, 128, 128).unwrap();
+    let draw = Draw::dynamic(mode(), Some(t), Viewport::new(0, 0, w, h).unwrap()).unwrap();
+    let (mut c, mut d) = (
+        vec![Rgb565::new(0, 0, 0); (w * h) as usize],
+        vec![0u16; (w * h) as usize],
+    );
+    let mut frame = Frame::new(&mut c, w, h)
+        .unwrap()
+        .with_depth(&mut d)
+        .unwrap();
+    frame.clear(Rgb565::new(0, 0, 0));
+    let cube = demo::cube();
+    draw_mesh(
+        &draw,
+        &cube.mesh().unwrap(),
+        &demo::cube_model(FRAME),
+        camera,
+        Some(&DirectionalLight::default()),
+        &mut frame,
+    )
+    .unwrap();
+    c
+}
+
+/// The reference at `s x s` samples per pixel, box-averaged: colour per pixel (0..1, black
+/// background) and the covered share.
+fn reference_cube(s: u32) -> (Vec<[f64; 3]>, Vec<f64>) {
+    let scene = scenes::cube(FRAME);
+    let tris = scenes::to_ref_triangles(&scene);
+    let img = reference::render(&tris, Some(&scene.texture), &scene.mode, W * s, H * s);
+    let mut rgb = vec![[0.0; 3]; (W * H) as usize];
+    let mut cov = vec![0.0; (W * H) as usize];
+    for y in 0..H * s {
+        for x in 0..W * s {
+            let i = (y * W * s + x) as usize;
+            let o = ((y / s) * W + x / s) as usize;
+            for c in 0..3 {
+                rgb[o][c] += img.rgb[i][c];
+            }
+            if img.covered[i] {
+                cov[o] += 1.0;
+            }
+        }
+    }
+    let n = f64::from(s * s);
+    (
+        rgb.into_iter().map(|c| c.map(|v| v / n)).collect(),
+        cov.into_iter().map(|c| c / n).collect(),
+    )
+}
+
+/// Mean and max error in RGB565 LSB (largest channel) over the edge pixels and the frame.
+fn errors(px: &[Rgb565], refr: &[[f64; 3]], cov: &[f64]) -> (f64, f64, f64) {
+    let (mut edge_sum, mut edge_n, mut all_sum) = (0.0, 0usize, 0.0);
+    let mut edge_max: f64 = 0.0;
+    for ((p, r), c) in px.iter().zip(refr).zip(cov) {
+        let v = RawU16::from(*p).into_inner();
+        let ch = [
+            f64::from(v >> 11),
+            f64::from((v >> 5) & 63),
+            f64::from(v & 31),
+        ];
+        let e = (0..3)
+            .map(|k| (ch[k] - r[k] * [31.0, 63.0, 31.0][k]).abs())
+            .fold(0.0, f64::max);
+        all_sum += e;
+        if *c > 0.0 && *c < 1.0 {
+            edge_sum += e;
+            edge_n += 1;
+            edge_max = edge_max.max(e);
+        }
+    }
+    (
+        edge_sum / edge_n.max(1) as f64,
+        edge_max,
+        all_sum / px.len() as f64,
+    )
+}
+
+fn supersampled(k: u32, texels: &[Rgb565]) -> Vec<Rgb565> {
+    let mut hi = fixel_cube(W * k, H * k, &demo::camera(20), texels);
+    let band = Frame::new(&mut hi, W * k, H * k).unwrap();
+    let mut lo = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+    resolve_box(&band, k, &mut lo).unwrap();
+    lo
+}
+
+fn accumulated(p: SamplePattern, texels: &[Rgb565]) -> Vec<Rgb565> {
+    let mut at = [[Fx::ZERO; 2]; 64];
+    let n = p.offsets(&mut at).unwrap();
+    let cam = demo::camera(20);
+    let vp = Viewport::new(0, 0, W, H).unwrap();
+    let mut sums = vec![[0u16; 3]; (W * H) as usize];
+    let mut acc = Accumulator::new(&mut sums).unwrap();
+    for o in &at[..n] {
+        let c = Camera {
+            view: cam.view,
+            projection: jittered(&cam.projection, *o, &vp),
+        };
+        acc.add(&fixel_cube(W, H, &c, texels)).unwrap();
+    }
+    let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+    acc.resolve(&mut out).unwrap();
+    out
+}
+
+#[test]
+fn supersampling_and_accumulation_approach_the_reference() {
+    let texels = tex();
+    let (refr, cov) = reference_cube(8);
+    let edges = cov.iter().filter(|&&c| c > 0.0 && c < 1.0).count();
+    assert!(edges > 500, "{edges} edge pixels");
+    let mut results = Vec::new();
+    for (name, img) in [
+        ("1x", fixel_cube(W, H, &demo::camera(20), &texels)),
+        ("2x2 grid", supersampled(2, &texels)),
+        ("4x4 grid", supersampled(4, &texels)),
+        (
+            "rotated grid 4",
+            accumulated(SamplePattern::RotatedGrid4, &texels),
+        ),
+        (
+            "jittered 16",
+            accumulated(SamplePattern::Jittered { n: 16, seed: 1 }, &texels),
+        ),
+    ] {
+        let e = errors(&img, &refr, &cov);
+        println!(
+            "{name}: edges mean {:.2} max {:.1} LSB; frame mean {:.3} LSB ({edges} edge pixels)",
+            e.0, e.1, e.2
+        );
+        results.push((name, e));
+    }
+    let edge = |k: usize| results[k].1 .0;
+    // Every method more than halves the edge error of 1x; 4x4 beats 2x2.
+    for k in 1..results.len() {
+        assert!(
+            edge(k) * 2.0 < edge(0),
+            "{}: {:?} vs 1x {:?}",
+            results[k].0,
+            results[k].1,
+            results[0].1
+        );
+    }
+    assert!(
+        edge(2) < edge(1),
+        "4x4 {:?} vs 2x2 {:?}",
+        results[2].1,
+        results[1].1
+    );
+}
+
+/// A one-pixel jitter moves the image by one pixel.
+#[test]
+fn jitter_moves_the_image_by_its_offset() {
+    let texels = tex();
+    let cam = demo::camera(20);
+    let vp = Viewport::new(0, 0, W, H).unwrap();
+    let c = Camera {
+        view: cam.view,
+        projection: jittered(&cam.projection, [Fx::ONE, Fx::ZERO], &vp),
+    };
+    let (a, b) = (
+        fixel_cube(W, H, &cam, &texels),
+        fixel_cube(W, H, &c, &texels),
+    );
+    let black = Rgb565::new(0, 0, 0);
+    let (mut same, mut total) = (0, 0);
+    for y in 0..H {
+        for x in 0..W - 1 {
+            let (p, q) = (a[(y * W + x) as usize], b[(y * W + x + 1) as usize]);
+            if p != black || q != black {
+                total += 1;
+                same += usize::from((p == black) == (q == black));
+            }
+        }
+    }
+    assert!(
+        same * 1000 >= total * 998,
+        "{same} of {total} coverage agree"
+    );
+}
