@@ -904,6 +904,12 @@ fn report(flags: &[String]) -> ExitCode {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }
+    // Anti-aliasing rows: same flags, written to aa.md.
+    args[6] = "aa_report";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
     if docs {
         let dst = root().join("docs").join("report");
         let copied = std::fs::create_dir_all(&dst).and_then(|()| {

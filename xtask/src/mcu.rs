@@ -1047,7 +1047,7 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 7] = [
+const REPORT_BINS: [&str; 8] = [
     "report_cube",
     "report_sphere",
     "report_floor",
@@ -1055,6 +1055,7 @@ const REPORT_BINS: [&str; 7] = [
     "report_noise",
     "report_env",
     "report_mapping",
+    "report_aa",
 ];
 
 /// One mode of one report firmware on one MCU.

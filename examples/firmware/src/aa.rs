@@ -1,0 +1,112 @@
+//! Regular-grid supersampling in bands (`report_aa`, shared with the host report): the
+//! benchmark cube rendered at `k` times the resolution in bands of `8 k` rows, each band
+//! resolved by `fixel::surface::resolve_box` into an 8-row band of the 320 x 240 frame
+//! before it is hashed (flushed). RAM: `k²` times one band.
+
+use crate::scenes::{Fnv1a, FrameResult, Lit, H, ROWS, W};
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::geometry::{Cull, Viewport};
+use fixel::pipeline::Draw;
+use fixel::scene::{mesh_triangles, DirectionalLight};
+use fixel::surface::{resolve_box, BandError, BandRenderer, Binned};
+use fixel::texture::Texture;
+use fixel::Error;
+
+/// Largest supersampling factor the buffers hold.
+pub const K_MAX: u32 = 4;
+const HI: usize = (W * ROWS * K_MAX * K_MAX) as usize;
+
+/// Band buffers for up to `K_MAX x K_MAX` supersampling: a `k`-times colour and depth band
+/// and one display band (the cube's 16 bins live on the stack).
+pub struct AaBuffers {
+    color: [Rgb565; HI],
+    depth: [u16; HI],
+    lo: [Rgb565; (W * ROWS) as usize],
+}
+
+impl AaBuffers {
+    /// Zeroed.
+    pub const fn new() -> Self {
+        AaBuffers {
+            color: [Rgb565::new(0, 0, 0); HI],
+            depth: [0; HI],
+            lo: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+        }
+    }
+}
+
+impl Default for AaBuffers {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Bytes of band RAM the cube needs at factor `k`: the `k`-times colour and depth bands
+/// and the display band.
+pub fn band_ram(k: u32) -> u32 {
+    W * ROWS * k * k * 4 + W * ROWS * 2
+}
+
+/// The cube, frame `i`, supersampled `k x k` (`1..=K_MAX`; 1 is the plain band render
+/// through the same path), lit bilinear (the `cube` firmware's draw); checksum of the
+/// resolved 320 x 240 frame, whose bands are also copied into `frame` when given (the
+/// host report).
+#[allow(clippy::too_many_arguments)]
+pub fn cube(
+    k: u32,
+    texture: Texture<'_>,
+    i: u32,
+    buf: &mut AaBuffers,
+    mut frame: Option<&mut [Rgb565]>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    if k == 0 || k > K_MAX {
+        return Err(Error::BadSize(k));
+    }
+    let (w, h, rows) = (W * k, H * k, ROWS * k);
+    let n = (w * rows) as usize;
+    let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, w, h)?, Cull::Back)?;
+    let mut bands =
+        BandRenderer::new(&mut buf.color[..n], w, rows, h)?.with_depth(&mut buf.depth[..n])?;
+    let camera = demo::camera(20);
+    let light = DirectionalLight::default();
+    let m = demo::cube();
+    let mesh = m.mesh()?;
+    let model = demo::cube_model(i);
+    let lo = &mut buf.lo;
+    let mut sum = Fnv1a::default();
+    let mut bins = [Binned::default(); 16];
+    let stats = bands
+        .render(
+            &[&draw],
+            &mut bins,
+            Rgb565::new(0, 0, 0),
+            |sink| {
+                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
+                    draw.project(t, &mut |s| sink.push(0, s));
+                })
+            },
+            |band| {
+                resolve_box(band, k, lo)?;
+                pause();
+                sum.pixels(&lo[..]);
+                if let Some(f) = frame.as_deref_mut() {
+                    let at = (band.first_row() as u32 / k * W) as usize;
+                    if let Some(dst) = f.get_mut(at..at + lo.len()) {
+                        dst.copy_from_slice(&lo[..]);
+                    }
+                }
+                resume();
+                Ok::<(), Error>(())
+            },
+        )
+        .map_err(|e| match e {
+            BandError::Input(e) | BandError::Flush(e) => e,
+        })?;
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats,
+    })
+}

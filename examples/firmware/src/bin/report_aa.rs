@@ -1,0 +1,61 @@
+//! `cargo xtask report`: regular-grid supersampling of the benchmark cube in bands
+//! (`aa::cube`): 1x, 2 x 2 and 4 x 4 (report memory layout only: the 4 x 4 band takes
+//! 160 KB; in the default layout this binary only has to link).
+#![no_std]
+#![no_main]
+
+#[cfg(fixel_fw_report)]
+use fixel_firmware::aa;
+use fixel_firmware::report_begin;
+#[cfg(fixel_fw_report)]
+use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln};
+
+#[cfg(fixel_fw_report)]
+static mut BUF: aa::AaBuffers = aa::AaBuffers::new();
+
+fn run() -> bool {
+    report_begin();
+    #[cfg(fixel_fw_report)]
+    {
+        // SAFETY: the only reference to BUF, taken once in this single-threaded firmware.
+        let buf = unsafe { &mut *core::ptr::addr_of_mut!(BUF) };
+        let mut ok = true;
+        for k in 1..=aa::K_MAX {
+            if k == 3 {
+                continue;
+            }
+            bench_start();
+            let r = aa::cube(
+                core::hint::black_box(k),
+                data::T128,
+                0,
+                buf,
+                None,
+                &mut || bench_end(),
+                &mut || bench_start(),
+            );
+            bench_end();
+            bench_mark();
+            match r {
+                Ok(r) => outln!(
+                    "mode scene=aa mode=cube-{}x{} checksum=0x{:08x} pixels={} rewalked={}",
+                    k,
+                    k,
+                    r.checksum,
+                    // Display pixels: the k-times frame wrote k² per pixel.
+                    r.stats.pixels / (k * k),
+                    r.stats.rewalked
+                ),
+                Err(e) => {
+                    outln!("mode scene=aa mode=cube-{}x{} error={:?}", k, k, e);
+                    ok = false;
+                }
+            }
+        }
+        ok
+    }
+    #[cfg(not(fixel_fw_report))]
+    true
+}
+
+fixel_firmware::entry!(run);
