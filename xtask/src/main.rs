@@ -30,8 +30,16 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 8] = [
-    "showcase", "scenes", "preview", "shadow", "noise", "envmap", "mappings", "quads",
+const RENDER_EXAMPLES: [&str; 9] = [
+    "showcase",
+    "scenes",
+    "preview",
+    "shadow",
+    "noise",
+    "envmap",
+    "mappings",
+    "quads",
+    "antialias",
 ];
 
 const HELP: &str = "\
