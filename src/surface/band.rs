@@ -144,7 +144,34 @@ enum SinkMode<'s, 'f, 'a, C: TargetColor> {
     },
 }
 
-impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
+impl<'s, C: TargetColor> TriangleSink<'s, '_, '_, C> {
+    /// A sink that bins into `bins` (for draws `0..draws`).
+    pub(super) fn binning(bins: &'s mut [Binned], draws: usize) -> Self {
+        TriangleSink {
+            mode: SinkMode::Bin {
+                bins,
+                len: 0,
+                overflow: false,
+                draws,
+                bad_draw: None,
+            },
+        }
+    }
+
+    /// The bins after a binning pass: `(bins, len, overflow, first bad draw index)`.
+    pub(super) fn into_bins(self) -> (&'s mut [Binned], usize, bool, Option<u8>) {
+        match self.mode {
+            SinkMode::Bin {
+                bins,
+                len,
+                overflow,
+                bad_draw,
+                ..
+            } => (bins, len, overflow, bad_draw),
+            SinkMode::Immediate { .. } => (&mut [], 0, true, None),
+        }
+    }
+
     /// Hands over one screen triangle of draw number `draw` (an index into the draws given
     /// to [`BandRenderer::render`]; an index past them makes `render` return
     /// [`Error::BadDrawIndex`] before drawing).
@@ -181,9 +208,9 @@ impl<C: TargetColor> TriangleSink<'_, '_, '_, C> {
 /// Draws frames band by band through a small buffer.
 #[derive(Debug)]
 pub struct BandRenderer<'b, C> {
-    color: &'b mut [C],
-    depth: Option<&'b mut [u16]>,
-    width: u32,
+    pub(super) color: &'b mut [C],
+    pub(super) depth: Option<&'b mut [u16]>,
+    pub(super) width: u32,
     pub(super) rows: u32,
     pub(super) height: u32,
 }

@@ -114,6 +114,11 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         self.color
     }
 
+    /// The colour pixels, row-major, to write (a band's resolve before its flush, say).
+    pub fn pixels_mut(&mut self) -> &mut [C] {
+        self.color
+    }
+
     /// The depth values, row-major, if there is a depth buffer.
     pub fn depth(&self) -> Option<&[u16]> {
         self.depth.as_deref()

@@ -11,6 +11,7 @@
 //!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
 //! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 
+pub(crate) mod accum_bands;
 pub(crate) mod band;
 pub(crate) mod depth_map;
 pub(crate) mod frame;

@@ -110,3 +110,88 @@ pub fn cube(
         stats,
     })
 }
+
+/// Band sums for [`cube_accumulated`]: 6 bytes per band pixel.
+pub struct AccumBuffers {
+    color: [Rgb565; (W * ROWS) as usize],
+    depth: [u16; (W * ROWS) as usize],
+    sums: [[u16; 3]; (W * ROWS) as usize],
+}
+
+impl AccumBuffers {
+    /// Zeroed.
+    pub const fn new() -> Self {
+        AccumBuffers {
+            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            depth: [0; (W * ROWS) as usize],
+            sums: [[0; 3]; (W * ROWS) as usize],
+        }
+    }
+}
+
+impl Default for AccumBuffers {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Band RAM of [`cube_accumulated`]: colour, depth and sums of one 8-row band.
+pub const ACCUM_RAM: u32 = W * ROWS * 10;
+
+/// The cube, frame `i`, with the samples of `pattern` accumulated through 8-row bands
+/// (`BandRenderer::render_accumulated`: geometry binned once, each band drawn once per
+/// sample); checksum of the averaged frame, copied into `frame` when given.
+#[allow(clippy::too_many_arguments)]
+pub fn cube_accumulated(
+    pattern: fixel::scene::SamplePattern,
+    texture: Texture<'_>,
+    i: u32,
+    buf: &mut AccumBuffers,
+    mut frame: Option<&mut [Rgb565]>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let mut offsets = [[fixel::math::Fx::ZERO; 2]; 16];
+    let n = pattern.offsets(&mut offsets)?;
+    let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let camera = demo::camera(20);
+    let light = DirectionalLight::default();
+    let m = demo::cube();
+    let mesh = m.mesh()?;
+    let model = demo::cube_model(i);
+    let mut sum = Fnv1a::default();
+    let mut bins = [Binned::default(); 16];
+    let stats = bands
+        .render_accumulated(
+            &[&draw],
+            &mut bins,
+            Rgb565::new(0, 0, 0),
+            &offsets[..n],
+            &mut buf.sums,
+            |sink| {
+                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
+                    draw.project(t, &mut |s| sink.push(0, s));
+                })
+            },
+            |band| {
+                pause();
+                sum.pixels(band.pixels());
+                if let Some(f) = frame.as_deref_mut() {
+                    let at = (band.first_row() as u32 * W) as usize;
+                    if let Some(dst) = f.get_mut(at..at + band.pixels().len()) {
+                        dst.copy_from_slice(band.pixels());
+                    }
+                }
+                resume();
+                Ok::<(), Error>(())
+            },
+        )
+        .map_err(|e| match e {
+            BandError::Input(e) | BandError::Flush(e) => e,
+        })?;
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats,
+    })
+}

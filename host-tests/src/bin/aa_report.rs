@@ -1,7 +1,7 @@
 //! `cargo xtask report`, anti-aliasing (issue 16): the benchmark cube (frame 0) at 1x,
-//! regular-grid 2 x 2 and 4 x 4 supersampling in bands (`examples/firmware/src/aa.rs`, the
-//! firmware's code), and accumulation of jittered frames (rotated grid of 4, stratified
-//! jitter of 16) on the host.
+//! regular-grid 2 x 2 and 4 x 4 supersampling in bands, and the rotated grid of 4 and 16
+//! stratified jittered samples accumulated through bands (`examples/firmware/src/aa.rs`, the
+//! firmware's code).
 //!
 //! ```text
 //! aa_report --out DIR [--runs N] [--mcu mcu.tsv]
@@ -26,11 +26,7 @@ use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use fixel::demo;
-use fixel::geometry::Viewport;
-use fixel::math::Fx;
-use fixel::pipeline::Draw;
-use fixel::scene::{draw_mesh, jittered, Camera, DirectionalLight, SamplePattern};
-use fixel::surface::{Accumulator, Frame};
+use fixel::scene::SamplePattern;
 use fixel::texture::Texture;
 use fixel::Rgb565;
 use host_tests::reference::{self, RefTriangle};
@@ -152,45 +148,6 @@ fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
         .collect()
 }
 
-fn accumulate(p: SamplePattern, tex: Texture<'_>) -> Vec<Rgb565> {
-    let mut at = [[Fx::ZERO; 2]; 64];
-    let n = p.offsets(&mut at).unwrap();
-    let cam = demo::camera(20);
-    let vp = Viewport::new(0, 0, W, H).unwrap();
-    let mut sums = vec![[0u16; 3]; (W * H) as usize];
-    let mut acc = Accumulator::new(&mut sums).unwrap();
-    let draw = Draw::new::<scenes::Lit>(Some(tex), vp, fixel::geometry::Cull::Back).unwrap();
-    let cube = demo::cube();
-    let (mut c, mut d) = (
-        vec![Rgb565::new(0, 0, 0); (W * H) as usize],
-        vec![0u16; (W * H) as usize],
-    );
-    for o in &at[..n] {
-        let camera = Camera {
-            view: cam.view,
-            projection: jittered(&cam.projection, *o, &vp),
-        };
-        let mut frame = Frame::new(&mut c, W, H)
-            .unwrap()
-            .with_depth(&mut d)
-            .unwrap();
-        frame.clear(Rgb565::new(0, 0, 0));
-        draw_mesh(
-            &draw,
-            &cube.mesh().unwrap(),
-            &demo::cube_model(0),
-            &camera,
-            Some(&DirectionalLight::default()),
-            &mut frame,
-        )
-        .unwrap();
-        acc.add(&c).unwrap();
-    }
-    let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
-    acc.resolve(&mut out).unwrap();
-    out
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 3u32, None);
@@ -258,22 +215,54 @@ fn main() {
             psnr: e.3,
         });
     }
-    for (name, p) in [
-        ("rotated grid 4, accumulated", SamplePattern::RotatedGrid4),
+    let mut acc_buf = Box::new(aa::AccumBuffers::new());
+    for (name, mode, p) in [
         (
-            "jittered 16, accumulated",
+            "rotated grid 4, accumulated in bands",
+            "cube-rgss4-bands",
+            SamplePattern::RotatedGrid4,
+        ),
+        (
+            "jittered 16, accumulated in bands",
+            "cube-jitter16-bands",
             SamplePattern::Jittered { n: 16, seed: 1 },
         ),
     ] {
-        let t0 = Instant::now();
-        let img = accumulate(p, tex);
-        let ns = t0.elapsed().as_secs_f64() * 1e9;
+        let mut img = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut times = Vec::new();
+        let mut checksum = 0;
+        for _ in 0..runs.max(1) {
+            let t0 = Instant::now();
+            let r = aa::cube_accumulated(
+                p,
+                tex,
+                0,
+                &mut acc_buf,
+                Some(&mut img),
+                &mut || {},
+                &mut || {},
+            )
+            .unwrap();
+            times.push(t0.elapsed().as_secs_f64());
+            checksum = r.checksum;
+        }
+        let get = |tg: &str| {
+            mcu.iter().find(|r| r.0 == mode && r.1 == tg).map(|r| {
+                assert_eq!(
+                    r.3,
+                    format!("0x{checksum:08x}"),
+                    "{mode} on {tg}: checksum differs from the host's"
+                );
+                r.2
+            })
+        };
         let e = errors(&img, &refr, &cov);
+        times.sort_by(f64::total_cmp);
         rows.push(Row {
             name: name.into(),
-            ns: ns / display_px(&img),
-            mcu: None,
-            ram: format!("{:.0} KB (whole-frame sums)", f64::from(W * H * 6) / 1024.0),
+            ns: times[times.len() / 2] * 1e9 / display_px(&img),
+            mcu: get("Cortex-M0+").zip(get("Cortex-M4F")),
+            ram: format!("{:.1} KB", f64::from(aa::ACCUM_RAM) / 1024.0),
             edge_mean: e.0,
             edge_max: e.1,
             frame_mean: e.2,

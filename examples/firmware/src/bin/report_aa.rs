@@ -1,9 +1,12 @@
 //! `cargo xtask report`: regular-grid supersampling of the benchmark cube in bands
-//! (`aa::cube`): 1x, 2 x 2 and 4 x 4 (report memory layout only: the 4 x 4 band takes
+//! (`aa::cube`): 1x, 2 x 2 and 4 x 4, then the rotated grid of 4 and 16 jittered samples
+//! accumulated through 8-row bands (`aa::cube_accumulated`) (report memory layout only: the 4 x 4 band takes
 //! 160 KB; in the default layout this binary only has to link).
 #![no_std]
 #![no_main]
 
+#[cfg(fixel_fw_report)]
+use fixel::scene::SamplePattern;
 #[cfg(fixel_fw_report)]
 use fixel_firmware::aa;
 use fixel_firmware::report_begin;
@@ -12,6 +15,8 @@ use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln};
 
 #[cfg(fixel_fw_report)]
 static mut BUF: aa::AaBuffers = aa::AaBuffers::new();
+#[cfg(fixel_fw_report)]
+static mut ACC: aa::AccumBuffers = aa::AccumBuffers::new();
 
 fn run() -> bool {
     report_begin();
@@ -48,6 +53,40 @@ fn run() -> bool {
                 ),
                 Err(e) => {
                     outln!("mode scene=aa mode=cube-{}x{} error={:?}", k, k, e);
+                    ok = false;
+                }
+            }
+        }
+        // SAFETY: the only reference to ACC, taken once in this single-threaded firmware.
+        let acc = unsafe { &mut *core::ptr::addr_of_mut!(ACC) };
+        for (name, p) in [
+            ("cube-rgss4-bands", SamplePattern::RotatedGrid4),
+            (
+                "cube-jitter16-bands",
+                SamplePattern::Jittered { n: 16, seed: 1 },
+            ),
+        ] {
+            bench_start();
+            let r = aa::cube_accumulated(
+                core::hint::black_box(p),
+                data::T128,
+                0,
+                acc,
+                None,
+                &mut || bench_end(),
+                &mut || bench_start(),
+            );
+            bench_end();
+            bench_mark();
+            match r {
+                Ok(r) => outln!(
+                    "mode scene=aa mode={} checksum=0x{:08x} pixels={} rewalked=false",
+                    name,
+                    r.checksum,
+                    r.stats.pixels
+                ),
+                Err(e) => {
+                    outln!("mode scene=aa mode={} error={:?}", name, e);
                     ok = false;
                 }
             }
