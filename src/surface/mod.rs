@@ -16,12 +16,14 @@ pub(crate) mod band;
 pub(crate) mod depth_map;
 pub(crate) mod frame;
 pub(crate) mod resample;
+pub(crate) mod smooth;
 pub(crate) mod spans;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
 pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use resample::{resolve_box, Accumulator};
+pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
 
 use crate::color::TargetColor;

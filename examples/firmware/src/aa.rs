@@ -195,3 +195,103 @@ pub fn cube_accumulated(
         stats,
     })
 }
+
+/// Buffers of [`cube_smoothed`]: the band, its depth, a copy to smooth in place, the row
+/// above it and two scratch rows.
+pub struct SmoothBuffers {
+    color: [Rgb565; (W * ROWS) as usize],
+    depth: [u16; (W * ROWS) as usize],
+    out: [Rgb565; (W * ROWS) as usize],
+    above: [Rgb565; W as usize],
+    scratch: [Rgb565; 2 * W as usize],
+}
+
+impl SmoothBuffers {
+    /// Zeroed.
+    pub const fn new() -> Self {
+        SmoothBuffers {
+            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            depth: [0; (W * ROWS) as usize],
+            out: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            above: [Rgb565::new(0, 0, 0); W as usize],
+            scratch: [Rgb565::new(0, 0, 0); 2 * W as usize],
+        }
+    }
+}
+
+impl Default for SmoothBuffers {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Band RAM of [`cube_smoothed`].
+pub const SMOOTH_RAM: u32 = W * ROWS * 6 + W * 6;
+
+/// Luma contrast below which [`cube_smoothed`] leaves a pixel alone.
+pub const SMOOTH_THRESHOLD: u8 = 24;
+
+/// The cube, frame `i`, at 1x in 8-row bands, each band edge-smoothed
+/// (`fixel::surface::smooth_edges`, the previous band's last row above it) before it is
+/// hashed; checksum of the frame, copied into `frame` when given.
+pub fn cube_smoothed(
+    texture: Texture<'_>,
+    i: u32,
+    buf: &mut SmoothBuffers,
+    mut frame: Option<&mut [Rgb565]>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let camera = demo::camera(20);
+    let light = DirectionalLight::default();
+    let m = demo::cube();
+    let mesh = m.mesh()?;
+    let model = demo::cube_model(i);
+    let (out, above, scratch) = (&mut buf.out, &mut buf.above, &mut buf.scratch);
+    let mut sum = Fnv1a::default();
+    let mut bins = [Binned::default(); 16];
+    let stats = bands
+        .render(
+            &[&draw],
+            &mut bins,
+            Rgb565::new(0, 0, 0),
+            |sink| {
+                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
+                    draw.project(t, &mut |s| sink.push(0, s));
+                })
+            },
+            |band| {
+                let n = band.pixels().len();
+                let rows = n as u32 / W;
+                out[..n].copy_from_slice(band.pixels());
+                let first = band.first_row() == 0;
+                let mut f = fixel::surface::Frame::new(&mut out[..n], W, rows)?;
+                fixel::surface::smooth_edges(
+                    &mut f,
+                    (!first).then_some(&above[..]),
+                    scratch,
+                    SMOOTH_THRESHOLD,
+                )?;
+                above.copy_from_slice(&band.pixels()[n - W as usize..]);
+                pause();
+                sum.pixels(&out[..n]);
+                if let Some(fr) = frame.as_deref_mut() {
+                    let at = (band.first_row() as u32 * W) as usize;
+                    if let Some(dst) = fr.get_mut(at..at + n) {
+                        dst.copy_from_slice(&out[..n]);
+                    }
+                }
+                resume();
+                Ok::<(), Error>(())
+            },
+        )
+        .map_err(|e| match e {
+            BandError::Input(e) | BandError::Flush(e) => e,
+        })?;
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats,
+    })
+}

@@ -1,7 +1,7 @@
 //! `cargo xtask report`, anti-aliasing (issue 16): the benchmark cube (frame 0) at 1x,
 //! regular-grid 2 x 2 and 4 x 4 supersampling in bands, and the rotated grid of 4 and 16
 //! stratified jittered samples accumulated through bands (`examples/firmware/src/aa.rs`, the
-//! firmware's code).
+//! firmware's code), and 1x with post-process edge smoothing.
 //!
 //! ```text
 //! aa_report --out DIR [--runs N] [--mcu mcu.tsv]
@@ -263,6 +263,46 @@ fn main() {
             ns: times[times.len() / 2] * 1e9 / display_px(&img),
             mcu: get("Cortex-M0+").zip(get("Cortex-M4F")),
             ram: format!("{:.1} KB", f64::from(aa::ACCUM_RAM) / 1024.0),
+            edge_mean: e.0,
+            edge_max: e.1,
+            frame_mean: e.2,
+            psnr: e.3,
+        });
+    }
+    {
+        let mut sm = Box::new(aa::SmoothBuffers::new());
+        let mut img = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut times = Vec::new();
+        let mut checksum = 0;
+        for _ in 0..runs.max(1) {
+            let t0 = Instant::now();
+            let r =
+                aa::cube_smoothed(tex, 0, &mut sm, Some(&mut img), &mut || {}, &mut || {}).unwrap();
+            times.push(t0.elapsed().as_secs_f64());
+            checksum = r.checksum;
+        }
+        let get = |tg: &str| {
+            mcu.iter()
+                .find(|r| r.0 == "cube-smoothed" && r.1 == tg)
+                .map(|r| {
+                    assert_eq!(
+                        r.3,
+                        format!("0x{checksum:08x}"),
+                        "cube-smoothed on {tg}: checksum differs from the host's"
+                    );
+                    r.2
+                })
+        };
+        let e = errors(&img, &refr, &cov);
+        times.sort_by(f64::total_cmp);
+        rows.push(Row {
+            name: format!(
+                "1x + edge smoothing (threshold {}), bands",
+                aa::SMOOTH_THRESHOLD
+            ),
+            ns: times[times.len() / 2] * 1e9 / display_px(&img),
+            mcu: get("Cortex-M0+").zip(get("Cortex-M4F")),
+            ram: format!("{:.1} KB", f64::from(aa::SMOOTH_RAM) / 1024.0),
             edge_mean: e.0,
             edge_max: e.1,
             frame_mean: e.2,

@@ -1,6 +1,7 @@
 //! `cargo xtask report`: regular-grid supersampling of the benchmark cube in bands
 //! (`aa::cube`): 1x, 2 x 2 and 4 x 4, then the rotated grid of 4 and 16 jittered samples
-//! accumulated through 8-row bands (`aa::cube_accumulated`) (report memory layout only: the 4 x 4 band takes
+//! accumulated through 8-row bands (`aa::cube_accumulated`), then 1x with post-process
+//! edge smoothing (`aa::cube_smoothed`) (report memory layout only: the 4 x 4 band takes
 //! 160 KB; in the default layout this binary only has to link).
 #![no_std]
 #![no_main]
@@ -17,6 +18,8 @@ use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln};
 static mut BUF: aa::AaBuffers = aa::AaBuffers::new();
 #[cfg(fixel_fw_report)]
 static mut ACC: aa::AccumBuffers = aa::AccumBuffers::new();
+#[cfg(fixel_fw_report)]
+static mut SMOOTH: aa::SmoothBuffers = aa::SmoothBuffers::new();
 
 fn run() -> bool {
     report_begin();
@@ -89,6 +92,25 @@ fn run() -> bool {
                     outln!("mode scene=aa mode={} error={:?}", name, e);
                     ok = false;
                 }
+            }
+        }
+        // SAFETY: the only reference to SMOOTH, taken once in this single-threaded firmware.
+        let sm = unsafe { &mut *core::ptr::addr_of_mut!(SMOOTH) };
+        bench_start();
+        let r = aa::cube_smoothed(data::T128, 0, sm, None, &mut || bench_end(), &mut || {
+            bench_start()
+        });
+        bench_end();
+        bench_mark();
+        match r {
+            Ok(r) => outln!(
+                "mode scene=aa mode=cube-smoothed checksum=0x{:08x} pixels={} rewalked=false",
+                r.checksum,
+                r.stats.pixels
+            ),
+            Err(e) => {
+                outln!("mode scene=aa mode=cube-smoothed error={:?}", e);
+                ok = false;
             }
         }
         ok
