@@ -328,3 +328,51 @@ fn edge_smoothing_helps_edges() {
         "{before:?} -> {after:?}"
     );
 }
+
+/// Hard cases of supersampling: a sliver thinner than a sample, and edges exactly on sample
+/// positions. Drawn at 2 x 2, every sample's coverage equals the reference rasterizer's at
+/// the doubled resolution (the fill rule applies per sample), and the resolved pixels
+/// count the samples exactly.
+#[test]
+fn slivers_and_edges_on_samples() {
+    use host_tests::adapter;
+    use host_tests::reference::{RefCull, RefMode, RefShading, RefTriangle, RefVertex};
+    let (w, h) = (64u32, 48u32);
+    let k = 2;
+    // Window x to NDC for the k-times frame, y likewise (y down on screen).
+    let v = |x: f64, y: f64| RefVertex {
+        clip: [
+            2.0 * x / f64::from(w) - 1.0,
+            1.0 - 2.0 * y / f64::from(h),
+            0.0,
+            1.0,
+        ],
+        uv: [0.0; 2],
+        color: [1.0; 3],
+    };
+    let tris = vec![
+        // A sliver 0.2 pixel wide (0.4 samples), long and diagonal.
+        RefTriangle([v(4.0, 4.0), v(40.1, 44.0), v(40.3, 44.0)]),
+        // Edges through sample positions: samples of pixel x sit at x + 0.25 and x + 0.75.
+        RefTriangle([v(10.25, 2.25), v(30.75, 2.25), v(10.25, 20.75)]),
+        RefTriangle([v(30.75, 2.25), v(30.75, 20.75), v(10.25, 20.75)]),
+    ];
+    let mode = RefMode {
+        shading: RefShading::Flat([1.0; 3]),
+        depth_test: false,
+        cull: RefCull::None,
+        ..RefMode::default()
+    };
+    let hi = reference::render(&tris, None, &mode, w * k, h * k);
+    let dm = adapter::draw_mode(&mode, Some(Projection::Exact), false);
+    let fx_img = adapter::render(&adapter::clip_triangles(&tris), None, dm, w * k, h * k);
+    let differ = hi
+        .covered
+        .iter()
+        .zip(&fx_img.covered)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(differ, 0, "{differ} samples covered differently");
+    let sliver = hi.covered.iter().filter(|&&c| c).count();
+    assert!(sliver > 0);
+}
