@@ -6,6 +6,7 @@
 //! binaries under QEMU and `cargo xtask size` measures the `size_*` ones.
 #![no_std]
 
+#[cfg(fixel_fw_report)]
 pub mod aa;
 pub mod data;
 pub mod env;
