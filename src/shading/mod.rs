@@ -184,3 +184,4 @@ pub mod noise;
 pub mod pcf;
 pub mod shadow;
 pub mod triplanar;
+pub mod uv_per_pixel;

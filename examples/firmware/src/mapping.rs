@@ -10,6 +10,7 @@ use fixel::scene::{
     Axis, Camera, DirectionalLight, Intermediate, OMapping, TwoStage, UvAt, UvGenerator, UvMapping,
 };
 use fixel::shading::triplanar::{Triplanar, TriplanarMesh};
+use fixel::shading::uv_per_pixel::{PerPixelMesh, PerPixelUv};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, Texture};
 use fixel::Error;
@@ -111,6 +112,15 @@ pub fn generate(k: usize, p: &[Vec3], n: &[Vec3], out: &mut [[Fx; 2]]) -> Result
     }
 }
 
+/// Which per-pixel frame [`frame`] draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PerPixel {
+    /// Triplanar mapping (`fixel::shading::triplanar`).
+    Triplanar,
+    /// Cylindrical coordinates computed per pixel (`fixel::shading::uv_per_pixel`).
+    Cylindrical,
+}
+
 /// The triplanar teapot frame: model and camera of the report.
 pub fn triplanar_model() -> Mat4 {
     Mat4::translation(Vec3::from_num(0.2, -0.1, -6.5))
@@ -123,6 +133,7 @@ pub fn triplanar_model() -> Mat4 {
 /// `resume` bracket the checksum.
 #[allow(clippy::too_many_arguments)]
 pub fn triplanar_frame(
+    kind: PerPixel,
     tex: Texture<'_>,
     p: &[Vec3],
     n: &[Vec3],
@@ -141,25 +152,54 @@ pub fn triplanar_frame(
         Fx::from_num(30),
     )?;
     let light = DirectionalLight::default();
-    let draw = ShadedDraw::<_, Exact, DepthLess>::new(
-        Triplanar::new(tex, Bilinear),
-        Viewport::new(0, 0, W, H)?,
-        Cull::Back,
-    )?;
-    let mesh = TriplanarMesh {
-        positions: p,
-        normals: n,
-        indices: ix,
-        texels_per_unit: Fx::from_num(40),
-    };
+    let vp = Viewport::new(0, 0, W, H)?;
     let mut pixels = 0u32;
     let mut err = Ok(());
-    mesh.triangles(&triplanar_model(), &camera, Some(&light), |t| {
-        match draw.clip_triangles(core::slice::from_ref(t), &mut frame) {
-            Ok(n) => pixels += n,
-            Err(e) => err = Err(e),
+    match kind {
+        PerPixel::Triplanar => {
+            let draw = ShadedDraw::<_, Exact, DepthLess>::new(
+                Triplanar::new(tex, Bilinear),
+                vp,
+                Cull::Back,
+            )?;
+            let mesh = TriplanarMesh {
+                positions: p,
+                normals: n,
+                indices: ix,
+                texels_per_unit: Fx::from_num(40),
+            };
+            mesh.triangles(&triplanar_model(), &camera, Some(&light), |t| {
+                match draw.clip_triangles(core::slice::from_ref(t), &mut frame) {
+                    Ok(n) => pixels += n,
+                    Err(e) => err = Err(e),
+                }
+            });
         }
-    });
+        PerPixel::Cylindrical => {
+            let mapping = UvMapping::Cylindrical {
+                center: Vec3::ZERO,
+                axis: Axis::Y,
+                top: Fx::from_num(1.6),
+                bottom: Fx::from_num(-1.6),
+            };
+            let draw = ShadedDraw::<_, Exact, DepthLess>::new(
+                PerPixelUv::new(tex, &mapping, Bilinear)?,
+                vp,
+                Cull::Back,
+            )?;
+            let mesh = PerPixelMesh {
+                positions: p,
+                normals: Some(n),
+                indices: ix,
+            };
+            mesh.triangles(&triplanar_model(), &camera, Some(&light), |t| {
+                match draw.clip_triangles(core::slice::from_ref(t), &mut frame) {
+                    Ok(n) => pixels += n,
+                    Err(e) => err = Err(e),
+                }
+            });
+        }
+    }
     err?;
     pause();
     let mut f = crate::scenes::Fnv1a::default();

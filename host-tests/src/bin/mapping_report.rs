@@ -218,6 +218,7 @@ fn main() {
     for _ in 0..runs.max(1) {
         let t0 = Instant::now();
         result = mapping::triplanar_frame(
+            mapping::PerPixel::Triplanar,
             tex,
             p,
             n,
@@ -268,12 +269,76 @@ fn main() {
         ),
         err_x: 100.0 - rep.psnr_db,
     });
+    // Cylindrical coordinates per pixel.
+    {
+        let mut times = Vec::new();
+        let mut result = (0, 0);
+        for _ in 0..runs.max(1) {
+            let t0 = Instant::now();
+            result = mapping::triplanar_frame(
+                mapping::PerPixel::Cylindrical,
+                tex,
+                p,
+                n,
+                &teapot::TEAPOT_INDICES,
+                &mut color,
+                &mut depth,
+                &mut || {},
+                &mut || {},
+            )
+            .expect("per-pixel frame");
+            times.push(t0.elapsed().as_secs_f64());
+        }
+        let mut tri3: Vec<[Vertex<4>; 3]> = Vec::new();
+        fixel::shading::uv_per_pixel::PerPixelMesh {
+            positions: p,
+            normals: Some(n),
+            indices: &teapot::TEAPOT_INDICES,
+        }
+        .triangles(
+            &mapping::triplanar_model(),
+            &camera,
+            Some(&DirectionalLight::default()),
+            |t| tri3.push(*t),
+        );
+        let r = RefUvMapping::Cylindrical {
+            center: [0.0; 3],
+            axis: RefAxis::Y,
+            top: 1.6,
+            bottom: -1.6,
+        };
+        let reference = host_tests::reference::uv_gen::render_per_pixel(
+            &tri3,
+            &r,
+            &rt,
+            RefFilter::Bilinear,
+            w,
+            h,
+        );
+        let raw: Vec<u16> = color
+            .iter()
+            .map(|&c| RawU16::from(c).into_inner())
+            .collect();
+        let covered: Vec<bool> = depth.iter().map(|&d| d != u16::MAX).collect();
+        let rep = compare(&raw, &covered, &reference);
+        rows.push(Row {
+            name: "uv-per-pixel-cylindrical".into(),
+            unit: "pixel",
+            ns: median(times) * 1e9 / f64::from(result.1.max(1)),
+            mcu: mcu_of(&mcu, "uv-per-pixel-cylindrical", result.0),
+            error: format!(
+                "max {} / p99 {} LSB, {:.1} dB",
+                rep.max, rep.p99, rep.psnr_db
+            ),
+            err_x: 100.0 - rep.psnr_db,
+        });
+    }
     let mut md = String::from(
         "# Texture-coordinate generation (issue 15)\n\n\
          The Utah teapot baked from OBJ (`cargo xtask teapot`, `cargo xtask bake-obj`; 860 vertices, \
          1560 triangles). Generators per vertex, no seam handling (`examples/firmware/src/mapping.rs`); \
-         triplanar: the lit teapot, 240 x 180, exact perspective, bilinear, per pixel (geometry \
-         included). Error: against the f64 reference (`host_tests::reference::{uv_gen, two_stage, triplanar}`).\n\n\
+         triplanar and cylindrical per pixel: the lit teapot, 240 x 180, exact perspective, bilinear, \
+         per pixel (geometry included). Error: against the f64 reference (`host_tests::reference::{uv_gen, two_stage, triplanar}`).\n\n\
          | variant | per | host ns | M0+ instructions | M4F instructions | error against f64 |\n|---|---|---:|---:|---:|---|\n",
     );
     for r in &rows {

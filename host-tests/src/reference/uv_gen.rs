@@ -135,3 +135,62 @@ impl RefUvMapping {
         c.map(|x| x.0)
     }
 }
+
+/// Renders triangles of fixel's per-pixel mapping layout (`Vertex<4>`: model-space point in
+/// I16F16, Q8.16 intensity) with coordinates from `mapping` at every pixel's perspective-
+/// correct point, sampled with `filter` (repeat along `s`, clamp along `t`), back faces
+/// culled, GL_LESS on the window depth.
+pub fn render_per_pixel(
+    tris: &[[fixel::geometry::Vertex<4>; 3]],
+    mapping: &RefUvMapping,
+    tex: &super::RefTexture,
+    filter: super::RefFilter,
+    width: u32,
+    height: u32,
+) -> super::RefImage {
+    use super::raster::{barycentrics, rasterize, signed_area2, to_window, WindowVertex};
+    use super::sample::sample;
+    use super::types::{RefVertex, RefWrap};
+    let mut img = super::RefImage::new(width, height);
+    let mut zbuf = vec![f64::INFINITY; (width * height) as usize];
+    for tri in tris {
+        let w = |v: &fixel::geometry::Vertex<4>| {
+            to_window(
+                &RefVertex {
+                    clip: v.position.map(|c| c.to_num::<f64>()),
+                    uv: [0.0; 2],
+                    color: [0.0; 3],
+                },
+                width,
+                height,
+            )
+        };
+        let (Some(a), Some(b), Some(c)) = (w(&tri[0]), w(&tri[1]), w(&tri[2])) else {
+            continue;
+        };
+        let win: [WindowVertex; 3] = [a, b, c];
+        if signed_area2(&win) >= 0.0 {
+            continue;
+        }
+        let attr = tri.map(|v| v.varyings.map(f64::from));
+        rasterize(&win, width, height, |x, y, _| {
+            let l = barycentrics(&win, f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let z: f64 = (0..3).map(|i| l[i] * win[i].z).sum();
+            let idx = (y * width + x) as usize;
+            if z >= zbuf[idx] {
+                return;
+            }
+            zbuf[idx] = z;
+            let q = [0, 1, 2].map(|i| l[i] * win[i].inv_w);
+            let qs: f64 = q.iter().sum();
+            let at = |j: usize| (0..3).map(|i| q[i] * attr[i][j]).sum::<f64>() / qs;
+            let p = [at(0), at(1), at(2)].map(|c| c / 65536.0);
+            let (uv, _) = mapping.uv(p);
+            let k = (at(3) / f64::from(256 << 16)).clamp(0.0, 1.0);
+            let c = sample(tex, uv, filter, RefWrap::Repeat, RefWrap::ClampToEdge);
+            img.rgb[idx] = c.map(|v| v * k);
+            img.covered[idx] = true;
+        });
+    }
+    img
+}

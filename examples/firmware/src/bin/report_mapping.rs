@@ -1,7 +1,7 @@
 //! `cargo xtask report`: texture-coordinate generation (issue 15) on the Utah teapot baked
 //! from OBJ: each per-vertex generator of `mapping::GENERATORS` over its 860 vertices
 //! (`pixels` = vertices, so the figure is instructions per vertex), then the triplanar
-//! teapot frame (240 x 180, per pixel; in the report memory layout only: the frame does not
+//! teapot frame and the teapot with cylindrical coordinates per pixel (240 x 180, per pixel; in the report memory layout only: the frame does not
 //! fit the default 16K of RAM, where this binary only has to link).
 #![no_std]
 #![no_main]
@@ -48,14 +48,25 @@ fn run() -> bool {
     }
     #[cfg(fixel_fw_report)]
     {
-        ok &= triplanar(p, n);
+        ok &= per_pixel(mapping::PerPixel::Triplanar, "triplanar", p, n);
+        ok &= per_pixel(
+            mapping::PerPixel::Cylindrical,
+            "uv-per-pixel-cylindrical",
+            p,
+            n,
+        );
     }
     ok
 }
 
-/// The triplanar teapot frame, counted, then a mark.
+/// A per-pixel teapot frame, counted, then a mark.
 #[cfg(fixel_fw_report)]
-fn triplanar(p: &[fixel::math::Vec3], n: &[fixel::math::Vec3]) -> bool {
+fn per_pixel(
+    kind: mapping::PerPixel,
+    name: &str,
+    p: &[fixel::math::Vec3],
+    n: &[fixel::math::Vec3],
+) -> bool {
     // SAFETY: the only references to these statics, taken once in this single-threaded
     // firmware.
     let (color, depth) = unsafe {
@@ -66,6 +77,7 @@ fn triplanar(p: &[fixel::math::Vec3], n: &[fixel::math::Vec3]) -> bool {
     };
     bench_start();
     let r = mapping::triplanar_frame(
+        kind,
         fixel_firmware::data::T64,
         p,
         n,
@@ -80,14 +92,15 @@ fn triplanar(p: &[fixel::math::Vec3], n: &[fixel::math::Vec3]) -> bool {
     match r {
         Ok((sum, px)) => {
             outln!(
-                "mode scene=mapping mode=triplanar checksum=0x{:08x} pixels={} rewalked=false",
+                "mode scene=mapping mode={} checksum=0x{:08x} pixels={} rewalked=false",
+                name,
                 sum,
                 px
             );
             true
         }
         Err(e) => {
-            outln!("mode scene=mapping mode=triplanar error={:?}", e);
+            outln!("mode scene=mapping mode={} error={:?}", name, e);
             false
         }
     }
