@@ -1,5 +1,5 @@
 //! Texture coordinates generated per pixel: the cylindrical or spherical (or any)
-//! [`UvMapping`](crate::scene::UvMapping) evaluated at each pixel's interpolated
+//! [`UvMapping`] evaluated at each pixel's interpolated
 //! model-space point instead of at the vertices.
 //!
 //! Per vertex, `u = atan2(...)` is interpolated linearly across each triangle, which is
