@@ -54,17 +54,7 @@ impl<'a> Mesh<'a> {
                 actual: uvs.len(),
             });
         }
-        for (t, tri) in indices.iter().enumerate() {
-            for (k, &i) in tri.iter().enumerate() {
-                if usize::from(i) >= n {
-                    return Err(Error::IndexOutOfRange {
-                        at: t * 3 + k,
-                        index: i,
-                        vertices: n,
-                    });
-                }
-            }
-        }
+        check_indices(indices, n)?;
         Ok(Mesh {
             positions,
             normals,
@@ -82,6 +72,22 @@ impl<'a> Mesh<'a> {
     pub fn vertices(&self) -> usize {
         self.positions.len()
     }
+}
+
+/// Every index of `indices` below `n`, or the first that is not.
+pub(super) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error> {
+    for (t, tri) in indices.iter().enumerate() {
+        for (k, &i) in tri.iter().enumerate() {
+            if usize::from(i) >= n {
+                return Err(Error::IndexOutOfRange {
+                    at: t * 3 + k,
+                    index: i,
+                    vertices: n,
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// One vertex to clip space, lit if there is a light and a normal. `None` on overflow.

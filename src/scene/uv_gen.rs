@@ -394,17 +394,7 @@ pub fn map_mesh_with<'a, G: UvGenerator>(
             });
         }
     }
-    for (t, tri) in indices.iter().enumerate() {
-        for (k, &i) in tri.iter().enumerate() {
-            if usize::from(i) >= n {
-                return Err(Error::IndexOutOfRange {
-                    at: t * 3 + k,
-                    index: i,
-                    vertices: n,
-                });
-            }
-        }
-    }
+    super::mesh::check_indices(indices, n)?;
     let m = generator.ready()?;
     let capacity = || map_mesh_capacity_with(generator, positions, normals, indices);
     let MeshStorage {

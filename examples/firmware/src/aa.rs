@@ -48,6 +48,48 @@ pub fn band_ram(k: u32) -> u32 {
     W * ROWS * k * k * 4 + W * ROWS * 2
 }
 
+/// The benchmark cube's geometry for frame `i`: mesh, model, camera and light.
+struct CubeScene {
+    data: fixel::demo::MeshData<24, 12>,
+    model: fixel::math::Mat4,
+    camera: fixel::scene::Camera,
+    light: DirectionalLight,
+}
+
+impl CubeScene {
+    fn new(i: u32) -> Self {
+        CubeScene {
+            data: demo::cube(),
+            model: demo::cube_model(i),
+            camera: demo::camera(20),
+            light: DirectionalLight::default(),
+        }
+    }
+
+    /// Pushes the cube's screen triangles through `draw` into `sink`.
+    fn push(
+        &self,
+        draw: &Draw<'_, Rgb565>,
+        sink: &mut fixel::surface::TriangleSink<'_, '_, '_, Rgb565>,
+    ) {
+        if let Ok(mesh) = self.data.mesh() {
+            mesh_triangles(&mesh, &self.model, &self.camera, Some(&self.light), |t| {
+                draw.project(t, &mut |s| sink.push(0, s));
+            });
+        }
+    }
+}
+
+/// Copies a finished band (frame rows from `first_row`) into `frame` when there is one.
+fn keep(frame: &mut Option<&mut [Rgb565]>, first_row: u32, pixels: &[Rgb565]) {
+    if let Some(f) = frame.as_deref_mut() {
+        let at = (first_row * W) as usize;
+        if let Some(dst) = f.get_mut(at..at + pixels.len()) {
+            dst.copy_from_slice(pixels);
+        }
+    }
+}
+
 /// The cube, frame `i`, supersampled `k x k` (`1..=K_MAX`; 1 is the plain band render
 /// through the same path), lit bilinear (the `cube` firmware's draw); checksum of the
 /// resolved 320 x 240 frame, whose bands are also copied into `frame` when given (the
@@ -70,11 +112,7 @@ pub fn cube(
     let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, w, h)?, Cull::Back)?;
     let mut bands =
         BandRenderer::new(&mut buf.color[..n], w, rows, h)?.with_depth(&mut buf.depth[..n])?;
-    let camera = demo::camera(20);
-    let light = DirectionalLight::default();
-    let m = demo::cube();
-    let mesh = m.mesh()?;
-    let model = demo::cube_model(i);
+    let scene = CubeScene::new(i);
     let lo = &mut buf.lo;
     let mut sum = Fnv1a::default();
     let mut bins = [Binned::default(); 16];
@@ -83,21 +121,12 @@ pub fn cube(
             &[&draw],
             &mut bins,
             Rgb565::new(0, 0, 0),
-            |sink| {
-                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
-                    draw.project(t, &mut |s| sink.push(0, s));
-                })
-            },
+            |sink| scene.push(&draw, sink),
             |band| {
                 resolve_box(band, k, lo)?;
                 pause();
                 sum.pixels(&lo[..]);
-                if let Some(f) = frame.as_deref_mut() {
-                    let at = (band.first_row() as u32 / k * W) as usize;
-                    if let Some(dst) = f.get_mut(at..at + lo.len()) {
-                        dst.copy_from_slice(&lo[..]);
-                    }
-                }
+                keep(&mut frame, band.first_row() as u32 / k, &lo[..]);
                 resume();
                 Ok::<(), Error>(())
             },
@@ -155,11 +184,7 @@ pub fn cube_accumulated(
     let n = pattern.offsets(&mut offsets)?;
     let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, W, H)?, Cull::Back)?;
     let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
-    let camera = demo::camera(20);
-    let light = DirectionalLight::default();
-    let m = demo::cube();
-    let mesh = m.mesh()?;
-    let model = demo::cube_model(i);
+    let scene = CubeScene::new(i);
     let mut sum = Fnv1a::default();
     let mut bins = [Binned::default(); 16];
     let stats = bands
@@ -169,20 +194,11 @@ pub fn cube_accumulated(
             Rgb565::new(0, 0, 0),
             &offsets[..n],
             &mut buf.sums,
-            |sink| {
-                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
-                    draw.project(t, &mut |s| sink.push(0, s));
-                })
-            },
+            |sink| scene.push(&draw, sink),
             |band| {
                 pause();
                 sum.pixels(band.pixels());
-                if let Some(f) = frame.as_deref_mut() {
-                    let at = (band.first_row() as u32 * W) as usize;
-                    if let Some(dst) = f.get_mut(at..at + band.pixels().len()) {
-                        dst.copy_from_slice(band.pixels());
-                    }
-                }
+                keep(&mut frame, band.first_row() as u32, band.pixels());
                 resume();
                 Ok::<(), Error>(())
             },
@@ -244,11 +260,7 @@ pub fn cube_smoothed(
 ) -> Result<FrameResult, Error> {
     let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, W, H)?, Cull::Back)?;
     let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
-    let camera = demo::camera(20);
-    let light = DirectionalLight::default();
-    let m = demo::cube();
-    let mesh = m.mesh()?;
-    let model = demo::cube_model(i);
+    let scene = CubeScene::new(i);
     let (out, above, scratch) = (&mut buf.out, &mut buf.above, &mut buf.scratch);
     let mut sum = Fnv1a::default();
     let mut bins = [Binned::default(); 16];
@@ -257,11 +269,7 @@ pub fn cube_smoothed(
             &[&draw],
             &mut bins,
             Rgb565::new(0, 0, 0),
-            |sink| {
-                mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
-                    draw.project(t, &mut |s| sink.push(0, s));
-                })
-            },
+            |sink| scene.push(&draw, sink),
             |band| {
                 let n = band.pixels().len();
                 let rows = n as u32 / W;
@@ -277,12 +285,7 @@ pub fn cube_smoothed(
                 above.copy_from_slice(&band.pixels()[n - W as usize..]);
                 pause();
                 sum.pixels(&out[..n]);
-                if let Some(fr) = frame.as_deref_mut() {
-                    let at = (band.first_row() as u32 * W) as usize;
-                    if let Some(dst) = fr.get_mut(at..at + n) {
-                        dst.copy_from_slice(&out[..n]);
-                    }
-                }
+                keep(&mut frame, band.first_row() as u32, &out[..n]);
                 resume();
                 Ok::<(), Error>(())
             },

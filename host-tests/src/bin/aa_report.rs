@@ -125,29 +125,6 @@ fn errors(px: &[Rgb565], refr: &[[f64; 3]], cov: &[f64]) -> (f64, f64, f64, f64)
     )
 }
 
-fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return Vec::new();
-    };
-    text.lines()
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split('\t').collect();
-            if f.len() < 6 || f[0] != "aa" {
-                return None;
-            }
-            let insns: f64 = f[3].parse().ok()?;
-            let px: f64 = f[4].parse().ok()?;
-            Some((
-                f[1].to_string(),
-                f[2].to_string(),
-                insns / px.max(1.0),
-                f[5].to_string(),
-            ))
-        })
-        .collect()
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 3u32, None);
@@ -164,7 +141,10 @@ fn main() {
         }
     }
     std::fs::create_dir_all(&out).expect("output directory");
-    let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();
+    let mcu = mcu_path
+        .as_deref()
+        .map(|p| host_tests::report_mcu::read(p, "aa"))
+        .unwrap_or_default();
     let t = texels();
     let tex = Texture::new(&t, 128, 128).unwrap();
     let (refr, cov) = reference16();
@@ -187,17 +167,7 @@ fn main() {
             checksum = r.checksum;
         }
         let mode = format!("cube-{k}x{k}");
-        let get = |tg: &str| {
-            mcu.iter().find(|r| r.0 == mode && r.1 == tg).map(|r| {
-                assert_eq!(
-                    r.3,
-                    format!("0x{checksum:08x}"),
-                    "{mode} on {tg}: checksum differs from the host's"
-                );
-                r.2
-            })
-        };
-        let mcu_v = get("Cortex-M0+").zip(get("Cortex-M4F"));
+        let mcu_v = host_tests::report_mcu::of(&mcu, &mode, checksum);
         let e = errors(&img, &refr, &cov);
         times.sort_by(f64::total_cmp);
         rows.push(Row {
@@ -246,22 +216,12 @@ fn main() {
             times.push(t0.elapsed().as_secs_f64());
             checksum = r.checksum;
         }
-        let get = |tg: &str| {
-            mcu.iter().find(|r| r.0 == mode && r.1 == tg).map(|r| {
-                assert_eq!(
-                    r.3,
-                    format!("0x{checksum:08x}"),
-                    "{mode} on {tg}: checksum differs from the host's"
-                );
-                r.2
-            })
-        };
         let e = errors(&img, &refr, &cov);
         times.sort_by(f64::total_cmp);
         rows.push(Row {
             name: name.into(),
             ns: times[times.len() / 2] * 1e9 / display_px(&img),
-            mcu: get("Cortex-M0+").zip(get("Cortex-M4F")),
+            mcu: host_tests::report_mcu::of(&mcu, mode, checksum),
             ram: format!("{:.1} KB", f64::from(aa::ACCUM_RAM) / 1024.0),
             edge_mean: e.0,
             edge_max: e.1,
@@ -281,18 +241,6 @@ fn main() {
             times.push(t0.elapsed().as_secs_f64());
             checksum = r.checksum;
         }
-        let get = |tg: &str| {
-            mcu.iter()
-                .find(|r| r.0 == "cube-smoothed" && r.1 == tg)
-                .map(|r| {
-                    assert_eq!(
-                        r.3,
-                        format!("0x{checksum:08x}"),
-                        "cube-smoothed on {tg}: checksum differs from the host's"
-                    );
-                    r.2
-                })
-        };
         let e = errors(&img, &refr, &cov);
         times.sort_by(f64::total_cmp);
         rows.push(Row {
@@ -301,7 +249,7 @@ fn main() {
                 aa::SMOOTH_THRESHOLD
             ),
             ns: times[times.len() / 2] * 1e9 / display_px(&img),
-            mcu: get("Cortex-M0+").zip(get("Cortex-M4F")),
+            mcu: host_tests::report_mcu::of(&mcu, "cube-smoothed", checksum),
             ram: format!("{:.1} KB", f64::from(aa::SMOOTH_RAM) / 1024.0),
             edge_mean: e.0,
             edge_max: e.1,

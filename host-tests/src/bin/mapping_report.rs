@@ -102,43 +102,6 @@ fn reference(k: usize, p: [f64; 3], n: [f64; 3]) -> ([f64; 2], bool) {
     }
 }
 
-fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return Vec::new();
-    };
-    text.lines()
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split('\t').collect();
-            if f.len() < 6 || f[0] != "mapping" {
-                return None;
-            }
-            let insns: f64 = f[3].parse().ok()?;
-            let px: f64 = f[4].parse().ok()?;
-            Some((
-                f[1].to_string(),
-                f[2].to_string(),
-                insns / px.max(1.0),
-                f[5].to_string(),
-            ))
-        })
-        .collect()
-}
-
-fn mcu_of(mcu: &[(String, String, f64, String)], mode: &str, checksum: u32) -> Option<(f64, f64)> {
-    let get = |t: &str| {
-        mcu.iter().find(|r| r.0 == mode && r.1 == t).map(|r| {
-            let want = format!("0x{checksum:08x}");
-            assert_eq!(
-                r.3, want,
-                "{mode} on {t}: firmware checksum differs from the host's"
-            );
-            r.2
-        })
-    };
-    Some((get("Cortex-M0+")?, get("Cortex-M4F")?))
-}
-
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
@@ -162,7 +125,10 @@ fn main() {
         }
     }
     std::fs::create_dir_all(&out).expect("output directory");
-    let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();
+    let mcu = mcu_path
+        .as_deref()
+        .map(|p| host_tests::report_mcu::read(p, "mapping"))
+        .unwrap_or_default();
     let (p, n) = (&teapot::TEAPOT_POSITIONS[..], &teapot::TEAPOT_NORMALS[..]);
     let mut rows = Vec::new();
     let mut uvs = vec![[Fx::ZERO; 2]; p.len()];
@@ -199,7 +165,7 @@ fn main() {
             name: name.to_string(),
             unit: "vertex",
             ns: median(times),
-            mcu: mcu_of(&mcu, name, mapping::checksum(&uvs)),
+            mcu: host_tests::report_mcu::of(&mcu, name, mapping::checksum(&uvs)),
             error: format!("median {med:.2}, p99 {p99:.2}, max {max:.2} (2^-16 texture)"),
             err_x: p99,
         });
@@ -262,7 +228,7 @@ fn main() {
         name: "triplanar".into(),
         unit: "pixel",
         ns: median(times) * 1e9 / f64::from(result.1.max(1)),
-        mcu: mcu_of(&mcu, "triplanar", result.0),
+        mcu: host_tests::report_mcu::of(&mcu, "triplanar", result.0),
         error: format!(
             "max {} / p99 {} LSB, {:.1} dB",
             rep.max, rep.p99, rep.psnr_db
@@ -325,7 +291,7 @@ fn main() {
             name: "uv-per-pixel-cylindrical".into(),
             unit: "pixel",
             ns: median(times) * 1e9 / f64::from(result.1.max(1)),
-            mcu: mcu_of(&mcu, "uv-per-pixel-cylindrical", result.0),
+            mcu: host_tests::report_mcu::of(&mcu, "uv-per-pixel-cylindrical", result.0),
             error: format!(
                 "max {} / p99 {} LSB, {:.1} dB",
                 rep.max, rep.p99, rep.psnr_db

@@ -7,8 +7,7 @@
 //! Everything here is `f64`: lattice coordinates in cells, noise in about `-1..1`,
 //! turbulence `Σ |noise(2^k p)| / 2^k`, colours in `0..=1` per channel.
 
-use super::raster::{barycentrics, rasterize, signed_area2, to_window, WindowVertex};
-use super::types::RefVertex;
+use super::raster::{barycentrics, rasterize, signed_area2, WindowVertex};
 use fixel::geometry::Vertex;
 
 /// Perlin's doubled permutation table `p[512]` from fixel's 256 entries (data).
@@ -329,7 +328,7 @@ pub fn render_solid(
         covered: vec![false; n],
     };
     for tri in tris {
-        let Some(win) = to_win(tri, width, height) else {
+        let Some(win) = super::raster::window_of(tri, width, height) else {
             continue;
         };
         if signed_area2(&win) >= 0.0 {
@@ -368,21 +367,6 @@ pub fn render_solid(
         });
     }
     img
-}
-
-fn to_win(tri: &[Vertex<4>; 3], width: u32, height: u32) -> Option<[WindowVertex; 3]> {
-    let w = |v: &Vertex<4>| {
-        to_window(
-            &RefVertex {
-                clip: v.position.map(|c| c.to_num::<f64>()),
-                uv: [0.0; 2],
-                color: [0.0; 3],
-            },
-            width,
-            height,
-        )
-    };
-    Some([w(&tri[0])?, w(&tri[1])?, w(&tri[2])?])
 }
 
 /// The two axes other than the one the triangle's normal is closest to (ties: z, then x).

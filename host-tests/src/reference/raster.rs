@@ -158,3 +158,24 @@ pub fn rasterize(
         }
     }
 }
+
+/// The window vertices of a fixel clip-space triangle (any varyings; only the positions
+/// are read), or `None` when a vertex is at or behind `w = 0`.
+pub fn window_of<const N: usize>(
+    tri: &[fixel::geometry::Vertex<N>; 3],
+    width: u32,
+    height: u32,
+) -> Option<[WindowVertex; 3]> {
+    let w = |v: &fixel::geometry::Vertex<N>| {
+        to_window(
+            &RefVertex {
+                clip: v.position.map(|c| c.to_num::<f64>()),
+                uv: [0.0; 2],
+                color: [0.0; 3],
+            },
+            width,
+            height,
+        )
+    };
+    Some([w(&tri[0])?, w(&tri[1])?, w(&tri[2])?])
+}

@@ -8,9 +8,9 @@
 //! a_i = max(0, |n_i| − k max|n|),  w_i = a_i / Σ a,  colour = Σ w_i T_i · intensity
 //! ```
 
-use super::raster::{barycentrics, rasterize, signed_area2, to_window, WindowVertex};
+use super::raster::{barycentrics, rasterize, signed_area2, window_of};
 use super::sample::sample;
-use super::types::{RefFilter, RefImage, RefTexture, RefVertex, RefWrap};
+use super::types::{RefFilter, RefImage, RefTexture, RefWrap};
 use fixel::geometry::Vertex;
 
 /// The blend weights for normal `n` and threshold `k` (`0..1`).
@@ -38,21 +38,9 @@ pub fn render(
     let mut img = RefImage::new(width, height);
     let mut zbuf = vec![f64::INFINITY; (width * height) as usize];
     for tri in tris {
-        let w = |v: &Vertex<7>| {
-            to_window(
-                &RefVertex {
-                    clip: v.position.map(|c| c.to_num::<f64>()),
-                    uv: [0.0; 2],
-                    color: [0.0; 3],
-                },
-                width,
-                height,
-            )
-        };
-        let (Some(a), Some(b), Some(c)) = (w(&tri[0]), w(&tri[1]), w(&tri[2])) else {
+        let Some(win) = window_of(tri, width, height) else {
             continue;
         };
-        let win: [WindowVertex; 3] = [a, b, c];
         if signed_area2(&win) >= 0.0 {
             continue;
         }

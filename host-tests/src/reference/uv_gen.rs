@@ -148,27 +148,15 @@ pub fn render_per_pixel(
     width: u32,
     height: u32,
 ) -> super::RefImage {
-    use super::raster::{barycentrics, rasterize, signed_area2, to_window, WindowVertex};
+    use super::raster::{barycentrics, rasterize, signed_area2, window_of};
     use super::sample::sample;
-    use super::types::{RefVertex, RefWrap};
+    use super::types::RefWrap;
     let mut img = super::RefImage::new(width, height);
     let mut zbuf = vec![f64::INFINITY; (width * height) as usize];
     for tri in tris {
-        let w = |v: &fixel::geometry::Vertex<4>| {
-            to_window(
-                &RefVertex {
-                    clip: v.position.map(|c| c.to_num::<f64>()),
-                    uv: [0.0; 2],
-                    color: [0.0; 3],
-                },
-                width,
-                height,
-            )
-        };
-        let (Some(a), Some(b), Some(c)) = (w(&tri[0]), w(&tri[1]), w(&tri[2])) else {
+        let Some(win) = window_of(tri, width, height) else {
             continue;
         };
-        let win: [WindowVertex; 3] = [a, b, c];
         if signed_area2(&win) >= 0.0 {
             continue;
         }
