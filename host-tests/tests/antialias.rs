@@ -74,8 +74,8 @@ fn reference_cube(s: u32) -> (Vec<[f64; 3]>, Vec<f64>) {
         for x in 0..W * s {
             let i = (y * W * s + x) as usize;
             let o = ((y / s) * W + x / s) as usize;
-            for c in 0..3 {
-                rgb[o][c] += img.rgb[i][c];
+            for (acc, v) in rgb[o].iter_mut().zip(img.rgb[i]) {
+                *acc += v;
             }
             if img.covered[i] {
                 cov[o] += 1.0;

@@ -191,8 +191,8 @@ fn generated_sphere_renders_like_the_reference() {
     let mesh = &scene.mesh;
     for (t, tri) in tris.iter_mut().enumerate() {
         let want = r.triangle(mesh.indices[t].map(|i| mesh.positions[usize::from(i)]));
-        for c in 0..3 {
-            tri.0[c].uv = want[c];
+        for (v, uv) in tri.0.iter_mut().zip(want) {
+            v.uv = uv;
         }
     }
     let reference = reference::render(&tris, Some(&scene.texture), &scene.mode, 320, 240);

@@ -97,11 +97,11 @@ pub fn tessellate(patches: &[[usize; 16]], points: &[[f64; 3]], n: u32) -> Patch
                     bernstein(f64::from(b) / f64::from(n)),
                 );
                 let mut p = [0.0; 3];
-                for i in 0..4 {
-                    for j in 0..4 {
+                for (i, wi) in bs.iter().enumerate() {
+                    for (j, wj) in bt.iter().enumerate() {
                         let c = cp(i, j);
-                        for k in 0..3 {
-                            p[k] += bs[i] * bt[j] * c[k];
+                        for (pk, ck) in p.iter_mut().zip(c) {
+                            *pk += wi * wj * ck;
                         }
                     }
                 }
