@@ -14,8 +14,8 @@
 //!   division, no 64-bit multiply and no floating point (Cortex-M0+ friendly). Nothing here
 //!   can panic or overflow for any input.
 
-use embedded_graphics_core::pixelcolor::raw::RawU16;
-use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888};
+use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
+use embedded_graphics_core::pixelcolor::{Gray8, GrayColor, Rgb565, Rgb888, RgbColor};
 
 /// A colour type the rasterizer can write: built from a raw RGB565 value.
 ///
@@ -28,12 +28,24 @@ use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888};
 pub trait TargetColor: Copy + Default + PartialEq + core::fmt::Debug + 'static {
     /// Converts a raw RGB565 value (`rrrrr gggggg bbbbb`) to this colour type.
     fn from_rgb565(raw: u16) -> Self;
+
+    /// This colour as raw RGB565, for shaders that blend with what the target holds
+    /// ([`Shader::BLENDS`](crate::shading::Shader::BLENDS)): exact for [`Rgb565`], rounded
+    /// to nearest from [`Rgb888`], the grey level for [`Gray8`]. The default reads black.
+    #[inline(always)]
+    fn to_rgb565(self) -> u16 {
+        0
+    }
 }
 
 impl TargetColor for Rgb565 {
     #[inline(always)]
     fn from_rgb565(raw: u16) -> Self {
         Rgb565::from(RawU16::new(raw))
+    }
+    #[inline(always)]
+    fn to_rgb565(self) -> u16 {
+        RawU16::from(self).into_inner()
     }
 }
 
@@ -42,6 +54,11 @@ impl TargetColor for Rgb888 {
     fn from_rgb565(raw: u16) -> Self {
         let (r, g, b) = expand_565(raw);
         Rgb888::new(r, g, b)
+    }
+    #[inline(always)]
+    fn to_rgb565(self) -> u16 {
+        let q = |v: u8, max: u32| ((u32::from(v) * max + 127) / 255) as u8;
+        rgb565(q(self.r(), 31), q(self.g(), 63), q(self.b(), 31))
     }
 }
 
@@ -52,6 +69,12 @@ impl TargetColor for Gray8 {
         // Max: 255 * 256 + 128 = 65408, >> 8 = 255: fits in u8.
         let luma = (r as u32 * 77 + g as u32 * 150 + b as u32 * 29 + 128) >> 8;
         Gray8::new(luma as u8)
+    }
+    #[inline(always)]
+    fn to_rgb565(self) -> u16 {
+        let l = self.luma();
+        let q = |max: u32| ((u32::from(l) * max + 127) / 255) as u8;
+        rgb565(q(31), q(63), q(31))
     }
 }
 

@@ -93,6 +93,21 @@ fn depth_chunk<const WRITE: bool>(z0: i32, dz: i32, zrow: &mut [u16]) -> u32 {
     m
 }
 
+/// The shader's colour for one pixel whose current value is `o`: over it for a blending
+/// shader, alone otherwise (decided at compile time).
+#[inline(always)]
+fn color<S: Shader, C: TargetColor>(
+    shader: &S,
+    f: &Fragment<S::Varyings, S::Triangle>,
+    o: &C,
+) -> Option<u16> {
+    if S::BLENDS {
+        shader.shade_over(f, o.to_rgb565())
+    } else {
+        shader.shade(f)
+    }
+}
+
 /// Where a chunk starts, for the fragments' position fields and the level of detail.
 #[derive(Clone, Copy, Debug)]
 struct Pos {
@@ -141,7 +156,7 @@ fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
     let mut written = 0u32;
     if !S::SMALL && !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
         for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
-            if let Some(c) = shader.shade(&frag(*v, k)) {
+            if let Some(c) = color(&shader, &frag(*v, k), o) {
                 *o = C::from_rgb565(c);
             }
         }
@@ -151,7 +166,7 @@ fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
     for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
         if m & 1 != 0 {
             let f = frag(*v, k);
-            if let Some(c) = shader.shade(&f) {
+            if let Some(c) = color(&shader, &f, o) {
                 *o = C::from_rgb565(c);
                 if ZW {
                     if let Some(zb) = zrow.get_mut(k) {
@@ -197,7 +212,7 @@ fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
     let mut written = 0u32;
     if !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
         for (k, o) in out.iter_mut().enumerate() {
-            if let Some(c) = shader.shade(&frag(v, k)) {
+            if let Some(c) = color(&shader, &frag(v, k), o) {
                 *o = C::from_rgb565(c);
             }
             step(&mut v, &slope);
@@ -208,7 +223,7 @@ fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
     for (k, o) in out.iter_mut().enumerate() {
         if m & 1 != 0 {
             let f = frag(v, k);
-            if let Some(c) = shader.shade(&f) {
+            if let Some(c) = color(&shader, &f, o) {
                 *o = C::from_rgb565(c);
                 if ZW {
                     if let Some(zb) = zrow.get_mut(k) {
@@ -240,8 +255,9 @@ fn chunk_mask<S: Shader, const Z: bool>(
     let z_end = z.wrapping_add(dz.wrapping_mul(n as i32 - 1));
     let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
     let (d_lo, d_hi) = (d(z.min(z_end)), d(z.max(z_end)));
-    let mask = if S::DISCARDS {
-        // Test only: depth is written for the pixels the shader keeps.
+    let mask = if S::DISCARDS || S::BLENDS {
+        // Test only: depth is written for the pixels a discarding shader keeps, and never
+        // for a blending one.
         depth_chunk::<false>(z, dz, zc) & low_bits(n)
     } else if d_hi < bound.floor {
         // Nearer than everything stored: every pixel passes, no depth is read.
@@ -339,7 +355,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
                 ) else {
                     break;
                 };
-                let shaded = if Z && S::DISCARDS {
+                let shaded = if Z && S::DISCARDS && !S::BLENDS {
                     shade_linear::<S, C, true>(
                         &ctx.shader,
                         ctx.triangle,
@@ -362,13 +378,13 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
                         pos,
                     )
                 };
-                if !Z || S::DISCARDS {
+                if !Z || S::DISCARDS || S::BLENDS {
                     written += shaded;
                 }
             }
             off = end;
         }
-        if Z && !S::DISCARDS {
+        if Z && !S::DISCARDS && !S::BLENDS {
             written += mask.count_ones();
         }
         z = z.wrapping_add(dz.wrapping_mul(n as i32));
@@ -455,9 +471,9 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
                 lambda,
                 per_pixel: spec.lod,
             };
-            written += if depth && S::DISCARDS {
+            written += if depth && S::DISCARDS && !S::BLENDS {
                 shade_chunk::<S, C, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
-            } else if depth {
+            } else if depth && !S::BLENDS {
                 shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos);
                 mask.count_ones()
             } else {

@@ -40,7 +40,9 @@ pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
+mod depth_sort;
 mod jitter;
+pub use depth_sort::sort_back_to_front;
 mod quad;
 pub use jitter::{jittered, SamplePattern};
 mod shadow;

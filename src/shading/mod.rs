@@ -133,6 +133,13 @@ pub trait Shader: Copy {
     /// and shade only the visible ones; one that does keeps the test and the write fused.
     const DISCARDS: bool = false;
 
+    /// True when the shader blends with what the target already holds (transparency): the
+    /// span loop then reads each covered pixel's colour and calls
+    /// [`Shader::shade_over`] instead of [`Shader::shade`], and tests depth without writing
+    /// it (translucent surfaces do not hide what is drawn after them). Opaque shaders leave
+    /// it `false` and pay nothing.
+    const BLENDS: bool = false;
+
     /// True to link the smallest span loops rather than the fastest: one shading loop per
     /// projection (varyings filled into a chunk array, then shaded), where the default also
     /// links loops that step long linear pieces in registers and a branch-free loop for
@@ -177,8 +184,22 @@ pub trait Shader: Copy {
     /// depth are left as they were; a shader that discards must say so in
     /// [`Shader::DISCARDS`], or the depth is written anyway).
     fn shade(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16>;
+
+    /// The colour of one pixel given the colour `dst` (raw RGB565) the target holds there,
+    /// for shaders with [`Shader::BLENDS`]; `None` leaves the pixel as it is. The default
+    /// ignores `dst`.
+    #[inline(always)]
+    fn shade_over(
+        &self,
+        fragment: &Fragment<Self::Varyings, Self::Triangle>,
+        dst: u16,
+    ) -> Option<u16> {
+        let _ = dst;
+        self.shade(fragment)
+    }
 }
 
+pub mod alpha;
 pub mod env;
 pub mod noise;
 pub mod pcf;
