@@ -71,6 +71,13 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         Ok(frame)
     }
 
+    /// Attaches `depth` as it is, values kept: a later pass over a frame drawn before (the
+    /// transparent triangles after the opaque scene, when the frame was rebuilt between
+    /// them). The depth floor starts unknown.
+    pub fn with_depth_kept(self, depth: &'a mut [u16]) -> Result<Self, Error> {
+        self.with_depth_as_is(depth)
+    }
+
     /// [`with_depth`](Self::with_depth) without the fill, for a band that is cleared next.
     pub(crate) fn with_depth_as_is(mut self, depth: &'a mut [u16]) -> Result<Self, Error> {
         if depth.len() != self.color.len() {

@@ -30,7 +30,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 9] = [
+const RENDER_EXAMPLES: [&str; 10] = [
     "showcase",
     "scenes",
     "preview",
@@ -40,6 +40,7 @@ const RENDER_EXAMPLES: [&str; 9] = [
     "mappings",
     "quads",
     "antialias",
+    "transparency",
 ];
 
 const HELP: &str = "\

@@ -1047,7 +1047,7 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 8] = [
+const REPORT_BINS: [&str; 9] = [
     "report_cube",
     "report_sphere",
     "report_floor",
@@ -1056,6 +1056,7 @@ const REPORT_BINS: [&str; 8] = [
     "report_env",
     "report_mapping",
     "report_aa",
+    "report_alpha",
 ];
 
 /// One mode of one report firmware on one MCU.

@@ -8,6 +8,8 @@
 
 #[cfg(fixel_fw_report)]
 pub mod aa;
+#[cfg(fixel_fw_report)]
+pub mod alpha;
 pub mod data;
 pub mod env;
 pub mod mapping;
