@@ -13,6 +13,12 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
+#[path = "../../examples/firmware/src/aa_scene.rs"]
+mod aa_scene;
+
+#[path = "../../examples/firmware/src/alpha_scene.rs"]
+mod alpha_scene;
+
 #[allow(dead_code)] // the scene needs no tangents
 mod teapot {
     include!("../../assets/teapot/teapot_mesh.rs");
@@ -132,6 +138,28 @@ fn mcu_frames() {
         (r.checksum, r.stats.pixels),
         "sphere: bands differ from the whole frame"
     );
+
+    // Anti-aliasing (rotated grid through 4-row bands) and transparency.
+    let t128b = texture(128, 128);
+    let r = aa_scene::aa_cube(
+        Texture::new(&t128b, 128, 128).unwrap(),
+        0,
+        &mut Box::new(aa_scene::AaCubeBuffers::new()),
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("aa_cube", &r);
+    let (t64a, t8a) = (texture(64, 64), texture(8, 8));
+    let r = alpha_scene::transparency(
+        Texture::new(&t64a, 64, 64).unwrap(),
+        Texture::new(&t8a, 8, 8).unwrap(),
+        &mut Box::new(alpha_scene::AlphaBuffers::new()),
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("transparency", &r);
 
     // The teapot baked from OBJ (the firmware's `data::teapot`, the same generated file).
     let mesh = Mesh::new(

@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 15] = [
+const SCENES: [&str; 17] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -71,6 +71,9 @@ const SCENES: [&str; 15] = [
     // Environment maps: the sphere as a mirror, r per pixel and per vertex.
     "env_pixel",
     "env_vertex",
+    // Anti-aliasing (rotated grid through bands) and transparency.
+    "aa_cube",
+    "transparency",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
