@@ -218,3 +218,123 @@ fn cube_rotated_grid_in_bands() {
         .unwrap();
     assert_golden("aa_cube_rotated_grid", w, h, &raw(&out));
 }
+
+/// Transparency: a fence cut-out and a translucent window (alpha plane, over) and a glow
+/// (additive) over the textured floor.
+#[test]
+fn transparency() {
+    use fixel::geometry::Vertex;
+    use fixel::shading::alpha::{AlphaBlend, AlphaSource, AlphaTest, BlendMode};
+    use fixel::texture::Nearest;
+    let (w, h) = (W, H);
+    let t64 = checker(64);
+    let floor_tex = Texture::new(&t64, 64, 64).unwrap();
+    let t8 = checker(8);
+    let q = Texture::new(&t8, 8, 8).unwrap();
+    let vp = Viewport::new(0, 0, w, h).unwrap();
+    let cam = Camera::perspective(
+        Angle::from_degrees(Fx::from_num(45)),
+        Fx::from_num(4) / 3,
+        Fx::from_num(0.5),
+        Fx::from_num(200),
+    )
+    .unwrap();
+    let (mut c, mut d) = (
+        vec![Rgb565::new(0, 0, 0); (w * h) as usize],
+        vec![0u16; (w * h) as usize],
+    );
+    let mut frame = Frame::new(&mut c, w, h)
+        .unwrap()
+        .with_depth(&mut d)
+        .unwrap();
+    frame.clear(Rgb565::new(14, 30, 22));
+    let mode = DrawMode {
+        projection: Projection::Exact,
+        filter: Filter::Bilinear,
+        depth: DepthTest::Less,
+        cull: Cull::Back,
+        ..DrawMode::default()
+    };
+    let floor = demo::floor();
+    draw_mesh(
+        &Draw::dynamic(mode, Some(floor_tex), vp).unwrap(),
+        &floor.mesh().unwrap(),
+        &Mat4::IDENTITY,
+        &cam,
+        None,
+        &mut frame,
+    )
+    .unwrap();
+    let quad = |model: Mat4| -> Vec<[Vertex<3>; 3]> {
+        let mvp = cam.projection.mul(&cam.view).mul(&model);
+        let v = |x: i32, y: i32, u: i32, t: i32| {
+            let p = mvp.transform_point(Vec3::from_num(x, y, 0)).unwrap();
+            Vertex::new([p.x, p.y, p.z, p.w], [u << 16, t << 16, 256 << 16])
+        };
+        let (a, b, cc, dd) = (
+            v(-1, -1, 0, 1),
+            v(1, -1, 1, 1),
+            v(1, 1, 1, 0),
+            v(-1, 1, 0, 0),
+        );
+        vec![[a, b, cc], [a, cc, dd]]
+    };
+    let fence_a: Vec<u8> = (0..64).map(|k| if k % 4 == 3 { 0 } else { 255 }).collect();
+    let glass_a: Vec<u8> = (0..64)
+        .map(|k| if k % 8 == 0 || k / 8 == 0 { 255 } else { 120 })
+        .collect();
+    let glow_a: Vec<u8> = (0..64u32)
+        .map(|k| {
+            let (x, y) = (f64::from(k % 8) - 3.5, f64::from(k / 8) - 3.5);
+            ((1.0 - x.hypot(y) / 4.5).max(0.0) * 255.0) as u8
+        })
+        .collect();
+    ShadedDraw::<_, Exact, DepthLess>::new(
+        AlphaTest::new(q, AlphaSource::Plane(&fence_a), 128, Nearest).unwrap(),
+        vp,
+        Cull::None,
+    )
+    .unwrap()
+    .clip_triangles(
+        &quad(Mat4::translation(Vec3::from_num(-1.2, -0.2, -5))),
+        &mut frame,
+    )
+    .unwrap();
+    ShadedDraw::<_, Exact, DepthLess>::new(
+        AlphaBlend::new(
+            q,
+            AlphaSource::Plane(&glass_a),
+            255,
+            BlendMode::Over,
+            Bilinear,
+        )
+        .unwrap(),
+        vp,
+        Cull::None,
+    )
+    .unwrap()
+    .clip_triangles(
+        &quad(Mat4::translation(Vec3::from_num(1, 0, -6))),
+        &mut frame,
+    )
+    .unwrap();
+    ShadedDraw::<_, Exact, DepthLess>::new(
+        AlphaBlend::new(
+            q,
+            AlphaSource::Plane(&glow_a),
+            200,
+            BlendMode::Add,
+            Bilinear,
+        )
+        .unwrap(),
+        vp,
+        Cull::None,
+    )
+    .unwrap()
+    .clip_triangles(
+        &quad(Mat4::translation(Vec3::from_num(0, 1, -4))),
+        &mut frame,
+    )
+    .unwrap();
+    assert_golden("alpha_transparency", w, h, &raw(&c));
+}
