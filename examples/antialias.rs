@@ -1,8 +1,9 @@
 //! Anti-aliasing (seed 004) on the benchmark cube and sphere: no anti-aliasing, 2 x 2
 //! regular-grid supersampling (a 2-times frame resolved by `fixel::surface::resolve_box`),
-//! the 4-sample rotated grid accumulated from jittered frames (`fixel::scene::jittered`,
-//! `fixel::surface::Accumulator`) and 4 x 4 supersampling, side by side as 7x zoomed crops
-//! of a silhouette.
+//! 2 x 2 stratified jitter and the 4-sample rotated grid accumulated from jittered frames
+//! (`fixel::scene::jittered`, `fixel::surface::Accumulator`), and 4 x 4 supersampling, side
+//! by side as 7x zoomed crops of a silhouette. Also `motion_blur.png`: the same accumulation
+//! over time, 16 frames of the turning cube.
 //!
 //! `cargo run --release --example antialias` (picture in `target/pictures/antialias.png`).
 
@@ -117,7 +118,7 @@ fn main() -> Result<(), Error> {
             150u32,
         ),
     ];
-    let cols = 4u32;
+    let cols = 5u32;
     let (pw, ph) = (CW * ZOOM, CH * ZOOM);
     let (ow, oh) = (cols * pw + (cols - 1) * 4, 2 * ph + 4);
     let mut out = vec![Rgb565::new(31, 63, 31); (ow * oh) as usize];
@@ -126,6 +127,7 @@ fn main() -> Result<(), Error> {
         let images = [
             render(1, &cam, mesh, model, *tex)?,
             render(2, &cam, mesh, model, *tex)?,
+            accumulated(SamplePattern::Jittered { n: 4, seed: 7 }, mesh, model, *tex)?,
             accumulated(SamplePattern::RotatedGrid4, mesh, model, *tex)?,
             render(4, &cam, mesh, model, *tex)?,
         ];
@@ -144,8 +146,24 @@ fn main() -> Result<(), Error> {
     let path = common::out_dir().join("antialias.png");
     common::write_png(&path, ow, oh, &out);
     println!(
-        "wrote {} (columns: 1x, 2x2 grid, rotated grid 4, 4x4 grid)",
+        "wrote {} (columns: 1x, 2x2 grid, 2x2 jittered, rotated grid 4, 4x4 grid)",
         path.display()
     );
+    motion_blur(&objects[0].0, objects[0].2)
+}
+
+/// Accumulation over time: 16 frames of the cube turning (frames 0..32 step 2), averaged.
+fn motion_blur(mesh: &Mesh<'_>, tex: Texture<'_>) -> Result<(), Error> {
+    let cam = demo::camera(20);
+    let mut sums = vec![[0u16; 3]; (W * H) as usize];
+    let mut acc = Accumulator::new(&mut sums)?;
+    for i in 0..16 {
+        acc.add(&render(1, &cam, mesh, &demo::cube_model(2 * i), tex)?)?;
+    }
+    let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+    acc.resolve(&mut out)?;
+    let path = common::out_dir().join("motion_blur.png");
+    common::write_png(&path, W, H, &out);
+    println!("wrote {}", path.display());
     Ok(())
 }
