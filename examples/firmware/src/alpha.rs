@@ -7,7 +7,7 @@ use crate::scenes::Fnv1a;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{ClipVertex, Cull, Vertex, Viewport};
-use fixel::math::{Fx, Mat4, Vec3};
+use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Draw, Exact, ShadedDraw};
 use fixel::scene::mesh_triangles;
 use fixel::shading::alpha::{AlphaBlend, AlphaSource, AlphaTest, BlendMode};
@@ -38,31 +38,15 @@ pub fn plane() -> [u8; (N * N) as usize] {
     })
 }
 
+/// The quad builder of the `transparency` scene (outside the library, compiled here too;
+/// only its `quad` is used).
+#[allow(dead_code)]
+#[path = "alpha_scene.rs"]
+mod scene;
+
 /// The quad (2 x 2 at z = -4, facing the camera) as alpha-shader vertices.
 fn quad() -> [[Vertex<3>; 3]; 2] {
-    let cam = demo::camera(200);
-    let mvp = cam
-        .projection
-        .mul(&cam.view)
-        .mul(&Mat4::translation(Vec3::from_num(0, 0, -4)));
-    let corner = |x: i32, y: i32, u: i32, v: i32| {
-        let c = mvp
-            .transform_point(Vec3::from_num(x, y, 0))
-            .unwrap_or(fixel::math::Vec4::new(
-                Fx::ZERO,
-                Fx::ZERO,
-                Fx::ZERO,
-                Fx::ONE,
-            ));
-        Vertex::new([c.x, c.y, c.z, c.w], [u << 16, v << 16, 256 << 16])
-    };
-    let (a, b, c, d) = (
-        corner(-1, -1, 0, 1),
-        corner(1, -1, 1, 1),
-        corner(1, 1, 1, 0),
-        corner(-1, 1, 0, 0),
-    );
-    [[a, b, c], [a, c, d]]
+    scene::quad(&Mat4::translation(Vec3::from_num(0, 0, -4)))
 }
 
 /// Draws the floor (`floor_tex`, `T(64, 64)`) opaque into `color`/`depth` (`W x H`).

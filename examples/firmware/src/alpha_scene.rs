@@ -54,7 +54,9 @@ pub fn window_alpha() -> [u8; (A * A) as usize] {
     })
 }
 
-fn quad(model: &Mat4) -> [[Vertex<3>; 3]; 2] {
+/// A 2 x 2 quad (uv 0..1, white) at `model` seen by the benchmark camera (far 200), as
+/// alpha-shader vertices.
+pub fn quad(model: &Mat4) -> [[Vertex<3>; 3]; 2] {
     let cam = demo::camera(200);
     let mvp = cam.projection.mul(&cam.view).mul(model);
     let v = |x: i32, y: i32, u: i32, t: i32| {
