@@ -8,12 +8,14 @@
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
 //! raw RGB565 `u16`. See each submodule for the exact formulas.
 
+mod height;
 pub(crate) mod mip;
 mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
 mod wrap;
 
+pub use height::{generate_height_mips, HeightMap};
 pub use mip::{
     chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,
     LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
