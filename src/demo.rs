@@ -255,4 +255,6 @@ mod tests {
     }
 }
 
+pub mod bricks;
 pub mod shadow;
+pub mod surface;

@@ -1,0 +1,215 @@
+//! Per-pixel lighting, bump and normal mapping against the f64 reference
+//! (`host_tests::reference::lighting`): error budgets per variant, the gain of per-pixel
+//! lighting over Gouraud on the highlight, and the hard cases of issue 14.
+
+use fixel::demo::surface;
+use fixel::math::{fx, Vec3};
+use fixel::scene::PixelLight;
+use host_tests::metrics::{compare, Report};
+use host_tests::surface_scene::{
+    render_fixel, render_reference, sphere, wall, Assets, MeshArrays, Variant, SIZE,
+};
+use proptest::prelude::*;
+
+const W: u32 = 160;
+const H: u32 = 160;
+
+/// Light frames in front of the sphere: front-left, front, and grazing from the left.
+const FRAMES: [u32; 3] = [0, 14, 2];
+
+fn run(v: Variant, i: u32, light: &PixelLight, a: &Assets, s: &MeshArrays) -> Report {
+    let (px, cov) = render_fixel(v, i, light, a, s, W, H);
+    let r = render_reference(v, i, light, a, s, W, H);
+    compare(&px, &cov, &r)
+}
+
+/// `(p99 max, share over 2 LSB max, PSNR min)` per variant.
+fn budget(v: Variant) -> (u32, f64, f64) {
+    match v {
+        // Gouraud is measured against the per-pixel ideal: no budget but coverage.
+        Variant::Gouraud => (u32::MAX, 1.0, 0.0),
+        Variant::PhongPlain | Variant::BlinnPlain | Variant::Textured => (1, 0.001, 38.0),
+        // Texel boundaries at the brick edges: a pixel whose centre falls on the other side
+        // of a step than the reference's gets the other slope.
+        Variant::BumpDerivatives | Variant::BumpHeights => (1, 0.005, 36.0),
+        // The normal map is filtered in RGB565: the blend is rounded to 5/6 bits per axis.
+        Variant::NormalMap => (3, 0.02, 35.0),
+    }
+}
+
+#[test]
+fn every_variant_within_its_budget() {
+    let a = Assets::new();
+    let s = sphere();
+    for v in Variant::ALL {
+        for i in FRAMES {
+            let rep = run(v, i, &surface::light(i), &a, &s);
+            println!("{:>18} light {i:>2}: {rep}", v.name());
+            let (p99, over2, psnr) = budget(v);
+            assert!(rep.only_candidate + rep.only_reference <= 8, "{v:?}: {rep}");
+            assert!(rep.p99 <= p99, "{v:?} light {i}: {rep}");
+            assert!(rep.share_over_2 <= over2, "{v:?} light {i}: {rep}");
+            assert!(rep.psnr_db >= psnr, "{v:?} light {i}: {rep}");
+        }
+    }
+}
+
+#[test]
+fn per_pixel_lighting_keeps_the_highlight_gouraud_loses() {
+    let a = Assets::new();
+    let s = sphere();
+    let light = surface::light(0);
+    let g = run(Variant::Gouraud, 0, &light, &a, &s);
+    let p = run(Variant::BlinnPlain, 0, &light, &a, &s);
+    println!("gouraud {g}\nblinn   {p}");
+    assert!(g.max >= 4 * p.max.max(1), "gouraud {g} vs per-pixel {p}");
+    assert!(g.psnr_db + 3.0 < p.psnr_db, "gouraud {g} vs per-pixel {p}");
+}
+
+#[test]
+fn specular_exponents_1_to_128() {
+    let s = sphere();
+    for e in [1u8, 2, 8, 32, 64, 128] {
+        let mut a = Assets::new();
+        a.exponent = e;
+        for v in [Variant::PhongPlain, Variant::BlinnPlain] {
+            let rep = run(v, 0, &surface::light(0), &a, &s);
+            println!("e = {e:>3} {:>6}: {rep}", v.name());
+            // At e = 1 the highlight is still bright where n·l crosses 0, where the model
+            // cuts it: a pixel on either side of the terminator may differ.
+            assert!(
+                rep.p99 <= 1 && rep.share_over_2 <= 0.0005,
+                "e = {e} {v:?}: {rep}"
+            );
+        }
+    }
+}
+
+#[test]
+fn light_exactly_along_the_normal() {
+    let a = Assets::new();
+    let s = wall([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+    // Along the wall's normal (view +z) for a directional light, and straight in front of
+    // the centre for a point light: n·l = 1, and the Blinn highlight peaks where h = n.
+    for light in [
+        PixelLight::directional(Vec3::from_num(0, 0, 1)).unwrap(),
+        PixelLight::point(Vec3::from_num(0, 0, -1)).unwrap(),
+    ] {
+        for v in [
+            Variant::BlinnPlain,
+            Variant::PhongPlain,
+            Variant::BumpHeights,
+        ] {
+            let rep = run(v, 0, &light, &a, &s);
+            println!("{light:?} {:>12}: {rep}", v.name());
+            assert!(
+                rep.p99 <= 1 && rep.psnr_db >= 36.0,
+                "{light:?} {v:?}: {rep}"
+            );
+        }
+        let (px, _) = render_fixel(Variant::BlinnPlain, 0, &light, &a, &s, W, H);
+        // The centre is full diffuse plus the full highlight: saturated white.
+        assert_eq!(px[(H / 2 * W + W / 2) as usize], 0xFFFF, "{light:?}");
+    }
+}
+
+#[test]
+fn mirrored_and_collapsed_uvs() {
+    let a = Assets::new();
+    let light = PixelLight::point(Vec3::from_num(-1.5, 1, -2)).unwrap();
+    let cases = [
+        ("normal", [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]),
+        (
+            "mirrored u",
+            [[2.0, 0.0], [0.0, 0.0], [0.0, 2.0], [2.0, 2.0]],
+        ),
+        (
+            "mirrored v",
+            [[0.0, 2.0], [2.0, 2.0], [2.0, 0.0], [0.0, 0.0]],
+        ),
+        (
+            "v collapsed",
+            [[0.0, 0.5], [2.0, 0.5], [2.0, 0.5], [0.0, 0.5]],
+        ),
+        ("all collapsed", [[0.3, 0.3]; 4]),
+    ];
+    for (name, uv) in cases {
+        let s = wall(uv);
+        for v in [
+            Variant::BumpDerivatives,
+            Variant::BumpHeights,
+            Variant::NormalMap,
+        ] {
+            let rep = run(v, 0, &light, &a, &s);
+            println!("{name:>14} {:>16}: {rep}", v.name());
+            let (p99, over2, psnr) = budget(v);
+            // Collapsed uvs magnify one row (or one texel) over the whole wall: the normal
+            // map's RGB565 blend error is then everywhere instead of at a few pixels.
+            let slack = if name.contains("collapsed") { 1 } else { 0 };
+            assert!(rep.p99 <= p99 + slack, "{name} {v:?}: {rep}");
+            assert!(
+                rep.share_over_2 <= over2 * f64::from(1 + 3 * slack),
+                "{name} {v:?}: {rep}"
+            );
+            assert!(rep.psnr_db >= psnr - 4.0, "{name} {v:?}: {rep}");
+        }
+    }
+}
+
+#[test]
+fn steep_steps_and_normals_past_the_horizon() {
+    // A 0/255 checker of 4-texel squares: every step is the steepest an 8-bit map has.
+    let steps: Vec<u8> = (0..SIZE * SIZE)
+        .map(|k| {
+            if ((k % SIZE) / 4 + (k / SIZE) / 4).is_multiple_of(2) {
+                0
+            } else {
+                255
+            }
+        })
+        .collect();
+    let s = sphere();
+    for strength in [0.02, 0.5, 8.0] {
+        // 8 steps per texel width: the perturbed normals at the steps point far past the
+        // horizon of the light (n·l < 0): ambient only there, never a highlight.
+        let a = Assets::with_heights(&steps, strength);
+        for i in [0u32, 2] {
+            for v in [
+                Variant::BumpDerivatives,
+                Variant::BumpHeights,
+                Variant::NormalMap,
+            ] {
+                let rep = run(v, i, &surface::light(i), &a, &s);
+                println!("strength {strength:>4} light {i} {:>16}: {rep}", v.name());
+                assert!(rep.only_candidate + rep.only_reference <= 8, "{v:?}: {rep}");
+                // Derivative maps quantise the steepest slope to 127 levels; normal maps
+                // to RGB565: bounded, not exact.
+                let p99 = if strength > 1.0 { 12 } else { 6 };
+                assert!(rep.p99 <= p99, "strength {strength} {v:?}: {rep}");
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    /// Any point light in front of the sphere, any moderate strength: the per-pixel
+    /// variants stay within their budgets.
+    #[test]
+    fn any_light_and_strength(
+        lx in -4.0f64..4.0, ly in -4.0f64..4.0, lz in -3.0f64..0.0,
+        strength in 0.0f64..0.05,
+    ) {
+        let mut heights = vec![0u8; (SIZE * SIZE) as usize];
+        fixel::demo::bricks::brick_heights(SIZE, &mut heights).unwrap();
+        let a = Assets::with_heights(&heights, strength);
+        let s = sphere();
+        let light = PixelLight::point(Vec3::new(fx(lx), fx(ly), fx(lz))).unwrap();
+        for v in [Variant::BlinnPlain, Variant::BumpHeights, Variant::NormalMap] {
+            let rep = run(v, 0, &light, &a, &s);
+            let (p99, _, _) = budget(v);
+            prop_assert!(rep.p99 <= p99 + 1, "{:?} {}", v, rep);
+        }
+    }
+}
