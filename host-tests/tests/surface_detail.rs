@@ -213,3 +213,19 @@ proptest! {
         }
     }
 }
+
+/// Golden images of every variant (light 0) and of the derivative-mapped sphere under the
+/// grazing light: bit for bit, so any change to the per-pixel arithmetic shows. Bless with
+/// `FIXEL_BLESS=1 cargo test --release -p host-tests --test surface_detail goldens` (and
+/// look at the images in `host-tests/golden/`).
+#[test]
+fn goldens() {
+    let a = Assets::new();
+    let s = sphere();
+    for v in Variant::ALL {
+        let (px, _) = render_fixel(v, 0, &surface::light(0), &a, &s, W, H);
+        host_tests::golden::assert_golden(&format!("surface_{}", v.name()), W, H, &px);
+    }
+    let (px, _) = render_fixel(Variant::BumpDerivatives, 0, &surface::light(2), &a, &s, W, H);
+    host_tests::golden::assert_golden("surface_bump_grazing", W, H, &px);
+}
