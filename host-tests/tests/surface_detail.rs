@@ -226,6 +226,14 @@ fn goldens() {
         let (px, _) = render_fixel(v, 0, &surface::light(0), &a, &s, W, H);
         host_tests::golden::assert_golden(&format!("surface_{}", v.name()), W, H, &px);
     }
-    let (px, _) = render_fixel(Variant::BumpDerivatives, 0, &surface::light(2), &a, &s, W, H);
+    let (px, _) = render_fixel(
+        Variant::BumpDerivatives,
+        0,
+        &surface::light(2),
+        &a,
+        &s,
+        W,
+        H,
+    );
     host_tests::golden::assert_golden("surface_bump_grazing", W, H, &px);
 }

@@ -119,46 +119,146 @@ impl<'a> LitMesh<'a> {
         })
     }
 
-    /// Calls `emit` for every triangle whose three vertices transform without overflow.
-    fn each<const N: usize>(
-        &self,
+    /// The vertex builder shared by the triangle and vertex-array entry points: `vary`
+    /// turns a view-space vertex into the varyings.
+    fn builder<'s, const N: usize>(
+        &'s self,
         model: &Mat4,
         camera: &Camera,
-        light: &PixelLight,
-        mut vary: impl FnMut(usize, &ViewVertex) -> [i32; N],
-        mut emit: impl FnMut(&[Vertex<N>; 3]),
-    ) {
+        light: &'s PixelLight,
+        vary: impl Fn(usize, &ViewVertex) -> [i32; N] + 's,
+    ) -> impl Fn(usize) -> Option<Vertex<N>> + 's {
         let mv = camera.view.mul(model);
         let mvp = camera.projection.mul(&mv);
-        let vertex = |i: u16| -> Option<ViewVertex> {
-            let i = usize::from(i);
+        move |i: usize| {
             let p = *self.positions.get(i)?;
             let c = mvp.transform_point(p)?;
             let pv = mv.transform_point(p)?;
             let n = mv.transform_vector(*self.normals.get(i)?)?;
             let uv = self.uvs.get(i)?;
-            Some(ViewVertex {
+            let v = ViewVertex {
                 clip: [c.x, c.y, c.z, c.w],
                 uv: [uv[0].to_bits(), uv[1].to_bits()],
                 n: n.normalize().unwrap_or(Vec3::ZERO),
                 light: light.towards(Vec3::new(pv.x, pv.y, pv.z)),
-            })
-        };
+            };
+            Some(Vertex::new(v.clip, vary(i, &v)))
+        }
+    }
+
+    /// Calls `emit` for every triangle whose three vertices transform without overflow,
+    /// building each corner from scratch (no storage).
+    fn each<const N: usize>(
+        &self,
+        vertex: impl Fn(usize) -> Option<Vertex<N>>,
+        mut emit: impl FnMut(&[Vertex<N>; 3]),
+    ) {
         for tri in self.indices {
-            if let (Some(a), Some(b), Some(c)) = (vertex(tri[0]), vertex(tri[1]), vertex(tri[2])) {
-                let out = [
-                    (usize::from(tri[0]), a),
-                    (usize::from(tri[1]), b),
-                    (usize::from(tri[2]), c),
-                ]
-                .map(|(i, v)| Vertex::new(v.clip, vary(i, &v)));
-                emit(&out);
+            let v = |k: usize| vertex(usize::from(tri[k]));
+            if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+                emit(&[a, b, c]);
             }
         }
     }
 
+    /// Fills `out` (one per position) with every vertex, each built once; a vertex that
+    /// overflows gets `w = 0` and [`LitMesh::indexed`] skips its triangles. Returns how many
+    /// overflowed.
+    fn fill<const N: usize>(
+        &self,
+        vertex: impl Fn(usize) -> Option<Vertex<N>>,
+        out: &mut [Vertex<N>],
+    ) -> Result<usize, Error> {
+        if out.len() != self.positions.len() {
+            return Err(Error::WrongLength {
+                expected: self.positions.len(),
+                actual: out.len(),
+            });
+        }
+        let mut failed = 0;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = vertex(i).unwrap_or_else(|| {
+                failed += 1;
+                Vertex::new([Fx::ZERO; 4], [0; N])
+            });
+        }
+        Ok(failed)
+    }
+
+    /// Calls `emit` with each triangle of the mesh over `vertices` (from one of the
+    /// `*_vertices` functions), skipping triangles with an overflowed vertex (`w = 0`) or an
+    /// index past `vertices`.
+    pub fn indexed<const N: usize>(
+        &self,
+        vertices: &[Vertex<N>],
+        mut emit: impl FnMut(&[Vertex<N>; 3]),
+    ) {
+        for tri in self.indices {
+            let v = |k: usize| {
+                vertices
+                    .get(usize::from(tri[k]))
+                    .filter(|v| v.position[3] != Fx::ZERO)
+                    .copied()
+            };
+            if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+                emit(&[a, b, c]);
+            }
+        }
+    }
+
+    fn phong_vary(_: usize, v: &ViewVertex) -> [i32; 8] {
+        let n = q24(v.n);
+        let l = v.light.map(fit);
+        [v.uv[0], v.uv[1], n[0], n[1], n[2], l[0], l[1], l[2]]
+    }
+
+    fn bump_vary(&self, mv: &Mat4, i: usize, v: &ViewVertex) -> [i32; 8] {
+        let tan = self.tangents.and_then(|t| t.get(i)).copied();
+        let t = tan
+            .and_then(|t| mv.transform_vector(t.direction))
+            .and_then(|t| orthogonalize(t, v.n))
+            .unwrap_or_else(|| any_orthogonal(v.n));
+        let c = v.n.cross(t);
+        let b = match tan {
+            Some(t) if t.handedness < 0 => Vec3::new(-c.x, -c.y, -c.z),
+            _ => c,
+        };
+        let dot = |a: Vec3| {
+            let f = [a.x, a.y, a.z].map(|x| i64::from(x.to_bits()));
+            fit((v.light[0] * f[0] + v.light[1] * f[1] + v.light[2] * f[2]) >> 16)
+        };
+        let z = |a: Vec3| fit(i64::from(a.z.to_bits()) << 8);
+        [
+            v.uv[0],
+            v.uv[1],
+            dot(t),
+            dot(b),
+            dot(v.n),
+            z(t),
+            z(b),
+            z(v.n),
+        ]
+    }
+
+    fn gouraud_vary(material: &Material<'_>, base: u16, v: &ViewVertex) -> [i32; 3] {
+        let ch = [
+            (u32::from(base >> 11) * 256 + 15) / 31,
+            (u32::from((base >> 5) & 63) * 256 + 31) / 63,
+            (u32::from(base & 31) * 256 + 15) / 31,
+        ];
+        let n = unit_q14(q24(v.n));
+        let l = unit_q14(v.light.map(fit));
+        let (i, s) = material.light(n, l, VIEW_Z);
+        ch.map(|c| {
+            let x = ((c * u32::from(i) + 128) >> 8) + u32::from(s);
+            (x.min(u32::from(COLOR_ONE)) << 16) as i32
+        })
+    }
+
     /// Triangles for [`Phong`](crate::shading::lighting::Phong): varyings
-    /// `u, v, n (Q24), light vector`.
+    /// `u, v, n (Q24), light vector`. Each corner is built from scratch: use
+    /// [`LitMesh::phong_vertices`] and [`LitMesh::indexed`] when RAM allows one
+    /// [`Vertex`] (48 bytes) per mesh vertex.
     pub fn phong_triangles(
         &self,
         model: &Mat4,
@@ -166,17 +266,22 @@ impl<'a> LitMesh<'a> {
         light: &PixelLight,
         emit: impl FnMut(&[Vertex<8>; 3]),
     ) {
-        self.each(
-            model,
-            camera,
-            light,
-            |_, v| {
-                let n = q24(v.n);
-                let l = v.light.map(fit);
-                [v.uv[0], v.uv[1], n[0], n[1], n[2], l[0], l[1], l[2]]
-            },
-            emit,
-        );
+        self.each(self.builder(model, camera, light, Self::phong_vary), emit);
+    }
+
+    /// [`LitMesh::phong_triangles`]' vertices, each built once, into `out` (one per
+    /// position); returns how many overflowed (see [`LitMesh::indexed`]).
+    ///
+    /// # Errors
+    /// [`Error::WrongLength`] when `out` is not one per position.
+    pub fn phong_vertices(
+        &self,
+        model: &Mat4,
+        camera: &Camera,
+        light: &PixelLight,
+        out: &mut [Vertex<8>],
+    ) -> Result<usize, Error> {
+        self.fill(self.builder(model, camera, light, Self::phong_vary), out)
     }
 
     /// Triangles for the bump shaders ([`crate::shading::bump`]): varyings `u, v`, the light
@@ -193,40 +298,28 @@ impl<'a> LitMesh<'a> {
     ) {
         let mv = camera.view.mul(model);
         self.each(
-            model,
-            camera,
-            light,
-            |i, v| {
-                let tan = self.tangents.and_then(|t| t.get(i)).copied();
-                let t = tan
-                    .and_then(|t| mv.transform_vector(t.direction))
-                    .and_then(|t| orthogonalize(t, v.n))
-                    .unwrap_or_else(|| any_orthogonal(v.n));
-                let sign = tan.map_or(1, |t| if t.handedness < 0 { -1 } else { 1 });
-                let c = v.n.cross(t);
-                let b = if sign < 0 {
-                    Vec3::new(-c.x, -c.y, -c.z)
-                } else {
-                    c
-                };
-                let dot = |a: Vec3| {
-                    let f = [a.x, a.y, a.z].map(|x| i64::from(x.to_bits()));
-                    fit((v.light[0] * f[0] + v.light[1] * f[1] + v.light[2] * f[2]) >> 16)
-                };
-                let z = |a: Vec3| fit(i64::from(a.z.to_bits()) << 8);
-                [
-                    v.uv[0],
-                    v.uv[1],
-                    dot(t),
-                    dot(b),
-                    dot(v.n),
-                    z(t),
-                    z(b),
-                    z(v.n),
-                ]
-            },
+            self.builder(model, camera, light, move |i, v| self.bump_vary(&mv, i, v)),
             emit,
         );
+    }
+
+    /// [`LitMesh::bump_triangles`]' vertices, each built once, into `out` (one per
+    /// position); returns how many overflowed (see [`LitMesh::indexed`]).
+    ///
+    /// # Errors
+    /// [`Error::WrongLength`] when `out` is not one per position.
+    pub fn bump_vertices(
+        &self,
+        model: &Mat4,
+        camera: &Camera,
+        light: &PixelLight,
+        out: &mut [Vertex<8>],
+    ) -> Result<usize, Error> {
+        let mv = camera.view.mul(model);
+        self.fill(
+            self.builder(model, camera, light, move |i, v| self.bump_vary(&mv, i, v)),
+            out,
+        )
     }
 
     /// Triangles for the built-in [`Gouraud`](crate::shading::Gouraud) shader: the same
@@ -241,25 +334,35 @@ impl<'a> LitMesh<'a> {
         base: u16,
         emit: impl FnMut(&[Vertex<3>; 3]),
     ) {
-        let ch = [
-            (u32::from(base >> 11) * 256 + 15) / 31,
-            (u32::from((base >> 5) & 63) * 256 + 31) / 63,
-            (u32::from(base & 31) * 256 + 15) / 31,
-        ];
+        let m = *material;
         self.each(
-            model,
-            camera,
-            light,
-            |_, v| {
-                let n = unit_q14(q24(v.n));
-                let l = unit_q14(v.light.map(fit));
-                let (i, s) = material.light(n, l, VIEW_Z);
-                ch.map(|c| {
-                    let x = ((c * u32::from(i) + 128) >> 8) + u32::from(s);
-                    (x.min(u32::from(COLOR_ONE)) << 16) as i32
-                })
-            },
+            self.builder(model, camera, light, move |_, v| {
+                Self::gouraud_vary(&m, base, v)
+            }),
             emit,
         );
+    }
+
+    /// [`LitMesh::gouraud_triangles`]' vertices, each built once, into `out` (one per
+    /// position); returns how many overflowed (see [`LitMesh::indexed`]).
+    ///
+    /// # Errors
+    /// [`Error::WrongLength`] when `out` is not one per position.
+    pub fn gouraud_vertices(
+        &self,
+        model: &Mat4,
+        camera: &Camera,
+        light: &PixelLight,
+        material: &Material<'_>,
+        base: u16,
+        out: &mut [Vertex<3>],
+    ) -> Result<usize, Error> {
+        let m = *material;
+        self.fill(
+            self.builder(model, camera, light, move |_, v| {
+                Self::gouraud_vary(&m, base, v)
+            }),
+            out,
+        )
     }
 }

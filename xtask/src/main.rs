@@ -919,6 +919,12 @@ fn report(flags: &[String]) -> ExitCode {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }
+    // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
+    args[6] = "surface_report";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
     if docs {
         let dst = root().join("docs").join("report");
         let copied = std::fs::create_dir_all(&dst).and_then(|()| {
