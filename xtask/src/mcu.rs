@@ -182,7 +182,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 9] = [
+const SIZES: [(&str, &str); 10] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -197,6 +197,10 @@ const SIZES: [(&str, &str); 9] = [
     (
         "size_env",
         "depth-tested cube-map mirror (per-pixel r, bilinear, exact)",
+    ),
+    (
+        "size_bump",
+        "bump-mapped, per-pixel lit (derivative map, Blinn-Phong, bilinear, exact, depth)",
     ),
 ];
 
