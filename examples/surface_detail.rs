@@ -3,9 +3,9 @@
 //!
 //! * `lighting.png`: one plain sphere lit per vertex (Gouraud), per pixel with Phong, and
 //!   per pixel with Blinn-Phong: the highlight's shape.
-//! * `bump.png`: the brick sphere with Phong lighting only, bump-mapped from precomputed
-//!   derivatives, bump-mapped from the height map per pixel, and normal-mapped; below, the
-//!   derivative-mapped sphere as the light circles it.
+//! * `bump.png`: the brick sphere lit per vertex (texture times the Gouraud colour), per
+//!   pixel, bump-mapped from precomputed derivatives, and normal-mapped; below, a brick
+//!   wall bump-mapped from its height map as a point light passes over it.
 //!
 //! `cargo run --release --example surface_detail` (pictures in `target/pictures/`).
 
@@ -16,14 +16,14 @@ use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565, RgbColor};
 use fixel::demo::bricks::{brick_colours, brick_heights};
 use fixel::demo::surface;
 use fixel::geometry::{Cull, Vertex, Viewport};
-use fixel::math::fx;
+use fixel::math::{fx, Angle, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
-use fixel::scene::LitMesh;
+use fixel::scene::{tangents, LitMesh, PixelLight, Tangent};
 use fixel::shading::bump::{
     derivative_map, normal_map, Bumped, DerivativeMap, HeightDifferences, NormalMap, TangentNormals,
 };
 use fixel::shading::lighting::{Phong, Specular};
-use fixel::shading::{Gouraud, Shader, TexBinding};
+use fixel::shading::{Gouraud, Modulate, Shader, TexBinding};
 use fixel::surface::Frame;
 use fixel::texture::{
     chain_len, full_levels, generate_height_mips, generate_mips, HeightMap, Lod, MipTexture,
@@ -46,12 +46,12 @@ fn draw<S: Shader<Varyings = [i32; N]>, const N: usize>(
 }
 
 fn main() -> Result<(), Error> {
-    let (sphere, tangents) = surface::sphere()?;
+    let (sphere, sphere_tangents) = surface::sphere()?;
     let mesh = LitMesh::new(
         &sphere.positions,
         &sphere.normals,
         &sphere.uvs,
-        Some(&tangents),
+        Some(&sphere_tangents),
         &sphere.indices,
     )?;
     let camera = surface::camera()?;
@@ -122,12 +122,30 @@ fn main() -> Result<(), Error> {
     common::write_png(&path, w, h, &px);
     println!("wrote {}", path.display());
 
-    // bump.png: four ways on the top row, the light circling on the bottom row.
+    // bump.png, top row: the brick sphere lit per vertex (texture x Gouraud colour), per
+    // pixel, bump-mapped from the derivative map and normal-mapped.
     let (w, h) = (4 * PANEL, 2 * PANEL);
     let mut px = vec![Rgb565::BLACK; (w * h) as usize];
     let mut depth = vec![0xFFFFu16; (w * h) as usize];
     let mut frame = Frame::new(&mut px, w, h)?.with_depth(&mut depth)?;
     frame.clear(Rgb565::new(3, 6, 5));
+    let nv = sphere.positions.len();
+    let mut lit = vec![Vertex::new([fx(0); 4], [0; 8]); nv];
+    let mut col = vec![Vertex::new([fx(0); 4], [0; 3]); nv];
+    mesh.phong_vertices(&model, &camera, &light, &mut lit)?;
+    mesh.gouraud_vertices(&model, &camera, &light, &blinn, 0xFFFF, &mut col)?;
+    let classic: Vec<Vertex<5>> = lit
+        .iter()
+        .zip(&col)
+        .map(|(l, c)| {
+            let [u, v, ..] = l.varyings;
+            let [r, g, b] = c.varyings;
+            Vertex::new(l.position, [u, v, r, g, b])
+        })
+        .collect();
+    let mut tris5 = Vec::new();
+    mesh.indexed(&classic, |t| tris5.push(*t));
+    draw(Modulate { tex }, &tris5, &mut frame, (0, 0))?;
     draw(
         Phong {
             tex,
@@ -135,7 +153,7 @@ fn main() -> Result<(), Error> {
         },
         &tris,
         &mut frame,
-        (0, 0),
+        (1, 0),
     )?;
     let mut bump = Vec::new();
     mesh.bump_triangles(&model, &camera, &light, |t| bump.push(*t));
@@ -147,15 +165,7 @@ fn main() -> Result<(), Error> {
         lod,
     )?;
     let dmap = DerivativeMap::new(dbind, scale, strength)?;
-    bumped(tex, dmap, size, &bump, &mut frame, (1, 0))?;
-    bumped(
-        tex,
-        HeightDifferences::new(hmap, strength)?,
-        size,
-        &bump,
-        &mut frame,
-        (2, 0),
-    )?;
+    bumped(tex, dmap, size, &bump, &mut frame, (2, 0))?;
     let nbind = TexBinding::new(&normal_chain, Trilinear::default(), Repeat, Repeat, lod)?;
     bumped(
         tex,
@@ -165,16 +175,34 @@ fn main() -> Result<(), Error> {
         &mut frame,
         (3, 0),
     )?;
-    for (k, i) in [2u32, 0, 14, 12].into_iter().enumerate() {
-        let k = k as u32;
+    // Bottom row: a brick wall, turned 30 degrees, bump-mapped, as a point light passes
+    // over it from left to right (the per-pixel height differences here).
+    let wall_p = [
+        Vec3::from_num(-1.6, 1.6, 0),
+        Vec3::from_num(1.6, 1.6, 0),
+        Vec3::from_num(1.6, -1.6, 0),
+        Vec3::from_num(-1.6, -1.6, 0),
+    ];
+    let wall_n = [Vec3::from_num(0, 0, 1); 4];
+    let wall_uv = [
+        [fx(0), fx(0)],
+        [fx(1), fx(0)],
+        [fx(1), fx(1)],
+        [fx(0), fx(1)],
+    ];
+    let wall_i = [[0u16, 3, 2], [0, 2, 1]];
+    let mut wall_t = [Tangent::default(); 4];
+    tangents(&wall_p, &wall_n, &wall_uv, &wall_i, &mut wall_t)?;
+    let wall = LitMesh::new(&wall_p, &wall_n, &wall_uv, Some(&wall_t), &wall_i)?;
+    let wall_model = Mat4::translation(Vec3::from_num(0, 0, -5.6))
+        * Mat4::rotation_y(Angle::from_degrees(fx(-30)));
+    for k in 0..4u32 {
+        let x = -2.4 + 1.6 * f64::from(k);
+        let light = PixelLight::point(Vec3::from_num(x, 0.6, -4.2))?;
         let mut tris = Vec::new();
-        mesh.bump_triangles(
-            &surface::sphere_model(0),
-            &camera,
-            &surface::light(i),
-            |t| tris.push(*t),
-        );
-        bumped(tex, dmap, size, &tris, &mut frame, (k, 1))?;
+        wall.bump_triangles(&wall_model, &camera, &light, |t| tris.push(*t));
+        let heights = HeightDifferences::new(hmap, fx(0.03))?;
+        bumped(tex, heights, size, &tris, &mut frame, (k, 1))?;
     }
     let path = common::out_dir().join("bump.png");
     common::write_png(&path, w, h, &px);

@@ -30,7 +30,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 10] = [
+const RENDER_EXAMPLES: [&str; 11] = [
     "showcase",
     "scenes",
     "preview",
@@ -41,6 +41,7 @@ const RENDER_EXAMPLES: [&str; 10] = [
     "quads",
     "antialias",
     "transparency",
+    "surface_detail",
 ];
 
 const HELP: &str = "\
