@@ -237,3 +237,89 @@ fn goldens() {
     );
     host_tests::golden::assert_golden("surface_bump_grazing", W, H, &px);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Drawing never panics: any clip-space triangle with any varyings (extreme values
+    /// included) through the Phong and bump shaders.
+    #[test]
+    fn drawing_never_panics(
+        pos in proptest::collection::vec(-40_000i32..40_000, 12),
+        vary in proptest::collection::vec(any::<i32>(), 24),
+    ) {
+        use fixel::geometry::{Cull, Vertex, Viewport};
+        use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+        use fixel::shading::bump::{Bumped, HeightDifferences, NormalMap};
+        use fixel::shading::lighting::{Phong, Specular};
+        use fixel::shading::TexBinding;
+        use fixel::surface::Frame;
+        use fixel::texture::{Bilinear, HeightMap, Lod, MipTexture, Repeat, Texture, Trilinear};
+        use fixel::Rgb565;
+        let a = Assets::new();
+        let tri: [Vertex<8>; 3] = core::array::from_fn(|k| {
+            let p: [fixel::math::Fx; 4] = core::array::from_fn(|c| {
+                fixel::math::Fx::from_bits(pos[4 * k + c].wrapping_mul(64))
+            });
+            Vertex::new(p, core::array::from_fn(|c| vary[(8 * k + c) % 24]))
+        });
+        let (w, h) = (48u32, 40u32);
+        let mut px = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+        let mut d = vec![0xFFFFu16; (w * h) as usize];
+        let mut frame = Frame::new(&mut px, w, h).unwrap().with_depth(&mut d).unwrap();
+        let vp = Viewport::new(0, 0, w, h).unwrap();
+        let chain = MipTexture::single(Texture::new(&a.colours, SIZE, SIZE).unwrap());
+        let tex = TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
+        let m = host_tests::surface_scene::material(Specular::Phong, 64);
+        ShadedDraw::<_, Exact, DepthLess>::new(Phong { tex, material: m }, vp, Cull::None)
+            .unwrap()
+            .clip_triangles(&[tri], &mut frame)
+            .unwrap();
+        let map = HeightMap::new(&a.heights, SIZE, SIZE, a.levels).unwrap();
+        let n = HeightDifferences::new(map, fx(31.0)).unwrap();
+        let s = Bumped::new(tex, n, (SIZE, SIZE), m).unwrap();
+        ShadedDraw::<_, Exact, DepthLess>::new(s, vp, Cull::None)
+            .unwrap()
+            .clip_triangles(&[tri], &mut frame)
+            .unwrap();
+        let nchain = MipTexture::new(&a.derivs, SIZE, SIZE, a.levels).unwrap();
+        let nb = TexBinding::new(&nchain, Trilinear::default(), Repeat, Repeat, Lod::default()).unwrap();
+        let s = Bumped::new(tex, NormalMap { map: nb }, (SIZE, SIZE), m).unwrap();
+        ShadedDraw::<_, Exact, DepthLess>::new(s, vp, Cull::None)
+            .unwrap()
+            .clip_triangles(&[tri], &mut frame)
+            .unwrap();
+    }
+}
+
+#[test]
+fn bad_input_is_refused() {
+    use fixel::shading::bump::{Bumped, DerivativeMap, HeightDifferences};
+    use fixel::shading::lighting::{Material, Specular, SpecularTable};
+    use fixel::shading::TexBinding;
+    use fixel::texture::{HeightMap, Lod, MipTexture, Nearest, Repeat, Texture};
+    let a = Assets::new();
+    assert!(SpecularTable::new(0).is_err() && SpecularTable::new(129).is_err());
+    let t = SpecularTable::new(8).unwrap();
+    assert!(Material::new(257, 0, 0, Specular::Blinn, &t).is_err());
+    let map = HeightMap::new(&a.heights, SIZE, SIZE, a.levels).unwrap();
+    assert!(HeightDifferences::new(map, fx(32.0)).is_err());
+    let chain = MipTexture::new(&a.derivs, SIZE, SIZE, a.levels).unwrap();
+    let b = TexBinding::new(&chain, Nearest, Repeat, Repeat, Lod::default()).unwrap();
+    assert!(DerivativeMap::new(b, fx(1.0), fx(200.0)).is_err());
+    // A colour texture of another size than the normal source.
+    let small = [fixel::Rgb565::new(0, 0, 0); 16];
+    let sc = MipTexture::single(Texture::new(&small, 4, 4).unwrap());
+    let tex = TexBinding::new(&sc, Nearest, Repeat, Repeat, Lod::default()).unwrap();
+    let n = HeightDifferences::new(map, fx(0.02)).unwrap();
+    let m = Material::new(64, 128, 128, Specular::Blinn, &t).unwrap();
+    let e = Bumped::new(tex, n, (SIZE, SIZE), m).err();
+    assert!(format!("{e:?}").contains("colour texture's size"), "{e:?}");
+    assert!(PixelLight::directional(Vec3::ZERO).is_err());
+    let s = sphere();
+    let short = &s.tangents[..3];
+    assert!(
+        fixel::scene::LitMesh::new(&s.positions, &s.normals, &s.uvs, Some(short), &s.indices)
+            .is_err()
+    );
+}
