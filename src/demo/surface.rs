@@ -40,8 +40,8 @@ pub fn sphere() -> Result<
 > {
     let mut m = uv_sphere::<SPHERE_VERTICES, SPHERE_TRIANGLES>(24, 48);
     for uv in m.uvs.iter_mut() {
-        uv[0] = uv[0].saturating_mul(Fx::from_num(4));
-        uv[1] = uv[1].saturating_mul(Fx::from_num(2));
+        uv[0] = uv[0].saturating_mul(Fx::from_bits(4 << 16));
+        uv[1] = uv[1].saturating_mul(Fx::from_bits(2 << 16));
     }
     let mut t = [Tangent::default(); SPHERE_VERTICES];
     tangents(&m.positions, &m.normals, &m.uvs, &m.indices, &mut t)?;
@@ -50,7 +50,7 @@ pub fn sphere() -> Result<
 
 /// Model matrix of frame `i`: `T(0, 0, −5) · Rx(0.3) · Ry(i / 64 turn)`.
 pub fn sphere_model(i: u32) -> Mat4 {
-    Mat4::translation(Vec3::from_num(0, 0, -5))
+    Mat4::translation(Vec3::from_bits(0, 0, -5 << 16))
         * Mat4::rotation_x(Angle(3130))
         * Mat4::rotation_y(Angle((i.wrapping_mul(1024)) as u16))
 }
@@ -61,7 +61,7 @@ pub fn camera() -> Result<Camera, Error> {
         Angle(8192),
         Fx::ONE,
         Fx::from_bits(1 << 15),
-        Fx::from_num(20),
+        Fx::from_bits(20 << 16),
     )
 }
 
@@ -69,11 +69,15 @@ pub fn camera() -> Result<Camera, Error> {
 /// `1/16` turn per frame, starting up and to the left of the camera.
 pub fn light(i: u32) -> PixelLight {
     let a = Angle((i.wrapping_mul(4096) as u16).wrapping_add(22938));
-    let (s, c) = (a.sin(), a.cos());
-    let r = Fx::from_num(3.5);
+    // Integer products of raw bits (3.5 = 7 << 15): the RV32IMC build computed this light
+    // wrongly through `Fx::saturating_mul` once inlined into the `bump` firmware (see the
+    // session notes); plain i64 products give every target the host's value.
+    let (s, c) = (i64::from(a.sin().to_bits()), i64::from(a.cos().to_bits()));
+    let r = 7i64 << 15;
+    let bits = |v: i64| Fx::from_bits(v as i32);
     PixelLight::Point(Vec3::new(
-        r.saturating_mul(c),
-        Fx::from_num(1.5),
-        Fx::from_num(-5).saturating_add(r.saturating_mul(s)),
+        bits((r * c) >> 16),
+        bits(3 << 15), // 1.5
+        bits((-5i64 << 16) + ((r * s) >> 16)),
     ))
 }
