@@ -48,6 +48,12 @@ pub use jitter::{jittered, SamplePattern};
 mod shadow;
 mod two_stage;
 mod uv_gen;
+mod displace;
+mod subdivide;
+pub use displace::{displace, displace_positions, recompute_normals, Displacement};
+pub use subdivide::{
+    count_edges, subdivide, subdivide_capacity, weld, weld_table_words, SubdivideCapacity,
+};
 pub use quad::{draw_quad, quad_triangles};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
 pub use two_stage::{Intermediate, OMapping, ReadyTwoStage, TwoStage};
