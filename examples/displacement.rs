@@ -57,7 +57,10 @@ struct Base {
 }
 
 impl Base {
-    fn new<const V: usize, const T: usize>(src: &MeshData<V, T>, levels: u32) -> Result<Self, Error> {
+    fn new<const V: usize, const T: usize>(
+        src: &MeshData<V, T>,
+        levels: u32,
+    ) -> Result<Self, Error> {
         let mut table = vec![0u32; 2 * (6 * T + 64)];
         let edges = count_edges(&src.indices, &mut table)?;
         let cap = subdivide_capacity(V, T, edges, levels);
@@ -89,7 +92,12 @@ impl Base {
     }
 
     fn mesh(&self) -> Result<Mesh<'_>, Error> {
-        Mesh::new(&self.positions, Some(&self.normals), &self.uvs, &self.indices)
+        Mesh::new(
+            &self.positions,
+            Some(&self.normals),
+            &self.uvs,
+            &self.indices,
+        )
     }
 }
 

@@ -35,14 +35,17 @@
 //! vertex). `cargo xtask mcu` scene `water` gives the Cortex-M figures (see the README).
 //!
 //! # Fixed point and error
-//! Heights are Q8.8 from [`HeightMap::bilinear`] (whose texel fraction is 8 bits: within
-//! `(2 Δh + 0.5) / 65536` of the exact bilinear fraction, `Δh` the largest step between
-//! neighbouring texels); `scale · (h − bias)` is rounded once to I16F16, and so is its
-//! product with the normal. Against the f64 reference (host-tests, `displacement.rs`) the
-//! positions are within `1 + levels / 2 + |scale| (2 Δh + 0.5)` LSB of I16F16 and the
-//! normals within 2^-9 per component. Face normals are summed exactly in Q32 and scaled by
-//! one power of two per mesh before they are added in I16F16 (edges are clamped to ±16384
-//! units, the one limit).
+//! The height is bilinear with a 16-bit texel fraction (not the 8 bits of
+//! [`HeightMap::bilinear`], which would put up to `2 Δh / 65536` of the range on every
+//! vertex, `Δh` the largest step between neighbouring texels), rounded to a Q16 fraction;
+//! `scale · (h − bias)` is rounded once to I16F16, and so is its product with the normal.
+//! Against the f64 reference (host-tests, `displacement.rs`) the positions are within
+//! `1 + |scale| / 2 + levels / 2` LSB of I16F16, plus, once subdivided,
+//! `|scale| Δh (w + h) / 256` LSB because the midpoints' texture coordinates are rounded to
+//! I16F16 (on the rocky demo sphere: 1.0, 9.2 and 15.8 LSB at 0, 1 and 2 levels); normals
+//! within 2^-7 per component (measured 3.4e-4, 8.7e-4, 3.1e-3). Face normals are summed
+//! exactly in Q32 and scaled by one power of two per mesh before they are added in I16F16
+//! (edges are clamped to ±16384 units, the one limit).
 //!
 //! ```
 //! use fixel::math::{fx, Fx, Vec3};
@@ -92,11 +95,28 @@ impl Displacement<'_> {
     pub fn distance(&self, uv: [Fx; 2]) -> Fx {
         let s = uv[0].to_bits().wrapping_add(self.offset[0].to_bits());
         let t = uv[1].to_bits().wrapping_add(self.offset[1].to_bits());
-        // Q8.8 steps of 256 = a Q16 fraction of the full range.
-        let h = i64::from(self.map.bilinear(s, t)) - i64::from(self.bias.to_bits());
+        let h = height_q16(&self.map, s, t) - i64::from(self.bias.to_bits());
         let d = (h * i64::from(self.scale.to_bits()) + (1 << 15)) >> 16;
         Fx::from_bits(d.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32)
     }
+}
+
+/// The bilinear height of level 0 at `(s, t)` (I16F16 bits, repeating; texel centres at
+/// `(i + 0.5) / size`) as a Q16 fraction of 256 steps (`0..=65280`), with a 16-bit texel
+/// fraction: [`HeightMap::bilinear`] keeps 8 bits (enough per pixel), which would put up to
+/// `2 Δh / 65536` of the map's range on every displaced vertex.
+fn height_q16(map: &HeightMap<'_>, s: i32, t: i32) -> i64 {
+    let (lw, lh) = map.log2_size();
+    let tu = (i64::from(s) << lw) - (1 << 15);
+    let tv = (i64::from(t) << lh) - (1 << 15);
+    let (i, j) = ((tu >> 16) as i32, (tv >> 16) as i32);
+    let (fu, fv) = (tu & 0xFFFF, tv & 0xFFFF);
+    let h = |di: i32, dj: i32| i64::from(map.height(0, i.wrapping_add(di), j.wrapping_add(dj)));
+    // Steps in Q16, then Q32; 255 · 2^32 fits easily.
+    let top = h(0, 0) * (65536 - fu) + h(1, 0) * fu;
+    let bottom = h(0, 1) * (65536 - fu) + h(1, 1) * fu;
+    // Q32 steps / 256 = a Q24 fraction; to Q16, rounded.
+    (top * (65536 - fv) + bottom * fv + (1 << 23)) >> 24
 }
 
 /// `twins` (from [`weld`](super::weld)) has one entry per vertex, each at most its own

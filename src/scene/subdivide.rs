@@ -258,7 +258,9 @@ fn mid(a: Fx, b: Fx) -> Fx {
 /// # Errors
 /// * [`Error::CapacityExceeded`] when `out` or `edges` is shorter than
 ///   [`subdivide_capacity`] says, with the size the first short store needs (vertices,
-///   triangles, then edge-table words, in that order);
+///   triangles, then edge-table words, in that order); when `edges` cannot even hold the
+///   mesh's own edges (to count them), the words for the worst case, `3 * triangles` edges,
+///   as [`count_edges`] says;
 /// * [`Error::MeshTooLarge`] when the finer mesh has more vertices than a `u16` index
 ///   reaches.
 pub fn subdivide<'a>(
@@ -269,7 +271,12 @@ pub fn subdivide<'a>(
 ) -> Result<Mesh<'a>, Error> {
     let (v0, t0) = (mesh.vertices(), mesh.triangles());
     check_indices(mesh.indices, v0)?;
-    let e0 = count_edges(mesh.indices, edges)?;
+    // No level, no edge table: a copy.
+    let e0 = if levels == 0 {
+        0
+    } else {
+        count_edges(mesh.indices, edges)?
+    };
     let cap = subdivide_capacity(v0, t0, e0, levels);
     if cap.vertices > 1 << 16 {
         return Err(Error::MeshTooLarge {
