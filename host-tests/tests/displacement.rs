@@ -506,3 +506,27 @@ fn rendered_rocky_sphere_checksum() {
         "checksum changed: look at examples/displacement and update"
     );
 }
+
+mod baked {
+    include!("../../assets/displaced/rock_sphere.rs");
+}
+
+/// `assets/displaced/rock_sphere.rs` (`cargo xtask bake-displaced`) is what the run-time
+/// functions make from the coarse demo sphere: re-bake after changing them.
+#[test]
+fn baked_rock_sphere_is_fresh() {
+    let s: MeshData<{ 13 * 25 }, { 2 * 24 * 11 }> = demo::uv_sphere(12, 24);
+    let fine = Fine::new(&s.mesh().unwrap(), 1).unwrap();
+    let bytes = rock();
+    let d = Displacement {
+        map: HeightMap::new(&bytes, ROCK_WIDTH, ROCK_HEIGHT, 1).unwrap(),
+        scale: fx(0.45),
+        bias: fx(0.5),
+        offset: [Fx::ZERO; 2],
+    };
+    let (p, n) = fine.displaced(&d);
+    assert_eq!(p.as_slice(), baked::ROCK_POSITIONS.as_slice());
+    assert_eq!(n.as_slice(), baked::ROCK_NORMALS.as_slice());
+    assert_eq!(fine.uvs.as_slice(), baked::ROCK_UVS.as_slice());
+    assert_eq!(fine.indices.as_slice(), baked::ROCK_INDICES.as_slice());
+}

@@ -31,12 +31,12 @@
 //! triangle 6 bytes of indices. The edge table is scratch, needed only while subdividing:
 //! two `u32` words per slot, a power of two of slots at least `1.5 E + 1` for the largest
 //! level split. [`subdivide_capacity`] computes all of it; for the demo sphere (1225
-//! vertices, 2208 triangles, 3480 edges):
+//! vertices, 2208 triangles, 3430 edges):
 //!
 //! | levels | vertices | triangles | storage (bytes) | edge table (bytes) |
 //! |---|---|---|---|---|
-//! | 1 | 4705 | 8832 | 203,552 | 65,536 |
-//! | 2 | 18433 | 35328 | 801,824 | 262,144 |
+//! | 1 | 4655 | 8832 | 201,952 | 65,536 |
+//! | 2 | 18139 | 35328 | 792,416 | 262,144 |
 //!
 //! and for a 16 x 16-quad grid (289 vertices, 512 triangles, 800 edges): 1089 vertices,
 //! 2048 triangles, 47,136 bytes and a 16,384-byte table at one level.
