@@ -180,20 +180,20 @@ fn main() -> Result<(), Error> {
     ];
     let water_px: Vec<Rgb565> = swell.iter().map(|&h| ramp(h, &water_keys)).collect();
     let water_tex = Texture::new(&water_px, WAVE_SIDE, WAVE_SIDE)?;
-    let flat: MeshData<{ 25 * 25 }, { 2 * 24 * 24 }> = grid(24, fx(2.5));
+    let flat: MeshData<{ 25 * 25 }, { 2 * 24 * 24 }> = grid(24, fx(2.4));
     let base = Base::new(&flat, 1)?;
     let water = Displacement {
         map: HeightMap::new(&swell, WAVE_SIDE, WAVE_SIDE, 1)?,
-        scale: fx(0.5),
+        scale: fx(0.6),
         bias: fx(0.5),
         offset: [fx(0.1), fx(0.3)],
     };
     let n = base.positions.len();
     let (mut dp, mut dn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let moved = displace(&water, &base.mesh()?, Some(&base.twins), &mut dp, &mut dn)?;
-    let sea = Mat4::translation(Vec3::from_num(0, -0.6, -6.5))
-        * Mat4::rotation_x(Angle::from_degrees(fx(32)))
-        * Mat4::rotation_y(Angle::from_degrees(fx(30)));
+    let sea = Mat4::translation(Vec3::from_num(0, 0.1, -9.2))
+        * Mat4::rotation_x(Angle::from_degrees(fx(26)))
+        * Mat4::rotation_y(Angle::from_degrees(fx(45)));
     let vp = Viewport::new(2 * PANEL, 0, PANEL, H)?;
     draw_mesh(
         &Draw::dynamic(mode, Some(water_tex), vp)?,

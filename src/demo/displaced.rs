@@ -70,7 +70,7 @@ pub fn rock_heights(out: &mut [u8]) -> Result<(), Error> {
             // Ridges where a coarser noise crosses zero.
             let rim = noise3(n[0] * 2, n[1] * 2 + (5 << 16), n[2] * 2);
             let rim = (6000 - rim.abs()).max(0);
-            let h = 128 + (sum * 150 >> 15) + (rim * 60 >> 12) - 40;
+            let h = 128 + ((sum * 150) >> 15) + ((rim * 60) >> 12) - 40;
             out[(j * ROCK_WIDTH + i) as usize] = h.clamp(0, 255) as u8;
         }
     }
