@@ -530,3 +530,30 @@ fn baked_rock_sphere_is_fresh() {
     assert_eq!(fine.uvs.as_slice(), baked::ROCK_UVS.as_slice());
     assert_eq!(fine.indices.as_slice(), baked::ROCK_INDICES.as_slice());
 }
+
+mod water_base {
+    include!("../../assets/displaced/water_base.rs");
+}
+
+/// `assets/displaced/water_base.rs` (`cargo xtask bake-displaced --mesh water`, the
+/// firmware's `water` scene) is the 6 x 6 grid subdivided once, flat, and the swell.
+#[test]
+fn baked_water_base_is_fresh() {
+    let g: MeshData<49, 72> = grid(6, fx(2.4));
+    let fine = Fine::new(&g.mesh().unwrap(), 1).unwrap();
+    let bytes = waves();
+    let d = Displacement {
+        map: HeightMap::new(&bytes, WAVE_SIDE, WAVE_SIDE, 1).unwrap(),
+        scale: Fx::ZERO,
+        bias: fx(0.5),
+        offset: [Fx::ZERO; 2],
+    };
+    let (p, n) = fine.displaced(&d);
+    assert_eq!(p.as_slice(), water_base::WATER_POSITIONS.as_slice());
+    assert_eq!(n.as_slice(), water_base::WATER_NORMALS.as_slice());
+    assert_eq!(
+        fine.indices.as_slice(),
+        water_base::WATER_INDICES.as_slice()
+    );
+    assert_eq!(bytes.as_slice(), water_base::WATER_HEIGHTS.as_slice());
+}
