@@ -557,3 +557,33 @@ fn baked_water_base_is_fresh() {
     );
     assert_eq!(bytes.as_slice(), water_base::WATER_HEIGHTS.as_slice());
 }
+
+/// No cracks: every edge of the subdivided sphere's triangles meets its neighbour's at the
+/// same two displaced points, seams and poles included, because copies of a vertex (found by
+/// `weld`) move together; without the twins the pole copies, whose `u` differs, part.
+#[test]
+fn welded_copies_move_together() {
+    let s = demo::sphere();
+    let bytes = rock();
+    let fine = Fine::new(&s.mesh().unwrap(), 1).unwrap();
+    let d = Displacement {
+        map: HeightMap::new(&bytes, ROCK_WIDTH, ROCK_HEIGHT, 1).unwrap(),
+        scale: fx(0.45),
+        bias: fx(0.5),
+        offset: [Fx::ZERO; 2],
+    };
+    let (p, n) = fine.displaced(&d);
+    let copies = (0..p.len()).filter(|&i| usize::from(fine.twins[i]) != i).count();
+    assert!(copies > 100, "the sphere has seam and pole copies ({copies})");
+    for i in 0..p.len() {
+        let t = usize::from(fine.twins[i]);
+        assert_eq!(fine.base[i], fine.base[t]);
+        assert_eq!((p[i], n[i]), (p[t], n[t]), "vertex {i} and its twin {t}");
+    }
+    let (mut apart, mut nm) = (vec![Vec3::ZERO; p.len()], vec![Vec3::ZERO; p.len()]);
+    displace(&d, &fine.mesh(), None, &mut apart, &mut nm).unwrap();
+    let cracked = (0..p.len())
+        .filter(|&i| apart[i] != apart[usize::from(fine.twins[i])])
+        .count();
+    assert!(cracked > 0, "without twins some copies part");
+}
