@@ -3,14 +3,15 @@
 //! sphere subdivided once and displaced by the height map (the silhouette turns rocky and
 //! the lighting follows the recomputed normals), and a water surface: a flat grid
 //! subdivided once and displaced by a tiling swell, the run-time animated case (here one
-//! frame of it).
+//! frame of it, and `displacement_water.gif`, 32 frames of it with the swell's offset
+//! moving: the base is subdivided once and only displaced again each frame).
 //!
 //! `cargo run --release --example displacement` (picture in `target/pictures/`).
 
 #[path = "common/mod.rs"]
 mod common;
 
-use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use fixel::demo::displaced::{
     grid, rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
 };
@@ -45,6 +46,13 @@ fn ramp(h: u8, keys: &[(u8, u8, u8, u8)]) -> Rgb565 {
         c = (k.1, k.2, k.3);
     }
     Rgb565::new(c.0 >> 3, c.1 >> 2, c.2 >> 3)
+}
+
+/// `uvs` plus `offset`: where the displacement read its heights.
+fn shifted(uvs: &[[Fx; 2]], offset: [Fx; 2]) -> Vec<[Fx; 2]> {
+    uvs.iter()
+        .map(|c| [c[0] + offset[0], c[1] + offset[1]])
+        .collect()
 }
 
 /// A mesh subdivided `levels` times and welded: the displacement's base.
@@ -190,7 +198,10 @@ fn main() -> Result<(), Error> {
     };
     let n = base.positions.len();
     let (mut dp, mut dn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-    let moved = displace(&water, &base.mesh()?, Some(&base.twins), &mut dp, &mut dn)?;
+    displace(&water, &base.mesh()?, Some(&base.twins), &mut dp, &mut dn)?;
+    // The texture is coloured by the same heights: shift its coordinates with the offset.
+    let uvs = shifted(&base.uvs, water.offset);
+    let moved = Mesh::new(&dp, Some(&dn), &uvs, &base.indices)?;
     let sea = Mat4::translation(Vec3::from_num(0, 0.1, -9.2))
         * Mat4::rotation_x(Angle::from_degrees(fx(26)))
         * Mat4::rotation_y(Angle::from_degrees(fx(45)));
@@ -206,6 +217,52 @@ fn main() -> Result<(), Error> {
 
     let path = common::out_dir().join("displacement.png");
     common::write_png(&path, w, H, &color);
+    println!("wrote {}", path.display());
+
+    // The same water animated: the offset moves one whole map (a whole number of periods
+    // of every wave) in 32 frames, so the loop is seamless; only the displacement is redone
+    // per frame, the subdivided base stays.
+    let path = common::out_dir().join("displacement_water.gif");
+    let file = std::fs::File::create(&path).expect("create GIF");
+    let mut enc = gif::Encoder::new(file, PANEL as u16, H as u16, &[]).expect("GIF header");
+    enc.set_repeat(gif::Repeat::Infinite).expect("GIF loop");
+    let base_mesh = base.mesh()?;
+    for i in 0..32 {
+        let d = Displacement {
+            offset: [fx(i) / 32, fx(2 * i) / 32],
+            ..water
+        };
+        displace(&d, &base_mesh, Some(&base.twins), &mut dp, &mut dn)?;
+        let uvs = shifted(&base.uvs, d.offset);
+        let moved = Mesh::new(&dp, Some(&dn), &uvs, &base.indices)?;
+        let mut color = vec![sky; (PANEL * H) as usize];
+        let mut depth = vec![0u16; (PANEL * H) as usize];
+        let mut frame = Frame::new(&mut color, PANEL, H)?.with_depth(&mut depth)?;
+        frame.clear(sky);
+        let vp = Viewport::new(0, 0, PANEL, H)?;
+        draw_mesh(
+            &Draw::dynamic(mode, Some(water_tex), vp)?,
+            &moved,
+            &sea,
+            &camera,
+            Some(&light),
+            &mut frame,
+        )?;
+        let rgb: Vec<u8> = color
+            .iter()
+            .flat_map(|p| {
+                let (r, g, b) = (p.r(), p.g(), p.b());
+                [
+                    (r << 3) | (r >> 2),
+                    (g << 2) | (g >> 4),
+                    (b << 3) | (b >> 2),
+                ]
+            })
+            .collect();
+        let mut f = gif::Frame::from_rgb_speed(PANEL as u16, H as u16, &rgb, 10);
+        f.delay = 5; // 1/100 s units: 20 fps
+        enc.write_frame(&f).expect("GIF frame");
+    }
     println!("wrote {}", path.display());
     Ok(())
 }

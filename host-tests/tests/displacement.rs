@@ -573,8 +573,13 @@ fn welded_copies_move_together() {
         offset: [Fx::ZERO; 2],
     };
     let (p, n) = fine.displaced(&d);
-    let copies = (0..p.len()).filter(|&i| usize::from(fine.twins[i]) != i).count();
-    assert!(copies > 100, "the sphere has seam and pole copies ({copies})");
+    let copies = (0..p.len())
+        .filter(|&i| usize::from(fine.twins[i]) != i)
+        .count();
+    assert!(
+        copies > 100,
+        "the sphere has seam and pole copies ({copies})"
+    );
     for i in 0..p.len() {
         let t = usize::from(fine.twins[i]);
         assert_eq!(fine.base[i], fine.base[t]);
