@@ -551,6 +551,7 @@ fn baked_water_base_is_fresh() {
     let (p, n) = fine.displaced(&d);
     assert_eq!(p.as_slice(), water_base::WATER_POSITIONS.as_slice());
     assert_eq!(n.as_slice(), water_base::WATER_NORMALS.as_slice());
+    assert_eq!(fine.uvs.as_slice(), water_base::WATER_UVS.as_slice());
     assert_eq!(
         fine.indices.as_slice(),
         water_base::WATER_INDICES.as_slice()

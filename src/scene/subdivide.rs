@@ -487,6 +487,28 @@ mod tests {
         );
     }
 
+    /// The storage table of the module docs.
+    #[test]
+    fn documented_storage_per_level() {
+        let s = crate::demo::sphere();
+        let mut table = [0u32; 1 << 15];
+        let e = count_edges(&s.indices, &mut table).unwrap();
+        assert_eq!(e, 3430);
+        let bytes = |c: SubdivideCapacity| (c.vertices * 32 + c.triangles * 6, c.edge_words * 4);
+        let one = subdivide_capacity(1225, 2208, e, 1);
+        assert_eq!((one.vertices, one.triangles), (4655, 8832));
+        assert_eq!(bytes(one), (201_952, 65_536));
+        let two = subdivide_capacity(1225, 2208, e, 2);
+        assert_eq!((two.vertices, two.triangles), (18139, 35328));
+        assert_eq!(bytes(two), (792_416, 262_144));
+        let g: crate::demo::MeshData<289, 512> = crate::demo::displaced::grid(16, Fx::ONE);
+        assert_eq!(count_edges(&g.indices, &mut table), Ok(800));
+        assert_eq!(
+            bytes(subdivide_capacity(289, 512, 800, 1)),
+            (47_136, 16_384)
+        );
+    }
+
     #[test]
     fn weld_finds_copies() {
         let p = [
