@@ -116,6 +116,10 @@ pub const fn subdivide_capacity(
         e = e.saturating_mul(2).saturating_add(t.saturating_mul(3));
         t = t.saturating_mul(4);
         k += 1;
+        if t == usize::MAX {
+            // Saturated: more levels change nothing (and `levels` may be huge).
+            k = levels;
+        }
     }
     SubdivideCapacity {
         vertices: v,
@@ -217,12 +221,8 @@ pub fn count_edges(indices: &[[u16; 3]], table: &mut [u32]) -> Result<usize, Err
     let worst = subdivide_capacity(0, indices.len(), 3 * indices.len(), 1).edge_words;
     let short = Error::CapacityExceeded { capacity: worst };
     // The most edges a table of this size takes at load 2/3.
-    let slots = (table.len() / 2).max(1);
-    let slots = if slots.is_power_of_two() {
-        slots
-    } else {
-        slots.next_power_of_two() / 2
-    };
+    // The largest power of two of slots that fits.
+    let slots = 1usize << (usize::BITS - 1 - (table.len() / 2).max(1).leading_zeros());
     let limit = slots * 2 / 3;
     let mut t = EdgeTable::with_slots(table, slots.max(2)).ok_or(short)?;
     let mut count = 0usize;
@@ -485,6 +485,18 @@ mod tests {
             subdivide(&m, 2, out, &mut words).err(),
             Some(Error::CapacityExceeded { capacity: 34 })
         );
+    }
+
+    #[test]
+    fn absurd_sizes_saturate_instead_of_looping_or_panicking() {
+        let c = subdivide_capacity(10, 10, 20, u32::MAX);
+        assert_eq!(c.triangles, usize::MAX);
+        let mut tiny = [0u32; 3];
+        assert!(matches!(
+            count_edges(&[[0, 1, 2]], &mut tiny),
+            Err(Error::CapacityExceeded { .. })
+        ));
+        assert_eq!(count_edges(&[[0, 1, 2]], &mut [0u32; 16]), Ok(3));
     }
 
     /// The storage table of the module docs.
