@@ -593,3 +593,74 @@ fn welded_copies_move_together() {
         .count();
     assert!(cracked > 0, "without twins some copies part");
 }
+
+/// The silhouette, the difference from bump mapping (issue 14 §3): drawn the same way, the
+/// undisplaced sphere (what a bump-mapped sphere's outline is: bump mapping only tilts
+/// normals) has a round outline, the displaced one a rough outline. Measured as the spread
+/// of the outline's radius, row by row, about the frame centre (where the sphere's centre
+/// projects), in pixels.
+#[test]
+fn displacement_roughens_the_silhouette() {
+    let s = demo::sphere();
+    let bytes = rock();
+    let fine = Fine::new(&s.mesh().unwrap(), 1).unwrap();
+    let d = Displacement {
+        map: HeightMap::new(&bytes, ROCK_WIDTH, ROCK_HEIGHT, 1).unwrap(),
+        scale: fx(0.45),
+        bias: fx(0.5),
+        offset: [Fx::ZERO; 2],
+    };
+    let (p, n) = fine.displaced(&d);
+    let rough = Mesh::new(&p, Some(&n), &fine.uvs, &fine.indices).unwrap();
+    let spread = |mesh: &Mesh<'_>| {
+        let (w, h) = (240u32, 240u32);
+        let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+        let mut depth = vec![0u16; (w * h) as usize];
+        let mut frame = Frame::new(&mut color, w, h)
+            .unwrap()
+            .with_depth(&mut depth)
+            .unwrap();
+        let camera =
+            Camera::perspective(Angle::from_degrees(fx(40)), fx(1), fx(0.5), fx(20)).unwrap();
+        let mode = DrawMode {
+            shading: Shading::Flat,
+            depth: DepthTest::Less,
+            cull: Cull::Back,
+            ..DrawMode::default()
+        };
+        let draw = Draw::dynamic(mode, None, Viewport::new(0, 0, w, h).unwrap())
+            .unwrap()
+            .with_flat_color(Rgb565::new(31, 63, 31));
+        let model = Mat4::translation(Vec3::from_num(0, 0, -6));
+        draw_mesh(&draw, mesh, &model, &camera, None, &mut frame).unwrap();
+        // Outline radius per row: the farthest covered pixel centre from the centre.
+        let c = f64::from(w) / 2.0;
+        let radii: Vec<f64> = (0..h)
+            .filter_map(|y| {
+                let row = &color[(y * w) as usize..((y + 1) * w) as usize];
+                let lit: Vec<u32> = (0..w)
+                    .filter(|&x| row[x as usize] != Rgb565::new(0, 0, 0))
+                    .collect();
+                let dy = f64::from(y) + 0.5 - c;
+                let (&a, &b) = (lit.first()?, lit.last()?);
+                let dx = (c - f64::from(a) - 0.5).max(f64::from(b) + 0.5 - c);
+                // Rows near the poles say little about the radius.
+                (dy.abs() < 0.8 * dx.hypot(dy)).then(|| dx.hypot(dy))
+            })
+            .collect();
+        let mean = radii.iter().sum::<f64>() / radii.len() as f64;
+        let var = radii.iter().map(|r| (r - mean).powi(2)).sum::<f64>() / radii.len() as f64;
+        (mean, var.sqrt())
+    };
+    let smooth = spread(&s.mesh().unwrap());
+    let displaced = spread(&rough);
+    println!(
+        "outline radius: smooth {:.1} ± {:.2} px, displaced {:.1} ± {:.2} px",
+        smooth.0, smooth.1, displaced.0, displaced.1
+    );
+    assert!(smooth.1 < 1.0, "the undisplaced outline is round");
+    assert!(
+        displaced.1 > 3.0 * smooth.1.max(0.5),
+        "the displaced outline is rough"
+    );
+}
