@@ -32,30 +32,32 @@
 //!
 //! | where | mesh | [`displace_positions`] | [`recompute_normals`] | [`displace`] |
 //! |---|---|---:|---:|---:|
-//! | x86-64 (callgrind) | rocky sphere, 4655 vertices, 8832 triangles | 162 | 892 | 1054 |
-//! | Cortex-M4F (QEMU) | water grid, 169 vertices, 288 triangles | | | 1221 |
-//! | Cortex-M0+ (QEMU) | water grid | | | 3730 |
+//! | x86-64 (callgrind) | rocky sphere, 4655 vertices, 8832 triangles | 166 | 891 | 1057 |
+//! | Cortex-M4F (QEMU) | water grid, 169 vertices, 288 triangles | | | 1191 |
+//! | Cortex-M0+ (QEMU) | water grid | | | 2857 |
 //!
 //! (x86: `host-tests/examples/displace_cost.rs` under callgrind, release; Cortex-M: the
 //! `water_displace` firmware, `examples/firmware`.) The positions cost a 16-bit bilinear
 //! height and three products; the normals two exact cross products per triangle (about two
-//! triangles per vertex: one pass for the mesh's scale, one to add them) and one 32-bit
-//! square root and table reciprocal per vertex. The `water` scene, displaced and drawn
-//! every frame, costs 247.4 instructions per pixel on the M4F and 549.7 on the M0+
-//! (39,610 pixels), the displacement about a tenth of it.
+//! triangles per vertex; a first pass over the edges finds the mesh's scale) and one
+//! 32-bit square root and table reciprocal per vertex. No step needs a 64-bit product but
+//! the cross products and the moves along the normal. The `water` scene, displaced and drawn
+//! every frame, costs 247.3 instructions per pixel on the M4F and 546.0 on the M0+
+//! (39,610 pixels), the displacement about 2% of it (0.2 M and 0.5 M instructions).
 //!
 //! # Fixed point and error
-//! The height is bilinear with a 16-bit texel fraction (not the 8 bits of
+//! The height is bilinear with a 16-bit texel fraction, rounded to Q8 steps between the two
+//! weightings and then to a Q16 fraction (not the 8-bit fraction of
 //! [`HeightMap::bilinear`], which would put up to `2 Δh / 65536` of the range on every
-//! vertex, `Δh` the largest step between neighbouring texels), rounded to a Q16 fraction;
+//! vertex, `Δh` the largest step between neighbouring texels);
 //! `scale · (h − bias)` is rounded once to I16F16, and so is its product with the normal.
 //! Against the f64 reference (host-tests, `displacement.rs`) the positions are within
-//! `1 + |scale| / 2 + levels / 2` LSB of I16F16, plus, once subdivided,
+//! `1 + |scale| + levels / 2` LSB of I16F16, plus, once subdivided,
 //! `|scale| Δh (w + h) / 256` LSB because the midpoints' texture coordinates are rounded to
-//! I16F16 (on the rocky demo sphere: 1.0, 9.2 and 15.8 LSB at 0, 1 and 2 levels); normals
-//! within 2^-7 per component (measured 3.4e-4, 9.0e-4, 3.2e-3; unit within 2^-15). Face normals are summed
-//! exactly in Q32 and scaled by one power of two per mesh before they are added in I16F16
-//! (edges are clamped to ±16384 units, the one limit).
+//! I16F16 (on the rocky demo sphere: 1.1, 9.2 and 15.8 LSB at 0, 1 and 2 levels); normals
+//! within 2^-7 per component (measured 3.4e-4, 9.0e-4, 3.1e-3; unit length within 2^-15).
+//! Face normals are computed exactly in Q32 and scaled by one power of two per mesh before
+//! they are summed in I16F16 (edges are clamped to ±16384 units, the one limit).
 //!
 //! ```
 //! use fixel::math::{fx, Fx, Vec3};
@@ -117,16 +119,19 @@ impl Displacement<'_> {
 /// `2 Δh / 65536` of the map's range on every displaced vertex.
 fn height_q16(map: &HeightMap<'_>, s: i32, t: i32) -> i64 {
     let (lw, lh) = map.log2_size();
-    let tu = (i64::from(s) << lw) - (1 << 15);
-    let tv = (i64::from(t) << lh) - (1 << 15);
+    // Texel coordinates in Q16 minus the half-texel offset of the centres, wrapping at
+    // 65536 texels (a multiple of the map's side, so the repeat is unchanged).
+    let tu = (s as u32).wrapping_shl(lw).wrapping_sub(1 << 15);
+    let tv = (t as u32).wrapping_shl(lh).wrapping_sub(1 << 15);
     let (i, j) = ((tu >> 16) as i32, (tv >> 16) as i32);
     let (fu, fv) = (tu & 0xFFFF, tv & 0xFFFF);
-    let h = |di: i32, dj: i32| i64::from(map.height(0, i.wrapping_add(di), j.wrapping_add(dj)));
-    // Steps in Q16, then Q32; 255 · 2^32 fits easily.
-    let top = h(0, 0) * (65536 - fu) + h(1, 0) * fu;
-    let bottom = h(0, 1) * (65536 - fu) + h(1, 1) * fu;
-    // Q32 steps / 256 = a Q24 fraction; to Q16, rounded.
-    (top * (65536 - fv) + bottom * fv + (1 << 23)) >> 24
+    let h = |di: i32, dj: i32| u32::from(map.height(0, i.wrapping_add(di), j.wrapping_add(dj)));
+    // Q16 steps (at most 255 · 2^16), rounded to Q8 so the second weighting stays in u32
+    // (at most 65280 · 2^16 < 2^32): no 64-bit product, which a Cortex-M0+ lacks.
+    let top = (h(0, 0) * (65536 - fu) + h(1, 0) * fu + 128) >> 8;
+    let bottom = (h(0, 1) * (65536 - fu) + h(1, 1) * fu + 128) >> 8;
+    // Q24 steps; a Q16 fraction of 256 steps is Q8 steps.
+    i64::from((top * (65536 - fv) + bottom * fv + (1 << 15)) >> 16)
 }
 
 /// `twins` (from [`weld`](super::weld)) has one entry per vertex, each at most its own
@@ -242,19 +247,33 @@ pub fn recompute_normals(
     check_twins(twins, n)?;
     check_indices(indices, n)?;
     let twin = |i: usize| twins.map_or(i, |tw| usize::from(tw[i]));
-    // One power of two for the whole mesh keeps the largest face's sum (up to 128
+    // One power of two for the whole mesh keeps the largest face's sum (up to 127
     // triangles a vertex) within I16F16 and the small faces' digits.
-    let most = indices
+    // No component of a face's cross product exceeds 2 e², `e` its largest edge component.
+    let edge = indices
         .iter()
         .map(|tri| {
-            face_normal(corners(positions, tri))
-                .iter()
-                .map(|c| c.unsigned_abs())
-                .max()
-                .unwrap_or(0)
+            let p = corners(positions, tri);
+            let e = |a: Fx, b: Fx| {
+                (i64::from(b.to_bits()) - i64::from(a.to_bits()))
+                    .clamp(-EDGE_LIMIT, EDGE_LIMIT)
+                    .unsigned_abs()
+            };
+            [
+                e(p[0].x, p[1].x),
+                e(p[0].y, p[1].y),
+                e(p[0].z, p[1].z),
+                e(p[0].x, p[2].x),
+                e(p[0].y, p[2].y),
+                e(p[0].z, p[2].z),
+            ]
+            .into_iter()
+            .max()
+            .unwrap_or(0)
         })
         .max()
         .unwrap_or(0);
+    let most = 2 * edge * edge;
     let shift = (64 - most.leading_zeros()).saturating_sub(24);
     let down = |c: i64| -> i32 {
         let c = if shift == 0 {
