@@ -20,8 +20,8 @@ use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::{
-    count_edges, displace, draw_mesh, subdivide, subdivide_capacity, weld, weld_table_words,
-    Camera, DirectionalLight, Displacement, Mesh, MeshStorage,
+    count_edges, count_edges_words, displace, draw_mesh, subdivide, subdivide_capacity, weld,
+    weld_table_words, Camera, DirectionalLight, Displacement, Mesh, MeshStorage,
 };
 use fixel::surface::Frame;
 use fixel::texture::{Filter, HeightMap, Texture, Wrap};
@@ -69,7 +69,7 @@ impl Base {
         src: &MeshData<V, T>,
         levels: u32,
     ) -> Result<Self, Error> {
-        let mut table = vec![0u32; 2 * (6 * T + 64)];
+        let mut table = vec![0u32; count_edges_words(T)];
         let edges = count_edges(&src.indices, &mut table)?;
         let cap = subdivide_capacity(V, T, edges, levels);
         let mut b = Base {

@@ -22,8 +22,9 @@ use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::{
-    count_edges, displace, draw_mesh, recompute_normals, subdivide, subdivide_capacity, weld,
-    weld_table_words, Camera, DirectionalLight, Displacement, Mesh, MeshStorage,
+    count_edges, count_edges_words, displace, draw_mesh, recompute_normals, subdivide,
+    subdivide_capacity, weld, weld_table_words, Camera, DirectionalLight, Displacement, Mesh,
+    MeshStorage,
 };
 use fixel::surface::Frame;
 use fixel::texture::HeightMap;
@@ -62,7 +63,7 @@ struct Fine {
 
 impl Fine {
     fn new(src: &Mesh<'_>, levels: u32) -> Result<Fine, Error> {
-        let mut table = vec![0u32; 8 * src.triangles() + 16];
+        let mut table = vec![0u32; count_edges_words(src.triangles())];
         let e = count_edges(src.indices(), &mut table)?;
         let cap = subdivide_capacity(src.vertices(), src.triangles(), e, levels);
         let mut f = Fine {
@@ -250,6 +251,32 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    /// The same on a small sphere, where large scales fold the surface (normals converge):
+    /// positions within budget, normals unit, and within budget where well conditioned.
+    #[test]
+    fn random_displacements_of_a_sphere_stay_within_budget(
+        scale in -4.0f64..4.0,
+        bias in 0.0f64..1.0,
+        ou in -2.0f64..2.0,
+        levels in 0u32..2,
+    ) {
+        let s: MeshData<{ 7 * 13 }, { 2 * 12 * 5 }> = demo::uv_sphere(6, 12);
+        let bytes = rock();
+        let step = max_step(&bytes, ROCK_WIDTH as usize, ROCK_HEIGHT as usize);
+        let (ep, en, unit) = compare(
+            &s.mesh().unwrap(), levels, &bytes, (ROCK_WIDTH, ROCK_HEIGHT), scale, bias, [ou, 0.0],
+        );
+        prop_assert!(
+            ep <= position_budget(levels, scale, step, (ROCK_WIDTH, ROCK_HEIGHT)),
+            "positions {} LSB", ep
+        );
+        prop_assert!(en <= NORMAL_BUDGET, "normals {}", en);
+        prop_assert!(unit <= 1.0 / 4096.0, "unit length {}", unit);
+    }
+}
+
 /// A scale far past what the sphere's curvature takes: triangles turn over. Nothing
 /// panics, every normal is unit, and some face inwards (the surface did fold).
 #[test]
@@ -384,7 +411,7 @@ fn short_storage_is_refused_with_the_size_it_needs() {
         })
     );
     // A table too small even to count the edges asks for the worst case (3 per triangle).
-    let worst = subdivide_capacity(0, m.triangles(), 3 * m.triangles(), 1).edge_words;
+    let worst = count_edges_words(m.triangles());
     assert_eq!(
         try_with(v, t, 64),
         Err(Error::CapacityExceeded { capacity: worst })

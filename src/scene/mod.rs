@@ -54,7 +54,8 @@ pub use displace::{displace, displace_positions, recompute_normals, Displacement
 pub use quad::{draw_quad, quad_triangles};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
 pub use subdivide::{
-    count_edges, subdivide, subdivide_capacity, weld, weld_table_words, SubdivideCapacity,
+    count_edges, count_edges_words, subdivide, subdivide_capacity, weld, weld_table_words,
+    SubdivideCapacity,
 };
 pub use two_stage::{Intermediate, OMapping, ReadyTwoStage, TwoStage};
 pub use uv_gen::{

@@ -209,16 +209,21 @@ impl<'t> EdgeTable<'t> {
     }
 }
 
+/// Words of [`count_edges`]'s table that are enough for any mesh of `triangles`
+/// triangles (room for `3 * triangles` edges; a closed mesh uses half).
+pub const fn count_edges_words(triangles: usize) -> usize {
+    subdivide_capacity(0, triangles, triangles.saturating_mul(3), 1).edge_words
+}
+
 /// The distinct undirected edges of `indices` (an edge from a vertex to itself is not one),
-/// counted in `table`, scratch of at least
-/// [`subdivide_capacity`]`(_, triangles, 3 * triangles, 1).edge_words` words (enough for
-/// any mesh; a closed mesh needs half).
+/// counted in `table`, scratch of at least [`count_edges_words`]`(triangles)` words, or
+/// fewer when the mesh has fewer edges.
 ///
 /// # Errors
 /// [`Error::CapacityExceeded`] with the words needed for `3 * triangles` edges when `table`
 /// fills up.
 pub fn count_edges(indices: &[[u16; 3]], table: &mut [u32]) -> Result<usize, Error> {
-    let worst = subdivide_capacity(0, indices.len(), 3 * indices.len(), 1).edge_words;
+    let worst = count_edges_words(indices.len());
     let short = Error::CapacityExceeded { capacity: worst };
     // The most edges a table of this size takes at load 2/3.
     // The largest power of two of slots that fits.

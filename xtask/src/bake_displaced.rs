@@ -25,8 +25,8 @@ use fixel::demo::displaced::{
 use fixel::demo::{self, MeshData};
 use fixel::math::{Fx, Vec3};
 use fixel::scene::{
-    count_edges, displace, subdivide, subdivide_capacity, weld, weld_table_words, Displacement,
-    MeshStorage,
+    count_edges, count_edges_words, displace, subdivide, subdivide_capacity, weld,
+    weld_table_words, Displacement, MeshStorage,
 };
 use fixel::texture::HeightMap;
 
@@ -72,7 +72,7 @@ fn displaced<const V: usize, const T: usize>(
 ) -> Result<Baked, String> {
     let err = |e: fixel::Error| e.to_string();
     let mesh = src.mesh().map_err(err)?;
-    let mut table = vec![0u32; 2 * (8 * T + 16)];
+    let mut table = vec![0u32; count_edges_words(T)];
     let e = count_edges(&src.indices, &mut table).map_err(err)?;
     let cap = subdivide_capacity(V, T, e, o.levels);
     let (mut p, mut n, mut uv, mut ix) = (
