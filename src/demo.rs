@@ -257,4 +257,6 @@ mod tests {
     }
 }
 
+pub mod bricks;
 pub mod shadow;
+pub mod surface;

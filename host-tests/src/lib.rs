@@ -14,4 +14,5 @@ pub mod reference;
 pub mod report_mcu;
 pub mod scenes;
 pub mod shadow_scene;
+pub mod surface_scene;
 pub mod synthetic;

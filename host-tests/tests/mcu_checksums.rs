@@ -19,6 +19,9 @@ mod aa_scene;
 #[path = "../../examples/firmware/src/alpha_scene.rs"]
 mod alpha_scene;
 
+#[path = "../../examples/firmware/src/bump_scene.rs"]
+mod bump_scene;
+
 #[allow(dead_code)] // the scene needs no tangents
 mod teapot {
     include!("../../assets/teapot/teapot_mesh.rs");
@@ -160,6 +163,20 @@ fn mcu_frames() {
     )
     .unwrap();
     print("transparency", &r);
+
+    // Per-pixel lighting with bump mapping (whole-frame layout on the MCUs).
+    let mut assets = Box::new(bump_scene::BumpAssets::zeroed());
+    bump_scene::BumpAssets::build(&mut assets).unwrap();
+    let (mut c, mut d) = (
+        vec![Rgb565::new(0, 0, 0); (scenes::W * scenes::H) as usize],
+        vec![0u16; (scenes::W * scenes::H) as usize],
+    );
+    let mut verts = vec![
+        fixel::geometry::Vertex::new([fixel::math::Fx::ZERO; 4], [0; 8]);
+        demo::SPHERE_VERTICES
+    ];
+    let r = bump_scene::bump(&assets, &mut c, &mut d, &mut verts, 0, &mut nop1, &mut nop2).unwrap();
+    print("bump", &r);
 
     // The teapot baked from OBJ (the firmware's `data::teapot`, the same generated file).
     let mesh = Mesh::new(

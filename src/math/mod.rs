@@ -37,6 +37,7 @@ pub(crate) mod div;
 pub(crate) mod mat;
 pub(crate) mod recip;
 pub(crate) mod trig;
+pub(crate) mod unit;
 pub(crate) mod vec;
 
 /// The geometry scalar: I16F16 fixed point (±32768, resolution 2^-16).
@@ -68,4 +69,5 @@ pub use div::{div_floor_i64, div_round_i64, div_u64, Divisor32, HW_DIVIDE};
 pub use mat::Mat4;
 pub use recip::{div_fx, isqrt_u32, isqrt_u64, recip_fx, reciprocal_u32};
 pub use trig::{sin_cos, Angle};
+pub use unit::{dot_q14, unit_q14, UNIT_Q14};
 pub use vec::{Vec3, Vec4};

@@ -31,14 +31,18 @@
 
 mod camera;
 mod light;
+mod lit_mesh;
 mod mesh;
+mod tangent;
 mod walk;
 
 pub use camera::Camera;
 pub use light::DirectionalLight;
+pub use lit_mesh::{LitMesh, PixelLight};
 pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
+pub use tangent::{tangents, Tangent};
 pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
 mod depth_sort;
 mod jitter;

@@ -200,7 +200,9 @@ pub trait Shader: Copy {
 }
 
 pub mod alpha;
+pub mod bump;
 pub mod env;
+pub mod lighting;
 pub mod noise;
 pub mod pcf;
 pub mod shadow;

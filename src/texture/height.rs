@@ -1,5 +1,5 @@
 //! Height maps: 8-bit heights on a power-of-two grid, with an optional mip chain, for bump
-//! mapping ([`crate::shading::bump`]) and displacement ([`crate::scene::displace`]).
+//! mapping ([`crate::shading::bump`]) and displacement (`scene::displace`).
 //!
 //! # Storage and units
 //! One contiguous row-major `&[u8]`, laid out like a texture's mip chain

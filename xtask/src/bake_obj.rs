@@ -24,7 +24,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use fixel::math::{Fx, Vec3};
-use fixel::scene::{map_mesh, map_mesh_capacity, Axis, MeshStorage, UvMapping};
+use fixel::scene::{map_mesh, map_mesh_capacity, tangents, Axis, MeshStorage, Tangent, UvMapping};
 
 use crate::bake::BakeError;
 
@@ -144,54 +144,6 @@ pub fn smooth_normals(m: &F64Mesh) -> Vec<[f64; 3]> {
         .collect()
 }
 
-/// Per-vertex tangents (the direction of increasing `u` in the surface, orthogonal to the
-/// normal), from each triangle's uv derivatives, area-weighted.
-pub fn tangents(
-    pos: &[[f64; 3]],
-    nrm: &[[f64; 3]],
-    uv: &[[f64; 2]],
-    ix: &[[u16; 3]],
-) -> Vec<[f64; 3]> {
-    let mut acc = vec![[0.0; 3]; pos.len()];
-    for t in ix {
-        let i = t.map(usize::from);
-        let (e1, e2) = (sub(pos[i[1]], pos[i[0]]), sub(pos[i[2]], pos[i[0]]));
-        let (du1, dv1) = (uv[i[1]][0] - uv[i[0]][0], uv[i[1]][1] - uv[i[0]][1]);
-        let (du2, dv2) = (uv[i[2]][0] - uv[i[0]][0], uv[i[2]][1] - uv[i[0]][1]);
-        let det = du1 * dv2 - du2 * dv1;
-        if det.abs() < 1e-12 {
-            continue; // uv collapsed on this triangle: it says nothing about u.
-        }
-        let tu: [f64; 3] = core::array::from_fn(|k| (e1[k] * dv2 - e2[k] * dv1) / det);
-        for &v in &i {
-            for k in 0..3 {
-                acc[v][k] += tu[k] * det.abs();
-            }
-        }
-    }
-    acc.iter()
-        .zip(nrm)
-        .map(|(t, n)| {
-            let d = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
-            let o = [t[0] - d * n[0], t[1] - d * n[1], t[2] - d * n[2]];
-            // Any direction across the normal when u tells none.
-            let any = if n[0].abs() < 0.9 {
-                [1.0, 0.0, 0.0]
-            } else {
-                [0.0, 1.0, 0.0]
-            };
-            let d2 = any[0] * n[0] + any[1] * n[1] + any[2] * n[2];
-            normalize(
-                o,
-                normalize(
-                    [any[0] - d2 * n[0], any[1] - d2 * n[1], any[2] - d2 * n[2]],
-                    [1.0, 0.0, 0.0],
-                ),
-            )
-        })
-        .collect()
-}
-
 /// I16F16 of `c`, or an error naming it.
 fn fx(c: f64, what: &str) -> Result<Fx, String> {
     if !c.is_finite() || c.abs() >= 32767.0 {
@@ -211,7 +163,7 @@ pub struct Baked {
     pub normals: Vec<Vec3>,
     pub uvs: Vec<[Fx; 2]>,
     pub indices: Vec<[u16; 3]>,
-    pub tangents: Option<Vec<Vec3>>,
+    pub tangents: Option<Vec<Tangent>>,
     pub dropped: usize,
 }
 
@@ -274,16 +226,16 @@ pub fn bake(m: &F64Mesh, o: &ObjOpts) -> Result<Baked, String> {
         uv.truncate(used);
         (p, nm, uv, ix)
     };
-    let tangents = o.tangents.then(|| {
-        let f = |v: &Vec3| [v.x.to_num::<f64>(), v.y.to_num(), v.z.to_num()];
-        let pos: Vec<[f64; 3]> = positions.iter().map(f).collect();
-        let nrm: Vec<[f64; 3]> = normals.iter().map(f).collect();
-        let uv: Vec<[f64; 2]> = uvs.iter().map(|c| [c[0].to_num(), c[1].to_num()]).collect();
-        tangents(&pos, &nrm, &uv, &indices)
-            .into_iter()
-            .map(|t| Vec3::from_num(t[0], t[1], t[2]))
-            .collect()
-    });
+    // fixel's own run-time tangent frames (`scene::tangents`), so baked and generated
+    // meshes get the same ones.
+    let tangents = if o.tangents {
+        let mut t = vec![Tangent::default(); positions.len()];
+        tangents(&positions, &normals, &uvs, &indices, &mut t)
+            .map_err(|e| format!("tangents: {e}"))?;
+        Some(t)
+    } else {
+        None
+    };
     Ok(Baked {
         positions,
         normals,
@@ -403,12 +355,28 @@ pub fn source(b: &Baked, input: &str, o: &ObjOpts) -> String {
     }
     s.push_str("];\n");
     if let Some(t) = &b.tangents {
-        vec_arr(
-            &mut s,
-            "TANGENTS",
-            "Unit tangents (direction of increasing u), I16F16.",
-            t,
+        let _ = writeln!(
+            s,
+            "/// Tangent frames (`{k}::scene::tangents`): unit tangent (direction of increasing u),\n\
+             /// I16F16, and the bitangent's sign."
         );
+        let _ = writeln!(
+            s,
+            "pub static {n}_TANGENTS: [{k}::scene::Tangent; {}] = [",
+            t.len()
+        );
+        for x in t {
+            let d = x.direction;
+            let _ = writeln!(
+                s,
+                "    {k}::scene::Tangent {{ direction: {k}::math::Vec3::from_bits({}, {}, {}), handedness: {} }},",
+                d.x.to_bits(),
+                d.y.to_bits(),
+                d.z.to_bits(),
+                x.handedness
+            );
+        }
+        s.push_str("];\n");
     }
     s
 }
@@ -422,7 +390,7 @@ pub fn flash(b: &Baked) -> Vec<(&'static str, usize)> {
         ("indices", b.indices.len() * 6),
     ];
     if let Some(t) = &b.tangents {
-        v.push(("tangents", t.len() * 12));
+        v.push(("tangents", t.len() * core::mem::size_of::<Tangent>()));
     }
     v
 }

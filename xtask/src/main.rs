@@ -31,7 +31,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 11] = [
+const RENDER_EXAMPLES: [&str; 12] = [
     "showcase",
     "scenes",
     "preview",
@@ -42,6 +42,7 @@ const RENDER_EXAMPLES: [&str; 11] = [
     "quads",
     "antialias",
     "transparency",
+    "surface_detail",
     "displacement",
 ];
 
@@ -931,6 +932,12 @@ fn report(flags: &[String]) -> ExitCode {
     }
     // Anti-aliasing rows: same flags, written to aa.md.
     args[6] = "aa_report";
+    if let Err(e) = cargo(&args).run() {
+        eprintln!("report: {e}");
+        return ExitCode::FAILURE;
+    }
+    // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
+    args[6] = "surface_report";
     if let Err(e) = cargo(&args).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;

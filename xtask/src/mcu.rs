@@ -79,12 +79,14 @@ const SCENES: [&str; 18] = [
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
-/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers.
-const WHOLE_SCENES: [&str; 4] = [
+/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers; and `bump`
+/// (per-pixel lit, bump-mapped sphere), whose per-pixel shader has no band path yet.
+const WHOLE_SCENES: [&str; 5] = [
     "whole_cube",
     "whole_sphere",
     "whole_floor",
     "whole_floor_bilinear",
+    "bump",
 ];
 
 /// The whole-frame firmwares' machines: `mps2-an386` (4M + 4M SSRAM) for both Arm builds
@@ -136,7 +138,7 @@ fn build_whole(td: &Path) -> Result<(), String> {
     run_visible(
         &mut cmd,
         "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
-         --target-dir target/whole --bin whole_* --bin geometry --target <3 MCU targets>)",
+         --target-dir target/whole --bin whole_* --bin bump --bin geometry --target <3 MCU targets>)",
     )
 }
 
@@ -182,7 +184,7 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 9] = [
+const SIZES: [(&str, &str); 10] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     ("size_perspective", "+ perspective-correct"),
@@ -197,6 +199,10 @@ const SIZES: [(&str, &str); 9] = [
     (
         "size_env",
         "depth-tested cube-map mirror (per-pixel r, bilinear, exact)",
+    ),
+    (
+        "size_bump",
+        "bump-mapped, per-pixel lit (derivative map, Blinn-Phong, bilinear, exact, depth)",
     ),
 ];
 
@@ -1052,7 +1058,7 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 9] = [
+const REPORT_BINS: [&str; 10] = [
     "report_cube",
     "report_sphere",
     "report_floor",
@@ -1062,6 +1068,7 @@ const REPORT_BINS: [&str; 9] = [
     "report_mapping",
     "report_aa",
     "report_alpha",
+    "report_surface",
 ];
 
 /// One mode of one report firmware on one MCU.

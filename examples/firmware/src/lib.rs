@@ -10,6 +10,8 @@
 pub mod aa;
 #[cfg(fixel_fw_report)]
 pub mod alpha;
+#[cfg(fixel_fw_report)]
+pub mod surface;
 pub mod data;
 pub mod env;
 pub mod mapping;

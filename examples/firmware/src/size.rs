@@ -178,3 +178,75 @@ pub fn env() -> bool {
     }
     print(Some((sum.0, pixels)))
 }
+
+/// The textured triangle bump-mapped from an 8 x 8 derivative map (its texels: the `T(8, 8)`
+/// checker read as derivative pairs), lit per pixel by a point light, bilinear, exact,
+/// depth: what a bump-mapped draw links (`size_bump`).
+pub fn bump() -> bool {
+    use fixel::geometry::Vertex;
+    use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+    use fixel::scene::{LitMesh, PixelLight};
+    use fixel::shading::bump::{Bumped, DerivativeMap};
+    use fixel::shading::lighting::{Material, Specular, SpecularTable};
+    use fixel::shading::TexBinding;
+    use fixel::surface::Frame;
+    use fixel::texture::{Bilinear, Lod, MipTexture, Nearest, Repeat};
+    static SHINY: SpecularTable = match SpecularTable::new(24) {
+        Ok(t) => t,
+        Err(_) => panic!("24 is a valid exponent"),
+    };
+    let t = core::hint::black_box(data::T8);
+    let chain = MipTexture::single(t);
+    let lod = Lod::default();
+    let (Ok(tex), Ok(dmap)) = (
+        TexBinding::new(&chain, Bilinear, Repeat, Repeat, lod),
+        TexBinding::new(&chain, Nearest, Repeat, Repeat, lod),
+    ) else {
+        return false;
+    };
+    let material = Material {
+        ambient: 51,
+        diffuse: 218,
+        specular: 128,
+        model: Specular::Blinn,
+        shininess: &SHINY,
+    };
+    let Ok(normals) = DerivativeMap::new(dmap, Fx::ONE, Fx::from_bits(1311)) else {
+        return false;
+    };
+    let (Ok(shader), Ok(vp)) = (
+        Bumped::new(tex, normals, (8, 8), material),
+        Viewport::new(0, 0, W, H),
+    ) else {
+        return false;
+    };
+    let Ok(draw) = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back) else {
+        return false;
+    };
+    let positions = core::hint::black_box(&POSITIONS);
+    let Ok(mesh) = LitMesh::new(positions, &NORMALS, &UVS, None, &INDICES) else {
+        return false;
+    };
+    let light = PixelLight::Point(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::from_bits(-2 << 16)));
+    let mut tri = [[Vertex::new([Fx::ZERO; 4], [0; 8]); 3]; 1];
+    mesh.bump_triangles(&Mat4::IDENTITY, &demo::camera(20), &light, |t| tri[0] = *t);
+    let mut color = [Rgb565::new(0, 0, 0); BAND];
+    let mut zbuf = [0u16; BAND];
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0u32;
+    for band in 0..H / ROWS {
+        let Ok(f) = Frame::new(&mut color, W, ROWS) else {
+            return false;
+        };
+        let Ok(mut f) = f.at_row(band * ROWS).with_depth(&mut zbuf) else {
+            return false;
+        };
+        f.clear(Rgb565::new(0, 0, 0));
+        let Ok(n) = draw.clip_triangles(&tri, &mut f) else {
+            return false;
+        };
+        pixels += n;
+        sum.pixels(f.pixels());
+    }
+    print(Some((sum.0, pixels)))
+}

@@ -246,6 +246,7 @@ fn shade_fragment(
     img.covered[idx] = true;
     img.depth[idx] = z;
 }
+pub mod lighting;
 pub mod noise;
 pub mod quad;
 pub mod shadow;
