@@ -6,29 +6,48 @@
 //! frame of it, and `displacement_water.gif`, 32 frames of it with the swell's offset
 //! moving: the base is subdivided once and only displaced again each frame).
 //!
-//! `cargo run --release --example displacement` (picture in `target/pictures/`).
+//! `displacement_vs_bump.png` sets it beside bump mapping, all three lit per pixel: the
+//! smooth sphere, the smooth sphere bump-mapped by the same surface's heights (the relief is
+//! shaded, the outline stays round), and the displaced sphere (the outline is the relief's).
+//!
+//! `cargo run --release --example displacement` (pictures in `target/pictures/`).
 
 #[path = "common/mod.rs"]
 mod common;
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use fixel::demo::displaced::{
-    grid, rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
+    grid, rock_heights, rock_heights_sized, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
 };
+use fixel::demo::surface;
 use fixel::demo::{self, MeshData};
+use fixel::geometry::Vertex;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::{
     count_edges, count_edges_words, displace, draw_mesh, subdivide, subdivide_capacity, weld,
     weld_table_words, Camera, DirectionalLight, Displacement, Mesh, MeshStorage,
 };
+use fixel::scene::{tangents, LitMesh, Tangent};
+use fixel::shading::bump::{Bumped, HeightDifferences};
+use fixel::shading::lighting::{Phong, Specular};
+use fixel::shading::{Shader, TexBinding};
 use fixel::surface::Frame;
-use fixel::texture::{Filter, HeightMap, Texture, Wrap};
+use fixel::texture::{Filter, HeightMap, Lod, MipTexture, Repeat, Texture, Trilinear, Wrap};
 use fixel::Error;
 
 const PANEL: u32 = 280;
 const H: u32 = 240;
+
+/// The rock's colour by height: `(height, r, g, b)`.
+const ROCK_KEYS: [(u8, u8, u8, u8); 4] = [
+    (40, 70, 58, 52),
+    (110, 128, 112, 96),
+    (150, 176, 160, 140),
+    (200, 232, 226, 214),
+];
 
 /// A colour ramp over height: `keys` are `(height, r, g, b)` with 8-bit channels.
 fn ramp(h: u8, keys: &[(u8, u8, u8, u8)]) -> Rgb565 {
@@ -46,6 +65,107 @@ fn ramp(h: u8, keys: &[(u8, u8, u8, u8)]) -> Rgb565 {
         c = (k.1, k.2, k.3);
     }
     Rgb565::new(c.0 >> 3, c.1 >> 2, c.2 >> 3)
+}
+
+/// Draws triangles with `shader` into panel `k` of `frame` (per-pixel shaders).
+fn draw_panel<S: Shader<Varyings = [i32; 8]>>(
+    shader: S,
+    tris: &[[Vertex<8>; 3]],
+    frame: &mut Frame<'_, Rgb565>,
+    k: u32,
+) -> Result<(), Error> {
+    let vp = Viewport::new(k * PANEL, 0, PANEL, H)?;
+    ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back)?.clip_triangles(tris, frame)?;
+    Ok(())
+}
+
+/// `displacement_vs_bump.png`: the rocky sphere lit per pixel (Blinn-Phong, the point light
+/// of `fixel::demo::surface`) three ways: smooth, bump-mapped from the same heights (per-pixel
+/// differences, on a 4x finer grid of the same surface) at the
+/// strength that matches the displacement (σ = scale / 256 steps over a texel's 0.0736
+/// units), and displaced. Bump mapping shades the bumps but keeps the round outline.
+fn versus_bump<const V: usize, const T: usize>(
+    sphere: &MeshData<V, T>,
+    base: &Base,
+    rock: &Displacement<'_>,
+    rock_px: &[Rgb565],
+) -> Result<(), Error> {
+    let w = 3 * PANEL;
+    let sky = Rgb565::new(4, 9, 8);
+    let mut color = vec![sky; (w * H) as usize];
+    let mut depth = vec![0u16; (w * H) as usize];
+    let mut frame = Frame::new(&mut color, w, H)?.with_depth(&mut depth)?;
+    frame.clear(sky);
+    let camera = Camera::perspective(
+        Angle::from_degrees(fx(34)),
+        fx(PANEL) / fx(H),
+        fx(0.5),
+        fx(40),
+    )?;
+    let light = surface::light(0);
+    let model = Mat4::translation(Vec3::from_num(0, 0, -6.2))
+        * Mat4::rotation_x(Angle::from_degrees(fx(18)))
+        * Mat4::rotation_y(Angle::from_degrees(fx(-40)));
+    let material = surface::material(Specular::Blinn);
+    let chain = MipTexture::single(Texture::new(rock_px, ROCK_WIDTH, ROCK_HEIGHT)?);
+    let tex = TexBinding::new(&chain, Trilinear::default(), Repeat, Repeat, Lod::default())?;
+    let mut t = vec![Tangent::default(); V];
+    tangents(
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.uvs,
+        &sphere.indices,
+        &mut t,
+    )?;
+    let smooth = LitMesh::new(
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.uvs,
+        Some(&t),
+        &sphere.indices,
+    )?;
+    let mut tris = Vec::new();
+    smooth.phong_triangles(&model, &camera, &light, |t| tris.push(*t));
+    draw_panel(Phong { tex, material }, &tris, &mut frame, 0)?;
+    let mut tris = Vec::new();
+    smooth.bump_triangles(&model, &camera, &light, |t| tris.push(*t));
+    // Texel width: 2 pi 1.5 / 128 = pi 1.5 / 64 = 0.0736 units.
+    let sigma = rock.scale / 256 / fx(0.0736);
+    // Per-pixel height differences pick the nearest texel: the same surface's heights on a
+    // 4x finer grid (`rock_heights_sized`) keep the texels smaller than the pixels.
+    let (fw, fh) = (4 * ROCK_WIDTH, 4 * ROCK_HEIGHT);
+    let mut fine = vec![0u8; (fw * fh) as usize];
+    rock_heights_sized(fw, fh, &mut fine)?;
+    let fine_px: Vec<Rgb565> = fine.iter().map(|&h| ramp(h, &ROCK_KEYS)).collect();
+    let fine_chain = MipTexture::single(Texture::new(&fine_px, fw, fh)?);
+    let fine_tex = TexBinding::new(
+        &fine_chain,
+        Trilinear::default(),
+        Repeat,
+        Repeat,
+        Lod::default(),
+    )?;
+    let normals = HeightDifferences::new(HeightMap::new(&fine, fw, fh, 1)?, sigma * 4)?;
+    let size = (fw, fh);
+    draw_panel(
+        Bumped::new(fine_tex, normals, size, material)?,
+        &tris,
+        &mut frame,
+        1,
+    )?;
+    let n = base.positions.len();
+    let (mut dp, mut dn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    displace(rock, &base.mesh()?, Some(&base.twins), &mut dp, &mut dn)?;
+    let mut t = vec![Tangent::default(); n];
+    tangents(&dp, &dn, &base.uvs, &base.indices, &mut t)?;
+    let rough = LitMesh::new(&dp, &dn, &base.uvs, Some(&t), &base.indices)?;
+    let mut tris = Vec::new();
+    rough.phong_triangles(&model, &camera, &light, |t| tris.push(*t));
+    draw_panel(Phong { tex, material }, &tris, &mut frame, 2)?;
+    let path = common::out_dir().join("displacement_vs_bump.png");
+    common::write_png(&path, w, H, &color);
+    println!("wrote {}", path.display());
+    Ok(())
 }
 
 /// `uvs` plus `offset`: where the displacement read its heights.
@@ -136,13 +256,7 @@ fn main() -> Result<(), Error> {
     // The rock: heights, and the same heights as a texture.
     let mut heights = vec![0u8; (ROCK_WIDTH * ROCK_HEIGHT) as usize];
     rock_heights(&mut heights)?;
-    let rock_keys = [
-        (40, 70, 58, 52),
-        (110, 128, 112, 96),
-        (150, 176, 160, 140),
-        (200, 232, 226, 214),
-    ];
-    let rock_px: Vec<Rgb565> = heights.iter().map(|&h| ramp(h, &rock_keys)).collect();
+    let rock_px: Vec<Rgb565> = heights.iter().map(|&h| ramp(h, &ROCK_KEYS)).collect();
     let rock_tex = Texture::new(&rock_px, ROCK_WIDTH, ROCK_HEIGHT)?;
     let sphere = demo::sphere();
     let model = Mat4::translation(Vec3::from_num(0, 0, -6.2))
@@ -158,6 +272,7 @@ fn main() -> Result<(), Error> {
         &mut frame,
     )?;
     let base = Base::new(&sphere, 1)?;
+    let rock_base = Base::new(&sphere, 1)?;
     let rock = Displacement {
         map: HeightMap::new(&heights, ROCK_WIDTH, ROCK_HEIGHT, 1)?,
         scale: fx(0.45),
@@ -218,6 +333,7 @@ fn main() -> Result<(), Error> {
     let path = common::out_dir().join("displacement.png");
     common::write_png(&path, w, H, &color);
     println!("wrote {}", path.display());
+    versus_bump(&sphere, &rock_base, &rock, &rock_px)?;
 
     // The same water animated: the offset moves one whole map (a whole number of periods
     // of every wave) in 32 frames, so the loop is seamless; only the displacement is redone

@@ -46,15 +46,36 @@ fn check(out: &[u8], n: u32) -> Result<(), Error> {
 
 /// The rocky sphere's heights: texel `(i, j)` is the point at azimuth
 /// `2π (i + 0.5) / 128` and polar angle `π (j + 0.5) / 64` on the unit sphere (as in
-/// [`super::uv_sphere`]), its height 5 octaves of Perlin noise from 3 cells across plus ridges
-/// where coarser noise crosses zero, mid-grey on average. `out` has 128 x 64 entries ([`Error::WrongLength`]
-/// otherwise).
+/// [`super::uv_sphere`]), its height 5 octaves of Perlin noise from 3 cells across plus
+/// ridges where coarser noise crosses zero, mid-grey on average. `out` has 128 x 64 entries
+/// ([`Error::WrongLength`] otherwise).
 pub fn rock_heights(out: &mut [u8]) -> Result<(), Error> {
-    check(out, ROCK_WIDTH * ROCK_HEIGHT)?;
-    for j in 0..ROCK_HEIGHT {
-        let (st, ct) = sin_cos(512 * j + 256);
-        for i in 0..ROCK_WIDTH {
-            let (sp, cp) = sin_cos(512 * i + 256);
+    rock_heights_sized(ROCK_WIDTH, ROCK_HEIGHT, out)
+}
+
+/// [`rock_heights`] sampled on a `width x height` grid (the same surface, finer or
+/// coarser: for a bump map at the resolution of the screen), `width` and `height`
+/// powers of two from 2 to 32768. `out` has `width x height` entries.
+///
+/// # Errors
+/// [`Error::WrongLength`] for another length, [`Error::NotPowerOfTwo`] or
+/// [`Error::BadSize`] for a bad side.
+pub fn rock_heights_sized(width: u32, height: u32, out: &mut [u8]) -> Result<(), Error> {
+    for side in [width, height] {
+        if !(2..=1 << 15).contains(&side) {
+            return Err(Error::BadSize(side));
+        }
+        if !side.is_power_of_two() {
+            return Err(Error::NotPowerOfTwo(side));
+        }
+    }
+    check(out, width * height)?;
+    for j in 0..height {
+        // Polar angle pi (j + 0.5) / height: (2 j + 1) / (4 height) turn.
+        let (st, ct) = sin_cos(((2 * j + 1) << 14) / height);
+        for i in 0..width {
+            // Azimuth 2 pi (i + 0.5) / width: (2 i + 1) / (2 width) turn.
+            let (sp, cp) = sin_cos(((2 * i + 1) << 15) / width);
             let n = [
                 st.saturating_mul(cp).to_bits(),
                 ct.to_bits(),
@@ -71,7 +92,7 @@ pub fn rock_heights(out: &mut [u8]) -> Result<(), Error> {
             let rim = noise3(n[0] * 2, n[1] * 2 + (5 << 16), n[2] * 2);
             let rim = (6000 - rim.abs()).max(0);
             let h = 128 + ((sum * 150) >> 15) + ((rim * 60) >> 12) - 40;
-            out[(j * ROCK_WIDTH + i) as usize] = h.clamp(0, 255) as u8;
+            out[(j * width + i) as usize] = h.clamp(0, 255) as u8;
         }
     }
     Ok(())
