@@ -13,11 +13,15 @@
 //! the span interpolators' last bits of error stay far below the per-pixel normalisation's
 //! resolution.
 
+use crate::color::TargetColor;
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{unit_q14, Fx, Mat4, Vec3};
+use crate::pipeline::{DepthStage, ProjectionStage, ShadedDraw};
 use crate::scene::tangent::{any_orthogonal, orthogonalize, Tangent};
 use crate::scene::Camera;
 use crate::shading::lighting::{Material, VIEW_Z};
+use crate::shading::Shader;
+use crate::surface::RenderTarget;
 use crate::Error;
 
 /// A light for per-pixel shading, in view space.
@@ -204,6 +208,37 @@ impl<'a> LitMesh<'a> {
                 emit(&[a, b, c]);
             }
         }
+    }
+
+    /// Draws the mesh over `vertices` (from one of the `*_vertices` functions) with `draw`
+    /// into `target`, as [`LitMesh::indexed`] hands the triangles over; returns the pixels
+    /// written.
+    ///
+    /// # Errors
+    /// [`Error::NoDepthBuffer`] when the draw tests depth and `target` has none (nothing is
+    /// drawn).
+    pub fn draw_indexed<S, P, D, C, T, const N: usize>(
+        &self,
+        draw: &ShadedDraw<S, P, D>,
+        vertices: &[Vertex<N>],
+        target: &mut T,
+    ) -> Result<u32, Error>
+    where
+        S: Shader<Varyings = [i32; N]>,
+        P: ProjectionStage,
+        D: DepthStage,
+        C: TargetColor,
+        T: RenderTarget<Color = C>,
+    {
+        draw.check_target(target)?;
+        let mut pixels = 0u32;
+        self.indexed(vertices, |t| {
+            // The target was checked: drawing cannot fail.
+            if let Ok(n) = draw.clip_triangles(core::slice::from_ref(t), target) {
+                pixels = pixels.wrapping_add(n);
+            }
+        });
+        Ok(pixels)
     }
 
     fn phong_vary(_: usize, v: &ViewVertex) -> [i32; 8] {

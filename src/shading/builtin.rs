@@ -20,7 +20,7 @@
 use super::{Fragment, Shader, TexBinding, TexTriangle};
 use crate::color::{modulate_rgb, rgb565};
 use crate::geometry::{CLASSIC_VARYINGS, COLOR_ONE};
-use crate::texture::{LodGranularity, TexSampler, WrapMode};
+use crate::texture::{TexSampler, WrapMode};
 
 /// Colour channel (Q8.16) to Q8 in `0..=256`.
 #[inline(always)]
@@ -34,14 +34,21 @@ pub trait Classic: Shader {
     fn from_classic(v: &[i32; CLASSIC_VARYINGS]) -> Self::Varyings;
 }
 
+/// The [`Shader`] items every shader sampling one [`TexBinding`] at varyings `(0, 1)` (its
+/// field `tex`) shares: per-triangle texel coordinates, the level of detail of that pair
+/// (`$lod`: the sampler's `F::LOD`, or more when another binding reads it too) and the
+/// coordinate shift. `SMALL` when a wrap mode is chosen at run time.
 macro_rules! textured_common {
     () => {
-        type Triangle = TexTriangle;
+        $crate::shading::builtin::textured_common!(F::LOD);
+    };
+    ($lod:expr) => {
+        type Triangle = $crate::shading::TexTriangle;
         const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
-        const LOD: bool = F::LOD;
+        const LOD: bool = $lod;
         const SMALL: bool = WU::DYNAMIC || WV::DYNAMIC;
         #[inline(always)]
-        fn lod_granularity(&self) -> LodGranularity {
+        fn lod_granularity(&self) -> $crate::texture::LodGranularity {
             self.tex.lod().granularity
         }
         #[inline(always)]
@@ -49,15 +56,16 @@ macro_rules! textured_common {
             self.tex.can_draw()
         }
         #[inline(always)]
-        fn coord_shift(t: &TexTriangle) -> u32 {
+        fn coord_shift(t: &$crate::shading::TexTriangle) -> u32 {
             u32::from(t.shift)
         }
         #[inline]
-        fn triangle(&self, v: &mut [Self::Varyings; 3]) -> TexTriangle {
+        fn triangle(&self, v: &mut [Self::Varyings; 3]) -> $crate::shading::TexTriangle {
             self.tex.triangle(v, (0, 1))
         }
     };
 }
+pub(crate) use textured_common;
 
 /// The texel as it is (`GL_REPLACE`). Varyings: `u, v`.
 #[derive(Clone, Copy, Debug)]

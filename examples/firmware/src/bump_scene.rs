@@ -117,21 +117,13 @@ pub fn bump(
     )?;
     let vp = Viewport::new((W - H) / 2, 0, H, H)?;
     let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back)?;
-    let mut pixels = 0u32;
-    let mut result = Ok(());
     mesh.bump_vertices(
         &surface::sphere_model(i),
         &surface::camera()?,
         &surface::light(i),
         vertices,
     )?;
-    mesh.indexed(vertices, |t| {
-        match draw.clip_triangles(core::slice::from_ref(t), &mut frame) {
-            Ok(n) => pixels = pixels.wrapping_add(n),
-            Err(e) => result = Err(e),
-        }
-    });
-    result?;
+    let pixels = mesh.draw_indexed(&draw, vertices, &mut frame)?;
     pause();
     let mut f = Fnv1a::default();
     f.pixels(frame.pixels());

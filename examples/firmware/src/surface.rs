@@ -114,14 +114,7 @@ where
     P: ProjectionStage,
 {
     let draw = ShadedDraw::<_, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    let (mut px, mut result) = (0u32, Ok(()));
-    mesh.indexed(vertices, |t| {
-        match draw.clip_triangles(core::slice::from_ref(t), frame) {
-            Ok(n) => px = px.wrapping_add(n),
-            Err(e) => result = Err(e),
-        }
-    });
-    result.map(|()| px)
+    mesh.draw_indexed(&draw, vertices, frame)
 }
 
 /// Draws variant `k` of [`VARIANTS`] into `color`/`depth` (`W x H`, cleared first) and

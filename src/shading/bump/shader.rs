@@ -18,7 +18,7 @@ use super::normals::TangentNormals;
 use crate::math::unit_q14;
 use crate::shading::lighting::{lit_texel, Material};
 use crate::shading::{Fragment, Shader, TexBinding, TexTriangle};
-use crate::texture::{LodGranularity, TexSampler, WrapMode};
+use crate::texture::{TexSampler, WrapMode};
 use crate::Error;
 
 /// Varyings of [`Bumped`]: `u, v, l_t (3), v_t (3)`.
@@ -62,26 +62,7 @@ impl<N: TangentNormals, F: TexSampler, WU: WrapMode, WV: WrapMode> Shader
     for Bumped<'_, N, F, WU, WV>
 {
     type Varyings = BumpVaryings;
-    type Triangle = TexTriangle;
-    const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
-    const LOD: bool = F::LOD || N::LOD;
-
-    #[inline(always)]
-    fn lod_granularity(&self) -> LodGranularity {
-        self.tex.lod().granularity
-    }
-    #[inline(always)]
-    fn can_draw(&self) -> bool {
-        self.tex.can_draw()
-    }
-    #[inline(always)]
-    fn coord_shift(t: &TexTriangle) -> u32 {
-        u32::from(t.shift)
-    }
-    #[inline]
-    fn triangle(&self, v: &mut [BumpVaryings; 3]) -> TexTriangle {
-        self.tex.triangle(v, (0, 1))
-    }
+    crate::shading::builtin::textured_common!(F::LOD || N::LOD);
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<BumpVaryings, TexTriangle>) -> Option<u16> {

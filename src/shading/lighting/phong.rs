@@ -17,7 +17,7 @@
 use super::material::{lit_texel, Material};
 use crate::math::{unit_q14, UNIT_Q14};
 use crate::shading::{Fragment, Shader, TexBinding, TexTriangle};
-use crate::texture::{LodGranularity, TexSampler, WrapMode};
+use crate::texture::{TexSampler, WrapMode};
 
 /// Varyings of [`Phong`]: `u, v, n (3), l (3)`.
 pub type PhongVaryings = [i32; 8];
@@ -36,26 +36,7 @@ pub struct Phong<'a, F, WU, WV> {
 
 impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for Phong<'_, F, WU, WV> {
     type Varyings = PhongVaryings;
-    type Triangle = TexTriangle;
-    const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
-    const LOD: bool = F::LOD;
-
-    #[inline(always)]
-    fn lod_granularity(&self) -> LodGranularity {
-        self.tex.lod().granularity
-    }
-    #[inline(always)]
-    fn can_draw(&self) -> bool {
-        self.tex.can_draw()
-    }
-    #[inline(always)]
-    fn coord_shift(t: &TexTriangle) -> u32 {
-        u32::from(t.shift)
-    }
-    #[inline]
-    fn triangle(&self, v: &mut [PhongVaryings; 3]) -> TexTriangle {
-        self.tex.triangle(v, (0, 1))
-    }
+    crate::shading::builtin::textured_common!();
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<PhongVaryings, TexTriangle>) -> Option<u16> {
