@@ -15,6 +15,8 @@ use crate::math::{Angle, Fx, Mat4, Vec3};
 use crate::scene::Camera;
 use crate::Error;
 
+pub mod displaced;
+
 /// Frame width of every benchmark scene.
 pub const WIDTH: u32 = 320;
 /// Frame height of every benchmark scene.

@@ -5,6 +5,7 @@
 //! ([`golden`]), plus small synthetic scenes ([`synthetic`]).
 
 pub mod adapter;
+pub mod displaced;
 pub mod golden;
 pub mod metrics;
 pub mod noise_scenes;

@@ -281,3 +281,53 @@ fn mcu_noise_flame() {
 
 // The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.
 mod env_mcu;
+
+// The run-time displacement frame (issue 14): `water`.
+#[path = "../../examples/firmware/src/water_scene.rs"]
+#[allow(dead_code)]
+mod water_scene;
+
+#[allow(dead_code)]
+mod water_base {
+    include!("../../assets/displaced/water_base.rs");
+}
+
+/// The water firmware (`examples/firmware/src/bin/water.rs`, frame 3): the baked flat grid
+/// displaced by the moving swell, then drawn in bands.
+#[test]
+fn mcu_water() {
+    let mesh = Mesh::new(
+        &water_base::WATER_POSITIONS,
+        Some(&water_base::WATER_NORMALS),
+        &water_base::WATER_UVS,
+        &water_base::WATER_INDICES,
+    )
+    .unwrap();
+    let t64 = texture(64, 64);
+    let tex = Texture::new(&t64, 64, 64).unwrap();
+    let mut buf = Box::new(water_scene::WaterBuffers::with_storage());
+    let n = water_scene::WATER_VERTICES;
+    let (mut p, mut nm) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let r = water_scene::water(
+        &mut buf,
+        tex,
+        &mesh,
+        &water_base::WATER_HEIGHTS,
+        &mut p,
+        &mut nm,
+        3,
+        &mut || {},
+        &mut || {},
+    )
+    .unwrap();
+    print("water", &r);
+    // The whole frame of the same displaced mesh gives the same picture.
+    let d = water_scene::water_displacement(&water_base::WATER_HEIGHTS, 3).unwrap();
+    let moved = fixel::scene::displace(&d, &mesh, None, &mut p, &mut nm).unwrap();
+    let w = whole::<scenes::LitSphere>(tex, &moved, &water_scene::water_model(), 20, true);
+    assert_eq!(
+        w,
+        (r.checksum, r.stats.pixels),
+        "water: bands differ from the whole frame"
+    );
+}

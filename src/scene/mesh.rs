@@ -72,6 +72,26 @@ impl<'a> Mesh<'a> {
     pub fn vertices(&self) -> usize {
         self.positions.len()
     }
+
+    /// The positions (I16F16 model space).
+    pub fn positions(&self) -> &'a [Vec3] {
+        self.positions
+    }
+
+    /// The normals, if the mesh has them.
+    pub fn normals(&self) -> Option<&'a [Vec3]> {
+        self.normals
+    }
+
+    /// The texture coordinates.
+    pub fn uvs(&self) -> &'a [[Fx; 2]] {
+        self.uvs
+    }
+
+    /// The triangles.
+    pub fn indices(&self) -> &'a [[u16; 3]] {
+        self.indices
+    }
 }
 
 /// Every index of `indices` below `n`, or the first that is not.

@@ -49,11 +49,18 @@ mod jitter;
 pub use depth_sort::sort_back_to_front;
 mod quad;
 pub use jitter::{jittered, SamplePattern};
+mod displace;
 mod shadow;
+mod subdivide;
 mod two_stage;
 mod uv_gen;
+pub use displace::{displace, displace_positions, recompute_normals, Displacement};
 pub use quad::{draw_quad, quad_triangles};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
+pub use subdivide::{
+    count_edges, count_edges_words, subdivide, subdivide_capacity, weld, weld_table_words,
+    SubdivideCapacity,
+};
 pub use two_stage::{Intermediate, OMapping, ReadyTwoStage, TwoStage};
 pub use uv_gen::{
     map_mesh, map_mesh_capacity, map_mesh_capacity_with, map_mesh_with, Axis, MeshStorage,

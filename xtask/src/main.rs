@@ -6,6 +6,7 @@
 
 mod bake;
 mod bake_cube;
+mod bake_displaced;
 mod bake_obj;
 mod light3d;
 
@@ -30,7 +31,7 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 11] = [
+const RENDER_EXAMPLES: [&str; 12] = [
     "showcase",
     "scenes",
     "preview",
@@ -42,6 +43,7 @@ const RENDER_EXAMPLES: [&str; 11] = [
     "antialias",
     "transparency",
     "surface_detail",
+    "displacement",
 ];
 
 const HELP: &str = "\
@@ -113,6 +115,12 @@ COMMANDS:
     bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]
                 Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
                 as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env)
+    bake-displaced <output.rs> [--sphere coarse|fine] [--levels N] [--scale S]
+                 [--bias B] [--name NAME]
+                A displaced mesh as static arrays (the bake-obj format): the demo
+                sphere (coarse 12 x 24 or fine 24 x 48) subdivided N times (default 1)
+                and displaced by the rock height map with fixel::scene::displace
+                (scale default 0.45, bias 0.5)
     help        Print this help
 
 Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
@@ -164,6 +172,14 @@ fn main() -> ExitCode {
             Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-obj: {e}")),
             Err(bake::BakeError::Failed(e)) => {
                 eprintln!("bake-obj: {e}");
+                ExitCode::FAILURE
+            }
+        },
+        "bake-displaced" => match bake_displaced::run(rest) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-displaced: {e}")),
+            Err(bake::BakeError::Failed(e)) => {
+                eprintln!("bake-displaced: {e}");
                 ExitCode::FAILURE
             }
         },

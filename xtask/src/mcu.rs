@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 17] = [
+const SCENES: [&str; 18] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -74,6 +74,8 @@ const SCENES: [&str; 17] = [
     // Anti-aliasing (rotated grid through bands) and transparency.
     "aa_cube",
     "transparency",
+    // Run-time displacement: a subdivided grid displaced by a moving swell each frame.
+    "water",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout

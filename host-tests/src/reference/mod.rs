@@ -11,6 +11,7 @@
 //! exact derivatives of [`uv_derivatives`]) and shading.
 
 pub mod clip;
+pub mod displace;
 pub mod env;
 pub mod mip;
 pub mod raster;

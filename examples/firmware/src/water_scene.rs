@@ -1,0 +1,84 @@
+//! The `water` scene (`cargo xtask mcu`): run-time displacement mapping
+//! (`fixel::scene::displace`). A flat 6 x 6-quad grid subdivided once (169 vertices, 288
+//! triangles, baked into flash by `cargo xtask bake-displaced --mesh water`) is displaced
+//! every frame by the swell height map with an offset that moves with the frame number,
+//! its normals recomputed, then drawn lit in 320 x 8 bands. The displaced positions and
+//! normals are the only per-frame RAM the technique adds: 24 bytes per vertex, 4 KB.
+//! Included by the firmware binaries and by the host's checksum test.
+
+use crate::scenes::{render, Buffers, FrameResult, LitSphere, Target};
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::scene::{displace, displace_positions, recompute_normals, Displacement, Mesh};
+use fixel::texture::{HeightMap, Texture};
+use fixel::Error;
+
+/// Vertices of the subdivided grid.
+pub const WATER_VERTICES: usize = 169;
+/// Triangles of the subdivided grid (band ranges: one per triangle).
+pub const WATER_TRIANGLES: usize = 288;
+/// Side of the swell height map.
+pub const WAVE_SIDE: u32 = 64;
+
+/// The band buffers: ranges for the grid's triangles, a 64-entry vertex cache.
+pub type WaterBuffers = Buffers<WATER_TRIANGLES, 64, 0>;
+
+/// The swell of frame `i`: scale 0.6 units per 256 steps about mid-grey, the offset moving
+/// `(i, 2 i) / 128` of the map per frame.
+pub fn water_displacement(heights: &[u8], i: u32) -> Result<Displacement<'_>, Error> {
+    let step = (i as i32).wrapping_mul(512);
+    Ok(Displacement {
+        map: HeightMap::new(heights, WAVE_SIDE, WAVE_SIDE, 1)?,
+        scale: Fx::from_bits(39322),
+        bias: Fx::from_bits(1 << 15),
+        offset: [Fx::from_bits(step), Fx::from_bits(step.wrapping_mul(2))],
+    })
+}
+
+/// The grid seen from above and in front: `T(0, -0.4, -6) Rx(35°)`.
+pub fn water_model() -> Mat4 {
+    Mat4::translation(Vec3::from_num(0, -0.4, -6))
+        * Mat4::rotation_x(Angle::from_degrees(Fx::from_num(35)))
+}
+
+/// Only the displacement of frame `i` (positions, then normals) into `positions` and
+/// `normals`: what `water_displace` counts per vertex.
+pub fn water_displace_only(
+    base: &Mesh<'_>,
+    heights: &[u8],
+    positions: &mut [Vec3],
+    normals: &mut [Vec3],
+    i: u32,
+) -> Result<(), Error> {
+    let d = water_displacement(heights, i)?;
+    displace_positions(&d, base, None, positions)?;
+    let fallback = base.normals().unwrap_or(&[]);
+    recompute_normals(positions, base.indices(), fallback, None, normals)
+}
+
+/// Frame `i` of the scene: displace `base` (the flat grid) into `positions` and `normals`,
+/// then draw it lit with `texture` (the checker `T(64, 64)`).
+#[allow(clippy::too_many_arguments)]
+pub fn water(
+    buf: &mut WaterBuffers,
+    texture: Texture<'_>,
+    base: &Mesh<'_>,
+    heights: &[u8],
+    positions: &mut [Vec3],
+    normals: &mut [Vec3],
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let d = water_displacement(heights, i)?;
+    let mesh = displace(&d, base, None, positions, normals)?;
+    render::<LitSphere, WATER_TRIANGLES, 64, 0>(
+        Target::Bands(buf),
+        texture,
+        &mesh,
+        &water_model(),
+        20,
+        true,
+        pause,
+        resume,
+    )
+}
