@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 17] = [
+const SCENES: [&str; 18] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -65,9 +65,11 @@ const SCENES: [&str; 17] = [
     "shadow_pcf2x2",
     "shadow_pcf3x3",
     "shadow_spot",
-    // Solid textures: the marble sphere and the flame.
+    // Solid textures: the marble sphere, the flame and the wooden cube lit by the baked 3D
+    // light map.
     "noise",
     "noise_flame",
+    "noise_light3d",
     // Environment maps: the sphere as a mirror, r per pixel and per vertex.
     "env_pixel",
     "env_vertex",
