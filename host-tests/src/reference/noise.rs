@@ -320,6 +320,29 @@ pub fn render_solid(
     width: u32,
     height: u32,
 ) -> RefSolidImage {
+    render_solid_lit(tris, pattern, octaves, ss, width, height, RefLight::Vertex)
+}
+
+/// Where the light of a solid texture comes from.
+#[derive(Clone, Copy)]
+pub enum RefLight<'a> {
+    /// The interpolated per-vertex intensity (varying 3).
+    Vertex,
+    /// A function of the object-space point (cells), `0..=1` (a 3D light map: see
+    /// [`light_map_trilinear`] and [`inverse_square`]).
+    At(&'a dyn Fn([f64; 3]) -> f64),
+}
+
+/// [`render_solid`] with the light from `light`.
+pub fn render_solid_lit(
+    tris: &[[Vertex<4>; 3]],
+    pattern: RefPattern,
+    octaves: RefOctaves,
+    ss: u32,
+    width: u32,
+    height: u32,
+    light: RefLight<'_>,
+) -> RefSolidImage {
     let n = (width * height) as usize;
     let mut img = RefSolidImage {
         width,
@@ -354,7 +377,11 @@ pub fn render_solid(
                         RefOctaves::Fixed(_) => 0.0,
                     };
                     let c = pattern.color(p, octaves, lambda);
-                    let k = k.clamp(0.0, 1.0);
+                    let k = match light {
+                        RefLight::Vertex => k,
+                        RefLight::At(f) => f(p),
+                    }
+                    .clamp(0.0, 1.0);
                     for i in 0..3 {
                         acc[i] += c[i] * k;
                     }
@@ -402,4 +429,102 @@ pub fn flame(x: f64, y: f64, t: f64, octaves: u32) -> [f64; 3] {
     let c = ramp(&FLAME_KEYS, (arg * 256.0).clamp(0.0, 255.0));
     let fade = (1.0 - y + bend / 2.0).clamp(0.0, 1.0);
     c.map(|v| v * fade)
+}
+
+/// A baked 3D light map read back in f64 (seed `000` §4.3): trilinear interpolation of the
+/// `side³` texels (`x` fastest, `255` = 1.0) between texel centres `origin + (i + 0.5) ·
+/// texel` (cells), clamp-to-edge; `0..=1`.
+pub fn light_map_trilinear(
+    texels: &[u8],
+    side: u32,
+    origin: [f64; 3],
+    texel: f64,
+    p: [f64; 3],
+) -> f64 {
+    let s = side as i64;
+    let at = |i: i64, j: i64, k: i64| {
+        let c = |v: i64| v.clamp(0, s - 1) as usize;
+        f64::from(texels[(c(k) * s as usize + c(j)) * s as usize + c(i)])
+    };
+    let u: [f64; 3] =
+        core::array::from_fn(|a| ((p[a] - origin[a]) / texel - 0.5).clamp(0.0, (s - 1) as f64));
+    let (i, j, k) = (
+        u[0].floor() as i64,
+        u[1].floor() as i64,
+        u[2].floor() as i64,
+    );
+    let (fx, fy, fz) = (u[0] - i as f64, u[1] - j as f64, u[2] - k as f64);
+    let l = |a: f64, b: f64, t: f64| a + (b - a) * t;
+    let plane = |k: i64| {
+        l(
+            l(at(i, j, k), at(i + 1, j, k), fx),
+            l(at(i, j + 1, k), at(i + 1, j + 1, k), fx),
+            fy,
+        )
+    };
+    l(plane(k), plane(k + 1), fz) / 255.0
+}
+
+/// The light a 3D light map is baked from, unbaked (seed `000` §4.3): `min(1, ambient +
+/// Σ power / max(d², 1/16))`, `d` the distance in cells from `p` to each light (`[x, y, z,
+/// power]`).
+pub fn inverse_square(lights: &[[f64; 4]], ambient: f64, p: [f64; 3]) -> f64 {
+    let e: f64 = lights
+        .iter()
+        .map(|l| {
+            l[3] / (0..3)
+                .map(|a| (p[a] - l[a]).powi(2))
+                .sum::<f64>()
+                .max(1.0 / 16.0)
+        })
+        .sum();
+    (ambient + e).min(1.0)
+}
+
+/// The flame drawn on a quad (fixel's `[x, y]` varyings, Q16 flame units; no culling),
+/// at time `t` seconds with `octaves` of turbulence, sampled on an `ss × ss` grid inside
+/// each covered pixel and averaged (`ss = 1`: at the centre).
+pub fn render_flame(
+    tris: &[[Vertex<2>; 3]],
+    t: f64,
+    octaves: u32,
+    ss: u32,
+    width: u32,
+    height: u32,
+) -> RefSolidImage {
+    let n = (width * height) as usize;
+    let mut img = RefSolidImage {
+        width,
+        height,
+        rgb: vec![[0.0; 3]; n],
+        covered: vec![false; n],
+    };
+    for tri in tris {
+        let Some(win) = super::raster::window_of(tri, width, height) else {
+            continue;
+        };
+        let xy = tri.map(|v| [0, 1].map(|j| f64::from(v.varyings[j]) / 65536.0));
+        rasterize(&win, width, height, |x, y, _| {
+            let mut acc = [0.0; 3];
+            for sy in 0..ss {
+                for sx in 0..ss {
+                    let px = f64::from(x) + (f64::from(sx) + 0.5) / f64::from(ss);
+                    let py = f64::from(y) + (f64::from(sy) + 0.5) / f64::from(ss);
+                    let l = barycentrics(&win, px, py);
+                    let q = [0, 1, 2].map(|i| l[i] * win[i].inv_w);
+                    let qs = q[0] + q[1] + q[2];
+                    let v: [f64; 2] =
+                        core::array::from_fn(|j| (0..3).map(|i| q[i] * xy[i][j]).sum::<f64>() / qs);
+                    let c = flame(v[0], v[1], t, octaves);
+                    for i in 0..3 {
+                        acc[i] += c[i];
+                    }
+                }
+            }
+            let i = (y * width + x) as usize;
+            img.rgb[i] = acc.map(|a| a / f64::from(ss * ss));
+            img.covered[i] = true;
+        });
+    }
+    img
 }
