@@ -344,3 +344,53 @@ fn solid_times_texture_is_the_product() {
     }
     assert!(covered > 5000);
 }
+
+/// Composition by selection (`Select`: granite, and marble where a third noise passes 0.1,
+/// blended over ±0.1 with a smoothstep) against its f64 definition at 40,000 random points
+/// (4 octaves): within the error of the two patterns themselves (max 4, p99 2 RGB565
+/// LSBs); where the weight is 0 or 1 the colour is exactly `a`'s or `b`'s; bad parameters
+/// are refused.
+#[test]
+fn select_within_budget_of_reference() {
+    use fixel::shading::noise::{Fixed, Pattern, Select, SELECT_OFFSET};
+    use host_tests::reference::noise::{select_color, RefPattern};
+    use host_tests::reference::rgb565_from_f64;
+    let ramps = Ramps::new().unwrap();
+    let (a, b) = (ramps.granite(), ramps.marble());
+    let s = Select::new(a, b, 3277, 6554, 1, SELECT_OFFSET).unwrap();
+    let [marble, _, granite] = RefPattern::presets();
+    let off = SELECT_OFFSET.map(|v| f64::from(v) / 65536.0);
+    let mut rng = Rng(41);
+    let (mut got, mut want) = (Vec::new(), Vec::new());
+    let mut blended = 0;
+    for _ in 0..40_000 {
+        let p = [rng.near(8), rng.near(8), rng.near(8)];
+        let c = s.color(p, &Fixed(4), 0);
+        match s.weight(p) {
+            0 => assert_eq!(c, a.color(p, &Fixed(4), 0)),
+            256 => assert_eq!(c, b.color(p, &Fixed(4), 0)),
+            _ => blended += 1,
+        }
+        got.push(c);
+        let pf = p.map(|v| f64::from(v) / 65536.0);
+        want.push(rgb565_from_f64(select_color(
+            granite,
+            marble,
+            0.1,
+            0.2,
+            1,
+            off,
+            pf,
+            RefOctaves::Fixed(4),
+            0.0,
+        )));
+    }
+    let cov = vec![true; got.len()];
+    let r = compare_rgb565(&got, &cov, &want, &cov);
+    println!("select vs f64: {r} ({blended} blended points)");
+    assert!(blended > 2_000, "the transition band is exercised");
+    assert!(r.max <= 4 && r.p99 <= 2, "{r}");
+    for (t, w, sh) in [(40_000, 100, 0), (0, 0, 0), (0, 70_000, 0), (0, 100, 9)] {
+        assert!(Select::new(a, b, t, w, sh, SELECT_OFFSET).is_err());
+    }
+}

@@ -528,3 +528,31 @@ pub fn render_flame(
     }
     img
 }
+
+/// Composition by selection (fixel's `Select`), in f64: the selector `n = noise(2^shift ·
+/// p + offset)`, `t = clamp((n − (threshold − width/2)) / width, 0, 1)`, the weight of `b`
+/// `w = 3t² − 2t³`, and the colour `a · (1 − w) + b · w`. Threshold and width in noise
+/// units (`-1..1`), offset in cells.
+#[allow(clippy::too_many_arguments)]
+pub fn select_color(
+    a: RefPattern,
+    b: RefPattern,
+    threshold: f64,
+    width: f64,
+    shift: u32,
+    offset: [f64; 3],
+    p: [f64; 3],
+    octaves: RefOctaves,
+    lambda: f64,
+) -> [f64; 3] {
+    let s = f64::from(1u32 << shift);
+    let n = noise(
+        p[0] * s + offset[0],
+        p[1] * s + offset[1],
+        p[2] * s + offset[2],
+    );
+    let t = ((n - (threshold - width / 2.0)) / width).clamp(0.0, 1.0);
+    let w = t * t * (3.0 - 2.0 * t);
+    let (ca, cb) = (a.color(p, octaves, lambda), b.color(p, octaves, lambda));
+    core::array::from_fn(|i| ca[i] * (1.0 - w) + cb[i] * w)
+}

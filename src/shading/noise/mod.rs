@@ -11,7 +11,8 @@
 //!   3D + time).
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map (seed `000` §4.3), trilinear
 //!   (`cargo xtask bake-light3d`).
-//! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light.
+//! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light;
+//!   [`Select`]: one of two solid textures, chosen by a third noise with a smooth threshold.
 //! * [`SolidMesh`]: mesh vertices with the object-space point as varyings; [`presets`]: the
 //!   demonstration colours and parameters.
 //!
@@ -88,6 +89,7 @@ mod lightmap3d;
 mod patterns;
 pub mod presets;
 mod scene;
+mod select;
 mod solid;
 mod turbulence;
 
@@ -99,6 +101,7 @@ pub use lightmap3d::{LightMap3d, LitSolid};
 pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};
+pub use select::{Select, SELECT_OFFSET};
 pub use solid::{Fixed, Octaves, SolidShader, SolidTriangle};
 pub use turbulence::{turbulence, BandLimit, ABS_NOISE_MEAN_Q15, MAX_OCTAVES};
 
