@@ -556,3 +556,82 @@ pub fn select_color(
     let (ca, cb) = (a.color(p, octaves, lambda), b.color(p, octaves, lambda));
     core::array::from_fn(|i| ca[i] * (1.0 - w) + cb[i] * w)
 }
+
+/// The 32 gradients of 4D gradient noise: the midpoints of the edges of the 4-cube
+/// (three components ±1, one 0), in the order of Stefan Gustavson's `grad4` table
+/// ("Simplex noise demystified", 2005): the zero at x for 0..8, y for 8..16, z for 16..24,
+/// w for 24..32.
+const GRAD4: [[f64; 4]; 32] = [
+    [0.0, 1.0, 1.0, 1.0],
+    [0.0, 1.0, 1.0, -1.0],
+    [0.0, 1.0, -1.0, 1.0],
+    [0.0, 1.0, -1.0, -1.0],
+    [0.0, -1.0, 1.0, 1.0],
+    [0.0, -1.0, 1.0, -1.0],
+    [0.0, -1.0, -1.0, 1.0],
+    [0.0, -1.0, -1.0, -1.0],
+    [1.0, 0.0, 1.0, 1.0],
+    [1.0, 0.0, 1.0, -1.0],
+    [1.0, 0.0, -1.0, 1.0],
+    [1.0, 0.0, -1.0, -1.0],
+    [-1.0, 0.0, 1.0, 1.0],
+    [-1.0, 0.0, 1.0, -1.0],
+    [-1.0, 0.0, -1.0, 1.0],
+    [-1.0, 0.0, -1.0, -1.0],
+    [1.0, 1.0, 0.0, 1.0],
+    [1.0, 1.0, 0.0, -1.0],
+    [1.0, -1.0, 0.0, 1.0],
+    [1.0, -1.0, 0.0, -1.0],
+    [-1.0, 1.0, 0.0, 1.0],
+    [-1.0, 1.0, 0.0, -1.0],
+    [-1.0, -1.0, 0.0, 1.0],
+    [-1.0, -1.0, 0.0, -1.0],
+    [1.0, 1.0, 1.0, 0.0],
+    [1.0, 1.0, -1.0, 0.0],
+    [1.0, -1.0, 1.0, 0.0],
+    [1.0, -1.0, -1.0, 0.0],
+    [-1.0, 1.0, 1.0, 0.0],
+    [-1.0, 1.0, -1.0, 0.0],
+    [-1.0, -1.0, 1.0, 0.0],
+    [-1.0, -1.0, -1.0, 0.0],
+];
+
+/// 4D gradient noise at `p` (cells), Perlin's construction one dimension up: the corner
+/// `c` of the cell has the gradient `GRAD4[p[p[p[p[c0] + c1] + c2] + c3] mod 32]` (the
+/// chained permutation), dotted with the offset to the point, blended by the quintic
+/// fade along each axis.
+pub fn noise4(p: [f64; 4]) -> f64 {
+    let perm = self::p();
+    let fl = p.map(f64::floor);
+    let c: [usize; 4] = core::array::from_fn(|i| fl[i].rem_euclid(256.0) as usize);
+    let f: [f64; 4] = core::array::from_fn(|i| p[i] - fl[i]);
+    let mut sum = 0.0;
+    for corner in 0..16usize {
+        let d: [usize; 4] = core::array::from_fn(|i| (corner >> i) & 1);
+        let h = perm[perm[perm[perm[c[0] + d[0]] + c[1] + d[1]] + c[2] + d[2]] + c[3] + d[3]];
+        let g = GRAD4[h % 32];
+        let dot: f64 = (0..4).map(|i| g[i] * (f[i] - d[i] as f64)).sum();
+        let weight: f64 = (0..4)
+            .map(|i| {
+                let u = fade(f[i]);
+                if d[i] == 1 {
+                    u
+                } else {
+                    1.0 - u
+                }
+            })
+            .product();
+        sum += weight * dot;
+    }
+    sum
+}
+
+/// Animated turbulence in f64: `Σ_{k<n} |noise4(2^k p)| / 2^k`.
+pub fn turbulence4(p: [f64; 4], octaves: u32) -> f64 {
+    (0..octaves)
+        .map(|k| {
+            let s = f64::from(1u32 << k);
+            noise4(p.map(|c| c * s)).abs() / s
+        })
+        .sum()
+}
