@@ -394,3 +394,28 @@ fn select_within_budget_of_reference() {
         assert!(Select::new(a, b, t, w, sh, SELECT_OFFSET).is_err());
     }
 }
+
+proptest::proptest! {
+    /// The flame (2D + time through `noise3`) at any point of its quad and any time in the
+    /// first minute, 1 to 8 octaves: within 3 RGB565 LSBs of its f64 definition per
+    /// channel.
+    #[test]
+    fn flame_anywhere(x in -85_197i32..=85_197, y in -6_554i32..=91_750, t in 0i32..(60 << 16), k in 1u32..=8) {
+        use fixel::shading::noise::{flame, FLAME_KEYS};
+        use host_tests::reference::noise::flame as ref_flame;
+        use host_tests::reference::rgb565_from_f64;
+        let ramp = Ramp::from_keys(&FLAME_KEYS).unwrap();
+        let got = flame(&ramp, x, y, t, k);
+        let want = rgb565_from_f64(ref_flame(
+            f64::from(x) / 65536.0,
+            f64::from(y) / 65536.0,
+            f64::from(t) / 65536.0,
+            k,
+        ));
+        let ch = |c: u16| [c >> 11, (c >> 5) & 63, c & 31];
+        let (g, w) = (ch(got), ch(want));
+        for i in 0..3 {
+            proptest::prop_assert!(g[i].abs_diff(w[i]) <= 3, "{:?} vs {:?}", g, w);
+        }
+    }
+}
