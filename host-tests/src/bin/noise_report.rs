@@ -8,10 +8,12 @@
 //! * The firmware scene (`examples/firmware/src/noise.rs`: the marble sphere, 320 x 240, 8-row
 //!   bands), one row per variant of `report_noise`: marble with 0 to 6 fixed octaves, marble
 //!   band-limited (at most 6, footprint per span or per pixel; and with the projection
-//!   subdivided every 8 pixels instead of exact), wood and granite band-limited. Host ns/px (the firmware's band code, median of N runs), exact
-//!   instructions per pixel on Cortex-M0+ and M4F (from `mcu.tsv`, checksums checked against
-//!   this program's), error against the f64 reference with the same octave rule, and
-//!   against the 6 x 6 supersampled, 8-octave f64 reference (the ideal).
+//!   subdivided every 8 pixels instead of exact), wood and granite band-limited, and granite
+//!   with marble selected by a third noise (`Select`). Host ns/px (the firmware's band
+//!   code, median of N runs), exact instructions per pixel on Cortex-M0+ and M4F (from
+//!   `mcu.tsv`, checksums checked against this program's), error against the f64
+//!   reference with the same octave rule, and against the 6 x 6 supersampled, 8-octave f64
+//!   reference (the ideal).
 //! * The firmware scene `noise_light3d` (`examples/firmware/src/light3d_scene.rs`): the
 //!   wooden cube lit per vertex and by the baked 3D light map, the same figures; the light
 //!   map's reference multiplies by the f64 trilinear light, its ideal by the unbaked
@@ -42,7 +44,9 @@ use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw, SubdividedBy};
-use fixel::shading::noise::{BandLimit, Fixed, FlameShader, LitSolid, Ramp, Ramps, SolidShader};
+use fixel::shading::noise::{
+    BandLimit, Fixed, FlameShader, LitSolid, Ramp, Ramps, Select, SolidShader, SELECT_OFFSET,
+};
 use fixel::shading::Shader;
 use fixel::surface::Frame;
 use fixel::texture::LodGranularity;
@@ -413,6 +417,34 @@ fn main() {
     let ideal_granite = ideal_cache(granite);
     let res = sphere_frame(SolidShader::new(ramps.granite(), band), &tris, runs);
     measure("granite-band6-span", res, granite, rband, &ideal_granite);
+    // Composition by selection: granite, and marble where a third noise passes 0.1.
+    let select = RefPattern::Select {
+        a: Box::leak(Box::new(granite)),
+        b: Box::leak(Box::new(marble)),
+        threshold: 0.1,
+        width: 0.2,
+        shift: 1,
+        offset: SELECT_OFFSET.map(|v| f64::from(v) / 65536.0),
+    };
+    let ideal_select = ideal_cache(select);
+    let sel = Select::new(
+        ramps.granite(),
+        ramps.marble(),
+        3277,
+        6554,
+        1,
+        SELECT_OFFSET,
+    )
+    .expect("select");
+    let res = sphere_frame(SolidShader::new(sel, band), &tris, runs);
+    let _ = write_png_rgb8(out.join("noise_select.png"), W, H, &rgb8(&res.0));
+    measure(
+        "select-granite-marble-band6-span",
+        res,
+        select,
+        rband,
+        &ideal_select,
+    );
 
     // ---- The wooden cube: per-vertex light against the baked 3D light map
     // (`noise_light3d`). Reference: the f64 pattern times the f64 light with the same rule

@@ -196,6 +196,21 @@ pub enum RefPattern {
         /// Grain scale `s`.
         shift: u32,
     },
+    /// `a` or `b` by a third noise with a smooth threshold: see [`select_color`].
+    Select {
+        /// Below the threshold.
+        a: &'static RefPattern,
+        /// Above it.
+        b: &'static RefPattern,
+        /// Threshold, noise units.
+        threshold: f64,
+        /// Blend width, noise units.
+        width: f64,
+        /// Selector scale `2^shift`.
+        shift: u32,
+        /// Selector offset, cells.
+        offset: [f64; 3],
+    },
 }
 
 impl RefPattern {
@@ -240,6 +255,14 @@ impl RefPattern {
                 let t = turbulence(p.map(|c| c * s), octaves, lambda + f64::from(shift));
                 ramp(keys, t * 256.0)
             }
+            RefPattern::Select {
+                a,
+                b,
+                threshold,
+                width,
+                shift,
+                offset,
+            } => select_color(*a, *b, threshold, width, shift, offset, p, octaves, lambda),
         }
     }
 }
