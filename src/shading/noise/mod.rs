@@ -2,7 +2,8 @@
 //! the 3D object-space point, with no seams, no distortion and no texture memory.
 //!
 //! * [`noise3`]: Perlin's improved gradient noise in 3D, all in `i32` fixed point;
-//!   [`noise4`] and [`turbulence4`]: the same in 4D, for solid textures animated over time.
+//!   [`noise4`], [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
+//!   change shape over time.
 //! * [`turbulence`] and [`BandLimit`]: `Σ |noise(2^k p)| / 2^k`, with the octaves finer than
 //!   a pixel replaced by their mean (the seeds' anti-aliasing of procedural textures).
 //! * [`Ramp`], [`Marble`], [`Wood`], [`Granite`]: patterns over the noise, and
@@ -100,7 +101,7 @@ pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
 };
 pub use lightmap3d::{LightMap3d, LitSolid};
-pub use noise4::{noise4, turbulence4};
+pub use noise4::{noise4, turbulence4, Animated};
 pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};

@@ -143,3 +143,37 @@ pub fn turbulence4(p: [i32; 4], octaves: u32) -> i32 {
     }
     sum
 }
+
+/// Octaves of 4D turbulence at time `t`: any [`Pattern`](super::Pattern) drawn with it
+/// changes shape over time, where a 3D turbulence could only move it. `t` is the fourth
+/// noise coordinate (I16F16 lattice units: `t = seconds · speed`); `octaves` as
+/// [`turbulence4`], the sum clamped to `0..2^16` (the [`Octaves`](super::Octaves)
+/// contract; it passes 2.0 only near the rare extremes of the noise).
+///
+/// ```
+/// use fixel::shading::noise::{Animated, Octaves, Pattern, Ramps};
+/// let ramps = Ramps::new()?;
+/// let p = [0x1_8000, 0x0_4000, 0x2_C000];
+/// // The same point of a marble, a quarter of a cell of time apart.
+/// let a = ramps.marble().color(p, &Animated { octaves: 5, t: 0 }, 0);
+/// let b = ramps.marble().color(p, &Animated { octaves: 5, t: 0x4000 }, 0);
+/// assert_eq!(Animated { octaves: 5, t: 0 }.turbulence(p, 0),
+///            fixel::shading::noise::turbulence4([p[0], p[1], p[2], 0], 5));
+/// # let _ = (a, b);
+/// # Ok::<(), fixel::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Animated {
+    /// Octaves summed (clamped to 8).
+    pub octaves: u8,
+    /// Time: the fourth noise coordinate, I16F16 lattice units.
+    pub t: i32,
+}
+
+impl super::Octaves for Animated {
+    const LOD: bool = false;
+    #[inline(always)]
+    fn turbulence(&self, p: [i32; 3], _lambda: i32) -> i32 {
+        turbulence4([p[0], p[1], p[2], self.t], u32::from(self.octaves)).min(65_535)
+    }
+}
