@@ -1,5 +1,7 @@
 //! Solid textures from Perlin noise: a marble sphere and a wooden cube on a granite floor,
-//! band-limited turbulence, lit per vertex, drawn through fixel's open fragment stage.
+//! band-limited turbulence, lit per vertex, drawn through fixel's open fragment stage, and
+//! the marble teapot (`noise_teapot.png`: the Utah teapot carved from one block), and marble
+//! that changes shape over time through 4D noise (`noise_marble4d.gif`).
 //! Also writes the same scene with 6 fixed octaves (aliasing on the floor) and the animated
 //! flame of seed `000` §4.2 as a GIF (48 frames, 2 s loop).
 //!
@@ -10,6 +12,10 @@ mod common;
 #[path = "common/light3d_cube.rs"]
 #[allow(dead_code)]
 mod light3d_cube;
+#[allow(dead_code)] // the solid texture needs no uv or tangents
+mod teapot {
+    include!("../assets/teapot/teapot_mesh.rs");
+}
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use fixel::demo;
@@ -203,6 +209,109 @@ fn light_map_picture(ramps: &Ramps) -> Vec<Rgb565> {
     color
 }
 
+/// The marble teapot: the Utah teapot (`assets/teapot`, 1,560 triangles) carved from one
+/// block of marble. The veins run through the body, spout and handle without a seam:
+/// the texture is a function of the point, not of a uv layout.
+fn marble_teapot(ramps: &Ramps) -> Vec<Rgb565> {
+    use fixel::math::{Angle, Vec3};
+    let n = (W * H) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); n], vec![0u16; n]);
+    let mut frame = Frame::new(&mut color, W, H)
+        .expect("frame")
+        .with_depth(&mut depth)
+        .expect("depth");
+    frame.clear(Rgb565::new(5, 10, 6));
+    let model = Mat4::translation(Vec3::new(
+        Fx::from_num(-0.45),
+        Fx::from_num(0.1),
+        Fx::from_num(-7.0),
+    )) * (Mat4::rotation_x(Angle::from_degrees(Fx::from_num(18)))
+        * Mat4::rotation_y(Angle::from_degrees(Fx::from_num(-30))));
+    let mesh = SolidMesh {
+        positions: &teapot::TEAPOT_POSITIONS,
+        normals: Some(&teapot::TEAPOT_NORMALS),
+        indices: &teapot::TEAPOT_INDICES,
+        scale: TEAPOT_SCALE,
+    };
+    let mut tris = Vec::new();
+    mesh.triangles(
+        &model,
+        &demo::camera(200),
+        Some(&DirectionalLight::default()),
+        |t| tris.push(*t),
+    );
+    draw(
+        SolidShader::new(ramps.marble(), BandLimit::new(6)),
+        &tris,
+        &mut frame,
+    );
+    color
+}
+
+/// Marble that changes shape over time (4D noise, `Animated`): the sphere, 160 x 120, 24
+/// frames an eighth of a cell of time apart, played forwards then backwards so the GIF
+/// loops.
+fn animated_marble_gif(ramps: &Ramps, path: &std::path::Path) {
+    use fixel::math::Vec3;
+    use fixel::shading::noise::Animated;
+    let (w, h) = (160u32, 120u32);
+    let model = Mat4::translation(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::from_num(-4.6)))
+        * Mat4::rotation_y(fixel::math::Angle::from_turns(4172));
+    let sphere = demo::sphere();
+    let mesh = SolidMesh {
+        positions: &sphere.positions,
+        normals: Some(&sphere.normals),
+        indices: &sphere.indices,
+        scale: SHOWCASE_SCALE,
+    };
+    let mut tris = Vec::new();
+    mesh.triangles(
+        &model,
+        &demo::camera(200),
+        Some(&DirectionalLight::default()),
+        |t| tris.push(*t),
+    );
+    let file = std::fs::File::create(path).expect("create GIF");
+    let mut enc = gif::Encoder::new(file, w as u16, h as u16, &[]).expect("GIF header");
+    enc.set_repeat(gif::Repeat::Infinite).expect("GIF loop");
+    let vp = Viewport::new(0, 0, w, h).expect("viewport");
+    let order: Vec<i32> = (0..24).chain((1..23).rev()).collect();
+    for (k, &i) in order.iter().enumerate() {
+        let shader = SolidShader::new(
+            ramps.marble(),
+            Animated {
+                octaves: 5,
+                t: i << 13,
+            },
+        );
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::Back).expect("draw");
+        let mut color = vec![Rgb565::new(5, 10, 6); (w * h) as usize];
+        let mut frame = Frame::new(&mut color, w, h).expect("frame");
+        draw.clip_triangles(&tris, &mut frame)
+            .expect("the draw tests no depth");
+        let rgb: Vec<u8> = color
+            .iter()
+            .flat_map(|p| {
+                let (r, g, b) = (p.r(), p.g(), p.b());
+                [
+                    (r << 3) | (r >> 2),
+                    (g << 2) | (g >> 4),
+                    (b << 3) | (b >> 2),
+                ]
+            })
+            .collect();
+        let mut f = gif::Frame::from_rgb_speed(w as u16, h as u16, &rgb, 10);
+        f.delay = 8; // 1/100 s units: 12.5 fps
+        enc.write_frame(&f).expect("GIF frame");
+        if k == 0 {
+            common::write_png(&path.with_extension("png"), w, h, &color);
+        }
+    }
+}
+
+/// Lattice cells per teapot unit (the teapot is 6.4 units long).
+const TEAPOT_SCALE: Fx = Fx::from_bits(91_750); // 1.4
+
 fn main() {
     let ramps = Ramps::new().expect("ramps");
     let dir = common::out_dir();
@@ -211,6 +320,9 @@ fn main() {
     let fixed = render(&ramps, Some(6));
     common::write_png(&dir.join("noise_fixed6.png"), W, H, &fixed);
     flame_gif(&dir.join("flame.gif"));
+    animated_marble_gif(&ramps, &dir.join("noise_marble4d.gif"));
+    let pot = marble_teapot(&ramps);
+    common::write_png(&dir.join("noise_teapot.png"), W, H, &pot);
     let lit = light_map_picture(&ramps);
     common::write_png(&dir.join("noise_lightmap.png"), W, H, &lit);
     println!("wrote {} and flame.gif", dir.join("noise.png").display());

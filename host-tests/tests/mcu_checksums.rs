@@ -256,6 +256,7 @@ fn mcu_frames() {
     // harness's progress dots and not start with `mcu-expected`.
     mcu_noise_frame();
     mcu_noise_flame();
+    mcu_noise_light3d();
 }
 
 #[path = "../../examples/firmware/src/noise.rs"]
@@ -277,6 +278,27 @@ fn mcu_noise_flame() {
     let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
     let r = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
     print("noise_flame", &r);
+}
+
+#[path = "../../examples/firmware/src/light3d_scene.rs"]
+#[allow(dead_code, unused_imports)]
+mod light3d_scene;
+
+/// The 3D light-map firmware (`examples/firmware/src/bin/noise_light3d.rs`): the wooden
+/// cube lit by the baked light map, the same band code.
+fn mcu_noise_light3d() {
+    use fixel::shading::noise::{BandLimit, LitSolid, Ramps};
+    use fixel::texture::LodGranularity;
+    let ramps = Ramps::new().unwrap();
+    let mut buf = Box::new(light3d_scene::Light3dBuffers::new());
+    let shader = LitSolid {
+        pattern: ramps.wood(),
+        octaves: BandLimit::new(6),
+        light: light3d_scene::light_map().unwrap(),
+        granularity: LodGranularity::Span,
+    };
+    let r = light3d_scene::render_light_map(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+    print("noise_light3d", &r);
 }
 
 // The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.

@@ -344,3 +344,78 @@ fn solid_times_texture_is_the_product() {
     }
     assert!(covered > 5000);
 }
+
+/// Composition by selection (`Select`: granite, and marble where a third noise passes 0.1,
+/// blended over ±0.1 with a smoothstep) against its f64 definition at 40,000 random points
+/// (4 octaves): within the error of the two patterns themselves (max 4, p99 2 RGB565
+/// LSBs); where the weight is 0 or 1 the colour is exactly `a`'s or `b`'s; bad parameters
+/// are refused.
+#[test]
+fn select_within_budget_of_reference() {
+    use fixel::shading::noise::{Fixed, Pattern, Select, SELECT_OFFSET};
+    use host_tests::reference::noise::{select_color, RefPattern};
+    use host_tests::reference::rgb565_from_f64;
+    let ramps = Ramps::new().unwrap();
+    let (a, b) = (ramps.granite(), ramps.marble());
+    let s = Select::new(a, b, 3277, 6554, 1, SELECT_OFFSET).unwrap();
+    let [marble, _, granite] = RefPattern::presets();
+    let off = SELECT_OFFSET.map(|v| f64::from(v) / 65536.0);
+    let mut rng = Rng(41);
+    let (mut got, mut want) = (Vec::new(), Vec::new());
+    let mut blended = 0;
+    for _ in 0..40_000 {
+        let p = [rng.near(8), rng.near(8), rng.near(8)];
+        let c = s.color(p, &Fixed(4), 0);
+        match s.weight(p) {
+            0 => assert_eq!(c, a.color(p, &Fixed(4), 0)),
+            256 => assert_eq!(c, b.color(p, &Fixed(4), 0)),
+            _ => blended += 1,
+        }
+        got.push(c);
+        let pf = p.map(|v| f64::from(v) / 65536.0);
+        want.push(rgb565_from_f64(select_color(
+            granite,
+            marble,
+            0.1,
+            0.2,
+            1,
+            off,
+            pf,
+            RefOctaves::Fixed(4),
+            0.0,
+        )));
+    }
+    let cov = vec![true; got.len()];
+    let r = compare_rgb565(&got, &cov, &want, &cov);
+    println!("select vs f64: {r} ({blended} blended points)");
+    assert!(blended > 2_000, "the transition band is exercised");
+    assert!(r.max <= 4 && r.p99 <= 2, "{r}");
+    for (t, w, sh) in [(40_000, 100, 0), (0, 0, 0), (0, 70_000, 0), (0, 100, 9)] {
+        assert!(Select::new(a, b, t, w, sh, SELECT_OFFSET).is_err());
+    }
+}
+
+proptest::proptest! {
+    /// The flame (2D + time through `noise3`) at any point of its quad and any time in the
+    /// first minute, 1 to 8 octaves: within 3 RGB565 LSBs of its f64 definition per
+    /// channel.
+    #[test]
+    fn flame_anywhere(x in -85_197i32..=85_197, y in -6_554i32..=91_750, t in 0i32..(60 << 16), k in 1u32..=8) {
+        use fixel::shading::noise::{flame, FLAME_KEYS};
+        use host_tests::reference::noise::flame as ref_flame;
+        use host_tests::reference::rgb565_from_f64;
+        let ramp = Ramp::from_keys(&FLAME_KEYS).unwrap();
+        let got = flame(&ramp, x, y, t, k);
+        let want = rgb565_from_f64(ref_flame(
+            f64::from(x) / 65536.0,
+            f64::from(y) / 65536.0,
+            f64::from(t) / 65536.0,
+            k,
+        ));
+        let ch = |c: u16| [c >> 11, (c >> 5) & 63, c & 31];
+        let (g, w) = (ch(got), ch(want));
+        for i in 0..3 {
+            proptest::prop_assert!(g[i].abs_diff(w[i]) <= 3, "{:?} vs {:?}", g, w);
+        }
+    }
+}

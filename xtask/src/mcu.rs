@@ -65,9 +65,11 @@ const SCENES: [&str; 18] = [
     "shadow_pcf2x2",
     "shadow_pcf3x3",
     "shadow_spot",
-    // Solid textures: the marble sphere and the flame.
+    // Solid textures: the marble sphere, the flame and the wooden cube lit by the baked 3D
+    // light map.
     "noise",
     "noise_flame",
+    "noise_light3d",
     // Environment maps: the sphere as a mirror, r per pixel and per vertex.
     "env_pixel",
     "env_vertex",

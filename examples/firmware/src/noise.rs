@@ -197,6 +197,21 @@ pub fn flame_frames(
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
+    flame_frames_with(color, frames, 5, pause, resume)
+}
+
+/// Flame units of the quad's corners: `x` in `-1.3..1.3`, `y` in `-0.1..1.4` (I16F16), as
+/// `(x0, x1, y0, y1)`; `y0` at the bottom row.
+pub const FLAME_QUAD: (i32, i32, i32, i32) = (-85_197, 85_197, -6_554, 91_750);
+
+/// [`flame_frames`] with `octaves` of turbulence (`report_noise` measures several).
+pub fn flame_frames_with(
+    color: &mut [Rgb565; FLAME_PIXELS],
+    frames: u32,
+    octaves: u8,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
     use fixel::shading::noise::{FlameShader, Ramp, FLAME_KEYS};
     let ramp = Ramp::from_keys(&FLAME_KEYS)?;
     let vp = Viewport::new(0, 0, FLAME_W, FLAME_H)?;
@@ -206,8 +221,7 @@ pub fn flame_frames(
             [x, y],
         )
     };
-    // Flame units: x in -1.3..1.3, y in -0.1..1.4.
-    let (x0, x1, y0, y1) = (-85_197, 85_197, -6_554, 91_750);
+    let (x0, x1, y0, y1) = FLAME_QUAD;
     let (a, b, c, d) = (
         v(-1, -1, x0, y0),
         v(1, -1, x1, y0),
@@ -221,7 +235,7 @@ pub fn flame_frames(
         let shader = FlameShader {
             ramp: &ramp,
             t: (i as i32) << 13,
-            octaves: 5,
+            octaves,
         };
         let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None)?;
         let mut frame = Frame::new(color, FLAME_W, FLAME_H)?;

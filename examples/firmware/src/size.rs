@@ -16,7 +16,8 @@ use crate::scenes::{Fnv1a, H, ROWS, W};
 
 const BAND: usize = (W * ROWS) as usize;
 
-static POSITIONS: [Vec3; 3] = [
+/// The triangle every `size_*` firmware draws (model space, in front of `demo::camera`).
+pub static POSITIONS: [Vec3; 3] = [
     Vec3::new(
         Fx::from_bits(-65536),
         Fx::from_bits(-65536),
@@ -33,13 +34,15 @@ static POSITIONS: [Vec3; 3] = [
         Fx::from_bits(-4 << 16),
     ),
 ];
-static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
+/// Its normals (facing the camera).
+pub static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
 static UVS: [[Fx; 2]; 3] = [
     [Fx::ZERO, Fx::ZERO],
     [Fx::from_bits(2 << 16), Fx::ZERO],
     [Fx::ONE, Fx::from_bits(2 << 16)],
 ];
-static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
+/// Its one triangle.
+pub static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
 
 /// Draws the triangle with `draw` in bands (depth band only when `depth`), lit when `lit`;
 /// returns (checksum, pixels).

@@ -8,16 +8,27 @@
 //! * The firmware scene (`examples/firmware/src/noise.rs`: the marble sphere, 320 x 240, 8-row
 //!   bands), one row per variant of `report_noise`: marble with 0 to 6 fixed octaves, marble
 //!   band-limited (at most 6, footprint per span or per pixel; and with the projection
-//!   subdivided every 8 pixels instead of exact), wood and granite band-limited. Host ns/px (the firmware's band code, median of N runs), exact
-//!   instructions per pixel on Cortex-M0+ and M4F (from `mcu.tsv`, checksums checked against
-//!   this program's), error against the f64 reference with the same octave rule, and
-//!   against the 6 x 6 supersampled, 8-octave f64 reference (the ideal).
+//!   subdivided every 8 pixels instead of exact), wood and granite band-limited, and granite
+//!   with marble selected by a third noise (`Select`). Host ns/px (the firmware's band
+//!   code, median of N runs), exact instructions per pixel on Cortex-M0+ and M4F (from
+//!   `mcu.tsv`, checksums checked against this program's), error against the f64
+//!   reference with the same octave rule, and against the 6 x 6 supersampled, 8-octave f64
+//!   reference (the ideal).
+//! * The firmware scene `noise_light3d` (`examples/firmware/src/light3d_scene.rs`): the
+//!   wooden cube lit per vertex and by the baked 3D light map, the same figures; the light
+//!   map's reference multiplies by the f64 trilinear light, its ideal by the unbaked
+//!   inverse-square light.
+//! * The flame of `noise_flame` (4 frames of 80 x 96) with 1, 3 and 5 octaves against the
+//!   f64 flame drawn on the same quad.
 //! * The granite floor running to the horizon (`host_tests::noise_scenes`, 160 x 120): fixed
 //!   1 to 6 octaves against band-limited, same figures on the host, where band-limiting
 //!   matters most.
 //!
-//! Writes `noise.md`, `noise_plot.png` (cost against PSNR to the ideal) and the frames.
+//! Writes `noise.md`, `noise_plot.png` (cost against PSNR to the ideal) and the frames
+//! (`noise_marble.png`, `noise_light3d.png`, `noise_flame.png`, the floors).
 
+#[path = "../../../examples/firmware/src/light3d_scene.rs"]
+mod light3d_scene;
 #[path = "../../../examples/firmware/src/noise.rs"]
 #[allow(dead_code)]
 mod noise;
@@ -33,14 +44,19 @@ use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw, SubdividedBy};
-use fixel::shading::noise::{BandLimit, Fixed, Ramps, SolidShader};
+use fixel::shading::noise::{
+    BandLimit, Fixed, FlameShader, LitSolid, Ramp, Ramps, Select, SolidShader, SELECT_OFFSET,
+};
 use fixel::shading::Shader;
 use fixel::surface::Frame;
 use fixel::texture::LodGranularity;
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::noise_scenes::{OctaveMode, SolidScene};
 use host_tests::png_io::write_png_rgb8;
-use host_tests::reference::noise::{render_solid, RefOctaves, RefPattern};
+use host_tests::reference::noise::{
+    inverse_square, light_map_trilinear, render_flame, render_solid, render_solid_lit, RefLight,
+    RefOctaves, RefPattern,
+};
 
 const W: u32 = scenes::W;
 const H: u32 = scenes::H;
@@ -48,6 +64,7 @@ const H: u32 = scenes::H;
 /// One measured variant.
 struct Row {
     name: String,
+    pixels: usize,
     ns_px: f64,
     m0: Option<(f64, bool)>,
     m4: Option<(f64, bool)>,
@@ -88,6 +105,21 @@ fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
     tris: &[[Vertex<4>; 3]],
     runs: u32,
 ) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    let mut buf = Box::new(noise::NoiseBuffers::new());
+    whole_frame::<S, J, 4>(shader, tris, runs, &mut || {
+        noise::render_in::<S, J>(shader, &mut buf, &mut || {}, &mut || {}).unwrap()
+    })
+}
+
+/// The frame of `tris` drawn whole with `shader` (pixels, coverage, FNV-1a checksum), and
+/// host ns/px of `bands` (the firmware's band code, median of `runs`; its checksum must be
+/// the whole frame's).
+fn whole_frame<S: Shader<Varyings = [i32; N]>, J: ProjectionStage, const N: usize>(
+    shader: S,
+    tris: &[[Vertex<N>; 3]],
+    runs: u32,
+    bands: &mut dyn FnMut() -> scenes::FrameResult,
+) -> (Vec<u16>, Vec<bool>, u32, f64) {
     let draw =
         ShadedDraw::<S, J, NoDepth>::new(shader, Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
             .unwrap();
@@ -115,12 +147,11 @@ fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
         marker.clip_triangles(&[flat], &mut mf).unwrap();
     }
     let cov: Vec<bool> = bits(mf.pixels()).iter().map(|&c| c != 0).collect();
-    let mut buf = Box::new(noise::NoiseBuffers::new());
     let mut times = Vec::new();
     let mut pixels = 1;
     for _ in 0..runs {
         let t0 = Instant::now();
-        let r = noise::render_in::<S, J>(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
+        let r = bands();
         times.push(t0.elapsed().as_secs_f64());
         assert_eq!(r.checksum, sum.0, "band and whole frames differ");
         pixels = r.stats.pixels.max(1);
@@ -132,6 +163,129 @@ fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
         sum.0,
         times[times.len() / 2] * 1e9 / f64::from(pixels),
     )
+}
+
+/// The flame firmware's frames (`noise::flame_frames_with`: 4 frames of 80 x 96, t = i/8
+/// s) drawn whole with `octaves`: all frames' pixels in order, coverage (all), the FNV-1a
+/// checksum over them, and host ns/px of the firmware's code (median of `runs`).
+fn flame_frames(octaves: u8, runs: u32) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    let ramp = Ramp::from_keys(&fixel::shading::noise::FLAME_KEYS).unwrap();
+    let vp = Viewport::new(0, 0, noise::FLAME_W, noise::FLAME_H).unwrap();
+    let mut px = Vec::new();
+    let mut sum = scenes::Fnv1a::default();
+    for i in 0..4 {
+        let shader = FlameShader {
+            ramp: &ramp,
+            t: i << 13,
+            octaves,
+        };
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None).unwrap();
+        let mut color = vec![Rgb565::new(0, 0, 0); noise::FLAME_PIXELS];
+        let mut frame = Frame::new(&mut color, noise::FLAME_W, noise::FLAME_H).unwrap();
+        draw.clip_triangles(&flame_quad(), &mut frame).unwrap();
+        sum.pixels(frame.pixels());
+        px.extend(bits(frame.pixels()));
+    }
+    let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
+    let mut times = Vec::new();
+    let mut pixels = 1;
+    for _ in 0..runs {
+        let t0 = Instant::now();
+        let r = noise::flame_frames_with(&mut color, 4, octaves, &mut || {}, &mut || {}).unwrap();
+        times.push(t0.elapsed().as_secs_f64());
+        assert_eq!(r.checksum, sum.0, "flame frames differ");
+        pixels = r.stats.pixels.max(1);
+    }
+    times.sort_by(f64::total_cmp);
+    let cov = vec![true; px.len()];
+    (
+        px,
+        cov,
+        sum.0,
+        times[times.len() / 2] * 1e9 / f64::from(pixels),
+    )
+}
+
+/// The flame firmware's quad (NDC `-1..1`, [`noise::FLAME_QUAD`] flame units).
+fn flame_quad() -> [[Vertex<2>; 3]; 2] {
+    let (x0, x1, y0, y1) = noise::FLAME_QUAD;
+    let v = |xn: i32, yn: i32, x: i32, y: i32| {
+        Vertex::new(
+            [
+                fixel::math::Fx::from_num(xn),
+                fixel::math::Fx::from_num(yn),
+                fixel::math::Fx::ZERO,
+                fixel::math::Fx::ONE,
+            ],
+            [x, y],
+        )
+    };
+    let (a, b, c, d) = (
+        v(-1, -1, x0, y0),
+        v(1, -1, x1, y0),
+        v(1, 1, x1, y1),
+        v(-1, 1, x0, y1),
+    );
+    [[a, b, c], [a, c, d]]
+}
+
+/// The f64 flame over the 4 frames, `ss × ss` samples per pixel: raw RGB565 in order.
+fn flame_reference(octaves: u32, ss: u32) -> Vec<u16> {
+    (0..4)
+        .flat_map(|i| {
+            render_flame(
+                &flame_quad(),
+                f64::from(i) / 8.0,
+                octaves,
+                ss,
+                noise::FLAME_W,
+                noise::FLAME_H,
+            )
+            .rgb565()
+        })
+        .collect()
+}
+
+/// A row from a frame (pixels, coverage, checksum, ns/px), its MCU counts (checksums
+/// checked against the frame's) and its errors against the reference and the ideal.
+#[allow(clippy::too_many_arguments)]
+fn row(
+    name: &str,
+    res: (Vec<u16>, Vec<bool>, u32, f64),
+    mcu: &[(String, String, f64, String)],
+    r: &[u16],
+    rcov: &[bool],
+    ideal: &[u16],
+    icov: &[bool],
+) -> Row {
+    let (px, cov, sum, ns) = res;
+    let get = |t: &str| {
+        mcu.iter()
+            .find(|(m, tt, _, _)| m == name && tt == t)
+            .map(|(_, _, ipp, c)| (*ipp, *c == format!("0x{sum:08x}")))
+    };
+    Row {
+        name: name.to_string(),
+        pixels: cov.iter().filter(|&&c| c).count(),
+        ns_px: ns,
+        m0: get("Cortex-M0+"),
+        m4: get("Cortex-M4F"),
+        vs_ref: compare_rgb565(&px, &cov, r, rcov),
+        vs_ideal: compare_rgb565(&px, &cov, ideal, icov),
+    }
+}
+
+/// `28899` as `28,899`.
+fn thousands(n: usize) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
 }
 
 fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
@@ -228,6 +382,7 @@ fn main() {
         eprintln!("noise_report: {name}: {ns:.1} ns/px, {vs_ref}");
         rows.push(Row {
             name: name.to_string(),
+            pixels: cov.iter().filter(|&&c| c).count(),
             ns_px: ns,
             m0: get("Cortex-M0+"),
             m4: get("Cortex-M4F"),
@@ -262,6 +417,143 @@ fn main() {
     let ideal_granite = ideal_cache(granite);
     let res = sphere_frame(SolidShader::new(ramps.granite(), band), &tris, runs);
     measure("granite-band6-span", res, granite, rband, &ideal_granite);
+    // Composition by selection: granite, and marble where a third noise passes 0.1.
+    let select = RefPattern::Select {
+        a: Box::leak(Box::new(granite)),
+        b: Box::leak(Box::new(marble)),
+        threshold: 0.1,
+        width: 0.2,
+        shift: 1,
+        offset: SELECT_OFFSET.map(|v| f64::from(v) / 65536.0),
+    };
+    let ideal_select = ideal_cache(select);
+    let sel = Select::new(
+        ramps.granite(),
+        ramps.marble(),
+        3277,
+        6554,
+        1,
+        SELECT_OFFSET,
+    )
+    .expect("select");
+    let res = sphere_frame(SolidShader::new(sel, band), &tris, runs);
+    let _ = write_png_rgb8(out.join("noise_select.png"), W, H, &rgb8(&res.0));
+    measure(
+        "select-granite-marble-band6-span",
+        res,
+        select,
+        rband,
+        &ideal_select,
+    );
+
+    // ---- The wooden cube: per-vertex light against the baked 3D light map
+    // (`noise_light3d`). Reference: the f64 pattern times the f64 light with the same rule
+    // (per-vertex intensity, or f64 trilinear of the same texels); ideal: 6 x 6 samples of
+    // 8 octaves times the unbaked inverse-square light for the light map.
+    let mut cube_rows = Vec::new();
+    let mut cube4 = [[Vertex::new([fixel::math::Fx::ZERO; 4], [0; 4]); 3]; light3d_scene::TRIS];
+    let n = light3d_scene::triangles(&mut cube4);
+    let cube_tris = &cube4[..n];
+    let cube3: Vec<[Vertex<3>; 3]> = cube_tris
+        .iter()
+        .map(|t| t.map(|v| Vertex::new(v.position, [v.varyings[0], v.varyings[1], v.varyings[2]])))
+        .collect();
+    let texel = f64::from(1u32 << light3d_scene::CUBE_LIGHT_LOG2_TEXEL) / 65536.0;
+    let origin = light3d_scene::CUBE_LIGHT_ORIGIN.map(|b| f64::from(b) / 65536.0);
+    let baked = |p: [f64; 3]| {
+        light_map_trilinear(
+            &light3d_scene::CUBE_LIGHT_TEXELS,
+            light3d_scene::CUBE_LIGHT_SIDE,
+            origin,
+            texel,
+            p,
+        )
+    };
+    let unbaked = |p: [f64; 3]| {
+        inverse_square(
+            &light3d_scene::CUBE_LIGHT_LIGHTS,
+            light3d_scene::CUBE_LIGHT_AMBIENT,
+            p,
+        )
+    };
+    let mut cbuf = Box::new(light3d_scene::Light3dBuffers::new());
+    let vshader = SolidShader::new(ramps.wood(), band);
+    let res = whole_frame::<_, Exact, 4>(vshader, cube_tris, runs, &mut || {
+        light3d_scene::render_vertex_lit(vshader, &mut cbuf, &mut || {}, &mut || {}).unwrap()
+    });
+    let r = render_solid(cube_tris, wood, rband, 1, W, H);
+    let ideal = render_solid(cube_tris, wood, RefOctaves::Fixed(8), 6, W, H);
+    cube_rows.push(row(
+        "cube-wood-vertex-band6-span",
+        res,
+        &mcu,
+        &r.rgb565(),
+        &r.covered,
+        &ideal.rgb565(),
+        &ideal.covered,
+    ));
+    let lshader = LitSolid {
+        pattern: ramps.wood(),
+        octaves: band,
+        light: light3d_scene::light_map().expect("light map"),
+        granularity: LodGranularity::Span,
+    };
+    let res = whole_frame::<_, Exact, 3>(lshader, &cube3, runs, &mut || {
+        light3d_scene::render_light_map(lshader, &mut cbuf, &mut || {}, &mut || {}).unwrap()
+    });
+    let _ = write_png_rgb8(out.join("noise_light3d.png"), W, H, &rgb8(&res.0));
+    let r = render_solid_lit(cube_tris, wood, rband, 1, W, H, RefLight::At(&baked));
+    let ideal = render_solid_lit(
+        cube_tris,
+        wood,
+        RefOctaves::Fixed(8),
+        6,
+        W,
+        H,
+        RefLight::At(&unbaked),
+    );
+    cube_rows.push(row(
+        "cube-wood-light3d-band6-span",
+        res,
+        &mcu,
+        &r.rgb565(),
+        &r.covered,
+        &ideal.rgb565(),
+        &ideal.covered,
+    ));
+
+    // ---- The flame (`noise_flame`): 1, 3 and 5 octaves. Reference: the f64 flame with the
+    // same octaves; ideal: 6 x 6 samples of 8 octaves.
+    let mut flame_rows = Vec::new();
+    let flame_ideal = flame_reference(8, 6);
+    let all = vec![true; flame_ideal.len()];
+    for k in [1u8, 3, 5] {
+        let res = flame_frames(k, runs);
+        if k == 5 {
+            let _ = write_png_rgb8(
+                out.join("noise_flame.png"),
+                noise::FLAME_W,
+                noise::FLAME_H,
+                &rgb8(&res.0[..noise::FLAME_PIXELS]),
+            );
+        }
+        let r = flame_reference(u32::from(k), 1);
+        flame_rows.push(row(
+            &format!("flame-oct{k}"),
+            res,
+            &mcu,
+            &r,
+            &all,
+            &flame_ideal,
+            &all,
+        ));
+    }
+    for r in cube_rows.iter().chain(&flame_rows) {
+        eprintln!(
+            "noise_report: {}: {:.1} ns/px, {}",
+            r.name, r.ns_px, r.vs_ref
+        );
+    }
 
     // ---- The granite floor (host only).
     let mut floor_rows = Vec::new();
@@ -304,6 +596,7 @@ fn main() {
         }
         floor_rows.push(Row {
             name,
+            pixels: n,
             ns_px: times[times.len() / 2] * 1e9 / n as f64,
             m0: None,
             m4: None,
@@ -361,6 +654,26 @@ fn main() {
         &mut md,
         "Firmware scene: the marble sphere, 320 x 240 (17,306 pixels)",
         &rows,
+    );
+    table(
+        &mut md,
+        &format!(
+            "Firmware scene `noise_light3d`: the wooden cube, 320 x 240 ({} pixels), lit per vertex and by the baked 3D light map (16³ texels, trilinear)",
+            thousands(cube_rows.first().map_or(0, |r| r.pixels))
+        ),
+        &cube_rows,
+    );
+    let _ = writeln!(
+        md,
+        "`ref` for the light map: the f64 pattern times the f64 trilinear interpolation of the \
+         same texels; `ideal`: 6 x 6 samples of 8 octaves times the unbaked inverse-square \
+         light the map was baked from (so it includes the bake's quantization and the \
+         trilinear error). The per-vertex row's light is its interpolated intensity in both.\n"
+    );
+    table(
+        &mut md,
+        "Firmware scene `noise_flame`: 4 frames of 80 x 96 (t = 0, 1/8, 2/8, 3/8 s), 1, 3 and 5 octaves (the firmware: 5)",
+        &flame_rows,
     );
     table(
         &mut md,

@@ -196,6 +196,21 @@ pub enum RefPattern {
         /// Grain scale `s`.
         shift: u32,
     },
+    /// `a` or `b` by a third noise with a smooth threshold: see [`select_color`].
+    Select {
+        /// Below the threshold.
+        a: &'static RefPattern,
+        /// Above it.
+        b: &'static RefPattern,
+        /// Threshold, noise units.
+        threshold: f64,
+        /// Blend width, noise units.
+        width: f64,
+        /// Selector scale `2^shift`.
+        shift: u32,
+        /// Selector offset, cells.
+        offset: [f64; 3],
+    },
 }
 
 impl RefPattern {
@@ -240,6 +255,14 @@ impl RefPattern {
                 let t = turbulence(p.map(|c| c * s), octaves, lambda + f64::from(shift));
                 ramp(keys, t * 256.0)
             }
+            RefPattern::Select {
+                a,
+                b,
+                threshold,
+                width,
+                shift,
+                offset,
+            } => select_color(*a, *b, threshold, width, shift, offset, p, octaves, lambda),
         }
     }
 }
@@ -320,6 +343,29 @@ pub fn render_solid(
     width: u32,
     height: u32,
 ) -> RefSolidImage {
+    render_solid_lit(tris, pattern, octaves, ss, width, height, RefLight::Vertex)
+}
+
+/// Where the light of a solid texture comes from.
+#[derive(Clone, Copy)]
+pub enum RefLight<'a> {
+    /// The interpolated per-vertex intensity (varying 3).
+    Vertex,
+    /// A function of the object-space point (cells), `0..=1` (a 3D light map: see
+    /// [`light_map_trilinear`] and [`inverse_square`]).
+    At(&'a dyn Fn([f64; 3]) -> f64),
+}
+
+/// [`render_solid`] with the light from `light`.
+pub fn render_solid_lit(
+    tris: &[[Vertex<4>; 3]],
+    pattern: RefPattern,
+    octaves: RefOctaves,
+    ss: u32,
+    width: u32,
+    height: u32,
+    light: RefLight<'_>,
+) -> RefSolidImage {
     let n = (width * height) as usize;
     let mut img = RefSolidImage {
         width,
@@ -354,7 +400,11 @@ pub fn render_solid(
                         RefOctaves::Fixed(_) => 0.0,
                     };
                     let c = pattern.color(p, octaves, lambda);
-                    let k = k.clamp(0.0, 1.0);
+                    let k = match light {
+                        RefLight::Vertex => k,
+                        RefLight::At(f) => f(p),
+                    }
+                    .clamp(0.0, 1.0);
                     for i in 0..3 {
                         acc[i] += c[i] * k;
                     }
@@ -402,4 +452,209 @@ pub fn flame(x: f64, y: f64, t: f64, octaves: u32) -> [f64; 3] {
     let c = ramp(&FLAME_KEYS, (arg * 256.0).clamp(0.0, 255.0));
     let fade = (1.0 - y + bend / 2.0).clamp(0.0, 1.0);
     c.map(|v| v * fade)
+}
+
+/// A baked 3D light map read back in f64 (seed `000` §4.3): trilinear interpolation of the
+/// `side³` texels (`x` fastest, `255` = 1.0) between texel centres `origin + (i + 0.5) ·
+/// texel` (cells), clamp-to-edge; `0..=1`.
+pub fn light_map_trilinear(
+    texels: &[u8],
+    side: u32,
+    origin: [f64; 3],
+    texel: f64,
+    p: [f64; 3],
+) -> f64 {
+    let s = side as i64;
+    let at = |i: i64, j: i64, k: i64| {
+        let c = |v: i64| v.clamp(0, s - 1) as usize;
+        f64::from(texels[(c(k) * s as usize + c(j)) * s as usize + c(i)])
+    };
+    let u: [f64; 3] =
+        core::array::from_fn(|a| ((p[a] - origin[a]) / texel - 0.5).clamp(0.0, (s - 1) as f64));
+    let (i, j, k) = (
+        u[0].floor() as i64,
+        u[1].floor() as i64,
+        u[2].floor() as i64,
+    );
+    let (fx, fy, fz) = (u[0] - i as f64, u[1] - j as f64, u[2] - k as f64);
+    let l = |a: f64, b: f64, t: f64| a + (b - a) * t;
+    let plane = |k: i64| {
+        l(
+            l(at(i, j, k), at(i + 1, j, k), fx),
+            l(at(i, j + 1, k), at(i + 1, j + 1, k), fx),
+            fy,
+        )
+    };
+    l(plane(k), plane(k + 1), fz) / 255.0
+}
+
+/// The light a 3D light map is baked from, unbaked (seed `000` §4.3): `min(1, ambient +
+/// Σ power / max(d², 1/16))`, `d` the distance in cells from `p` to each light (`[x, y, z,
+/// power]`).
+pub fn inverse_square(lights: &[[f64; 4]], ambient: f64, p: [f64; 3]) -> f64 {
+    let e: f64 = lights
+        .iter()
+        .map(|l| {
+            l[3] / (0..3)
+                .map(|a| (p[a] - l[a]).powi(2))
+                .sum::<f64>()
+                .max(1.0 / 16.0)
+        })
+        .sum();
+    (ambient + e).min(1.0)
+}
+
+/// The flame drawn on a quad (fixel's `[x, y]` varyings, Q16 flame units; no culling),
+/// at time `t` seconds with `octaves` of turbulence, sampled on an `ss × ss` grid inside
+/// each covered pixel and averaged (`ss = 1`: at the centre).
+pub fn render_flame(
+    tris: &[[Vertex<2>; 3]],
+    t: f64,
+    octaves: u32,
+    ss: u32,
+    width: u32,
+    height: u32,
+) -> RefSolidImage {
+    let n = (width * height) as usize;
+    let mut img = RefSolidImage {
+        width,
+        height,
+        rgb: vec![[0.0; 3]; n],
+        covered: vec![false; n],
+    };
+    for tri in tris {
+        let Some(win) = super::raster::window_of(tri, width, height) else {
+            continue;
+        };
+        let xy = tri.map(|v| [0, 1].map(|j| f64::from(v.varyings[j]) / 65536.0));
+        rasterize(&win, width, height, |x, y, _| {
+            let mut acc = [0.0; 3];
+            for sy in 0..ss {
+                for sx in 0..ss {
+                    let px = f64::from(x) + (f64::from(sx) + 0.5) / f64::from(ss);
+                    let py = f64::from(y) + (f64::from(sy) + 0.5) / f64::from(ss);
+                    let l = barycentrics(&win, px, py);
+                    let q = [0, 1, 2].map(|i| l[i] * win[i].inv_w);
+                    let qs = q[0] + q[1] + q[2];
+                    let v: [f64; 2] =
+                        core::array::from_fn(|j| (0..3).map(|i| q[i] * xy[i][j]).sum::<f64>() / qs);
+                    let c = flame(v[0], v[1], t, octaves);
+                    for i in 0..3 {
+                        acc[i] += c[i];
+                    }
+                }
+            }
+            let i = (y * width + x) as usize;
+            img.rgb[i] = acc.map(|a| a / f64::from(ss * ss));
+            img.covered[i] = true;
+        });
+    }
+    img
+}
+
+/// Composition by selection (fixel's `Select`), in f64: the selector `n = noise(2^shift ·
+/// p + offset)`, `t = clamp((n − (threshold − width/2)) / width, 0, 1)`, the weight of `b`
+/// `w = 3t² − 2t³`, and the colour `a · (1 − w) + b · w`. Threshold and width in noise
+/// units (`-1..1`), offset in cells.
+#[allow(clippy::too_many_arguments)]
+pub fn select_color(
+    a: RefPattern,
+    b: RefPattern,
+    threshold: f64,
+    width: f64,
+    shift: u32,
+    offset: [f64; 3],
+    p: [f64; 3],
+    octaves: RefOctaves,
+    lambda: f64,
+) -> [f64; 3] {
+    let s = f64::from(1u32 << shift);
+    let n = noise(
+        p[0] * s + offset[0],
+        p[1] * s + offset[1],
+        p[2] * s + offset[2],
+    );
+    let t = ((n - (threshold - width / 2.0)) / width).clamp(0.0, 1.0);
+    let w = t * t * (3.0 - 2.0 * t);
+    let (ca, cb) = (a.color(p, octaves, lambda), b.color(p, octaves, lambda));
+    core::array::from_fn(|i| ca[i] * (1.0 - w) + cb[i] * w)
+}
+
+/// The 32 gradients of 4D gradient noise: the midpoints of the edges of the 4-cube
+/// (three components ±1, one 0), in the order of Stefan Gustavson's `grad4` table
+/// ("Simplex noise demystified", 2005): the zero at x for 0..8, y for 8..16, z for 16..24,
+/// w for 24..32.
+const GRAD4: [[f64; 4]; 32] = [
+    [0.0, 1.0, 1.0, 1.0],
+    [0.0, 1.0, 1.0, -1.0],
+    [0.0, 1.0, -1.0, 1.0],
+    [0.0, 1.0, -1.0, -1.0],
+    [0.0, -1.0, 1.0, 1.0],
+    [0.0, -1.0, 1.0, -1.0],
+    [0.0, -1.0, -1.0, 1.0],
+    [0.0, -1.0, -1.0, -1.0],
+    [1.0, 0.0, 1.0, 1.0],
+    [1.0, 0.0, 1.0, -1.0],
+    [1.0, 0.0, -1.0, 1.0],
+    [1.0, 0.0, -1.0, -1.0],
+    [-1.0, 0.0, 1.0, 1.0],
+    [-1.0, 0.0, 1.0, -1.0],
+    [-1.0, 0.0, -1.0, 1.0],
+    [-1.0, 0.0, -1.0, -1.0],
+    [1.0, 1.0, 0.0, 1.0],
+    [1.0, 1.0, 0.0, -1.0],
+    [1.0, -1.0, 0.0, 1.0],
+    [1.0, -1.0, 0.0, -1.0],
+    [-1.0, 1.0, 0.0, 1.0],
+    [-1.0, 1.0, 0.0, -1.0],
+    [-1.0, -1.0, 0.0, 1.0],
+    [-1.0, -1.0, 0.0, -1.0],
+    [1.0, 1.0, 1.0, 0.0],
+    [1.0, 1.0, -1.0, 0.0],
+    [1.0, -1.0, 1.0, 0.0],
+    [1.0, -1.0, -1.0, 0.0],
+    [-1.0, 1.0, 1.0, 0.0],
+    [-1.0, 1.0, -1.0, 0.0],
+    [-1.0, -1.0, 1.0, 0.0],
+    [-1.0, -1.0, -1.0, 0.0],
+];
+
+/// 4D gradient noise at `p` (cells), Perlin's construction one dimension up: the corner
+/// `c` of the cell has the gradient `GRAD4[p[p[p[p[c0] + c1] + c2] + c3] mod 32]` (the
+/// chained permutation), dotted with the offset to the point, blended by the quintic
+/// fade along each axis.
+pub fn noise4(p: [f64; 4]) -> f64 {
+    let perm = self::p();
+    let fl = p.map(f64::floor);
+    let c: [usize; 4] = core::array::from_fn(|i| fl[i].rem_euclid(256.0) as usize);
+    let f: [f64; 4] = core::array::from_fn(|i| p[i] - fl[i]);
+    let mut sum = 0.0;
+    for corner in 0..16usize {
+        let d: [usize; 4] = core::array::from_fn(|i| (corner >> i) & 1);
+        let h = perm[perm[perm[perm[c[0] + d[0]] + c[1] + d[1]] + c[2] + d[2]] + c[3] + d[3]];
+        let g = GRAD4[h % 32];
+        let dot: f64 = (0..4).map(|i| g[i] * (f[i] - d[i] as f64)).sum();
+        let weight: f64 = (0..4)
+            .map(|i| {
+                let u = fade(f[i]);
+                if d[i] == 1 {
+                    u
+                } else {
+                    1.0 - u
+                }
+            })
+            .product();
+        sum += weight * dot;
+    }
+    sum
+}
+
+/// Animated turbulence in f64: `Σ_{k<n} |noise4(2^k p)| / 2^k`.
+pub fn turbulence4(p: [f64; 4], octaves: u32) -> f64 {
+    (0..octaves)
+        .map(|k| {
+            let s = f64::from(1u32 << k);
+            noise4(p.map(|c| c * s)).abs() / s
+        })
+        .sum()
 }

@@ -1,17 +1,20 @@
 //! Solid textures from table-based Perlin noise (seed `000` §4): a colour as a function of
 //! the 3D object-space point, with no seams, no distortion and no texture memory.
 //!
-//! * [`noise3`]: Perlin's improved gradient noise in 3D, all in `i32` fixed point.
+//! * [`noise3`]: Perlin's improved gradient noise in 3D, all in `i32` fixed point;
+//!   [`noise4`], [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
+//!   change shape over time.
 //! * [`turbulence`] and [`BandLimit`]: `Σ |noise(2^k p)| / 2^k`, with the octaves finer than
 //!   a pixel replaced by their mean (the seeds' anti-aliasing of procedural textures).
 //! * [`Ramp`], [`Marble`], [`Wood`], [`Granite`]: patterns over the noise, and
 //!   [`SolidShader`], the fragment shader that draws any [`Pattern`] on a mesh with the
 //!   object-space point as three varyings and a light intensity as the fourth.
-//! * [`flame`] and [`FlameShader`]: the animated flame of seed `000` §4.2 (noise over
-//!   3D + time).
+//! * [`flame`] and [`FlameShader`]: the animated flame of seed `000` §4.2 (a texture of
+//!   the plane: 2D + time through [`noise3`], time as the third axis).
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map (seed `000` §4.3), trilinear
 //!   (`cargo xtask bake-light3d`).
-//! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light.
+//! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light;
+//!   [`Select`]: one of two solid textures, chosen by a third noise with a smooth threshold.
 //! * [`SolidMesh`]: mesh vertices with the object-space point as varyings; [`presets`]: the
 //!   demonstration colours and parameters.
 //!
@@ -85,9 +88,11 @@
 mod compose;
 mod flame;
 mod lightmap3d;
+mod noise4;
 mod patterns;
 pub mod presets;
 mod scene;
+mod select;
 mod solid;
 mod turbulence;
 
@@ -96,9 +101,11 @@ pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
 };
 pub use lightmap3d::{LightMap3d, LitSolid};
+pub use noise4::{noise4, turbulence4, Animated};
 pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};
+pub use select::{Select, SELECT_OFFSET};
 pub use solid::{Fixed, Octaves, SolidShader, SolidTriangle};
 pub use turbulence::{turbulence, BandLimit, ABS_NOISE_MEAN_Q15, MAX_OCTAVES};
 

@@ -8,7 +8,7 @@
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
-use fixel::math::{Fx, Mat4, Vec3};
+use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::presets::{MARBLE_AMP, MARBLE_FREQ, MARBLE_KEYS};
@@ -16,26 +16,8 @@ use fixel::shading::noise::{BandLimit, Marble, Ramp, SolidMesh, SolidShader};
 use fixel::surface::Frame;
 use fixel_firmware::outln;
 use fixel_firmware::scenes::{Fnv1a, H, ROWS, W};
-
-static POSITIONS: [Vec3; 3] = [
-    Vec3::new(
-        Fx::from_bits(-65536),
-        Fx::from_bits(-65536),
-        Fx::from_bits(-3 << 16),
-    ),
-    Vec3::new(
-        Fx::from_bits(65536),
-        Fx::from_bits(-65536),
-        Fx::from_bits(-3 << 16),
-    ),
-    Vec3::new(
-        Fx::from_bits(0),
-        Fx::from_bits(65536),
-        Fx::from_bits(-4 << 16),
-    ),
-];
-static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
-static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
+// The same triangle as the other `size_*` firmwares.
+use fixel_firmware::size::{INDICES, NORMALS, POSITIONS};
 
 fn run() -> bool {
     let Ok(ramp) = Ramp::sine(core::hint::black_box(&MARBLE_KEYS)) else {

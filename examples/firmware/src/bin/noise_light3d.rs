@@ -1,0 +1,44 @@
+//! Scene `noise_light3d`: the wooden cube of `light3d_scene.rs` lit by the baked 3D light
+//! map (`LitSolid`, trilinear, 16³ texels), band-limited wood (at most 6 octaves, footprint
+//! per span), 320x240 in 8-row bands.
+#![no_std]
+#![no_main]
+
+#[path = "../light3d_scene.rs"]
+#[allow(dead_code, unused_imports)] // the per-vertex baseline and the bake parameters
+mod light3d_scene;
+
+use fixel::shading::noise::presets::{WOOD_AMP, WOOD_KEYS, WOOD_RINGS};
+use fixel::shading::noise::{BandLimit, LitSolid, Ramp, Wood};
+use fixel::texture::LodGranularity;
+use fixel_firmware::report;
+// `light3d_scene.rs` names the shared scene helpers `crate::scenes`.
+use fixel_firmware::scenes;
+
+static mut BUF: light3d_scene::Light3dBuffers = light3d_scene::Light3dBuffers::new();
+
+fn run() -> bool {
+    // SAFETY: the only reference to BUF, taken once in this single-threaded firmware.
+    let buf = unsafe { &mut *core::ptr::addr_of_mut!(BUF) };
+    let (Ok(ramp), Ok(light)) = (
+        Ramp::from_keys(core::hint::black_box(&WOOD_KEYS)),
+        light3d_scene::light_map(),
+    ) else {
+        return false;
+    };
+    let shader = LitSolid {
+        pattern: Wood {
+            ramp: &ramp,
+            rings: WOOD_RINGS,
+            amp: WOOD_AMP,
+        },
+        octaves: BandLimit::new(core::hint::black_box(6)),
+        light,
+        granularity: LodGranularity::Span,
+    };
+    report("noise_light3d", |pause, resume| {
+        light3d_scene::render_light_map(shader, buf, pause, resume)
+    })
+}
+
+fixel_firmware::entry!(run);

@@ -1,0 +1,191 @@
+//! Scene `noise_light3d` (issue 13, seed `000` §4.3): the wooden cube lit by the baked 3D
+//! light map (`examples/common/light3d_cube.rs`, `cargo xtask bake-light3d`: two point
+//! lights with inverse-square falloff in the cube's own space, 16³ texels, 4 KB of flash)
+//! instead of a per-vertex light. Band-limited wood (at most 6 octaves, footprint per span),
+//! 320x240 in bands of 8 rows, no depth buffer (one convex object, back faces culled).
+//!
+//! RAM: the band (5 KB) and the cube's 12 clip-space triangles, computed once (1.1 KB, plus
+//! 0.9 KB for the light-map draw's copy without the intensity). Kept out of the firmware
+//! library (the bins include it by path) so the other firmwares' code does not move. Shared
+//! with the host test `host-tests/tests/mcu_checksums.rs` and the report
+//! (`host-tests/src/bin/noise_report.rs`), which render the same frame.
+
+use crate::scenes::{Fnv1a, FrameResult, H, ROWS, W};
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+use fixel::scene::DirectionalLight;
+use fixel::shading::noise::presets::SHOWCASE_SCALE;
+use fixel::shading::noise::{LightMap3d, SolidMesh};
+use fixel::shading::Shader;
+use fixel::surface::{BandStats, Frame};
+use fixel::Error;
+
+#[path = "../../common/light3d_cube.rs"]
+#[allow(dead_code)]
+mod light3d_cube;
+pub use light3d_cube::{
+    CUBE_LIGHT_AMBIENT, CUBE_LIGHT_LIGHTS, CUBE_LIGHT_LOG2_TEXEL, CUBE_LIGHT_ORIGIN,
+    CUBE_LIGHT_SIDE, CUBE_LIGHT_TEXELS,
+};
+
+/// Cube triangles.
+pub const TRIS: usize = 12;
+/// Bands per frame.
+pub const BANDS: usize = (H / ROWS) as usize;
+
+/// The baked light map of the cube (`light3d_cube.rs`).
+///
+/// # Errors
+/// None for the baked data; [`LightMap3d::new`]'s errors otherwise.
+pub fn light_map() -> Result<LightMap3d<'static>, Error> {
+    LightMap3d::new(
+        &CUBE_LIGHT_TEXELS,
+        CUBE_LIGHT_SIDE,
+        CUBE_LIGHT_ORIGIN,
+        CUBE_LIGHT_LOG2_TEXEL,
+    )
+}
+
+/// The cube's model matrix: the right-hand cube of the showcase `noise_lightmap.png`,
+/// moved to the middle of the frame.
+pub fn model() -> Mat4 {
+    Mat4::translation(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::from_num(-4.5)))
+        * (Mat4::rotation_x(Angle::from_turns(5000)) * Mat4::rotation_y(Angle::from_turns(7000)))
+}
+
+/// Scratch of the scene.
+pub struct Light3dBuffers {
+    color: [Rgb565; (W * ROWS) as usize],
+    lit: [[Vertex<4>; 3]; TRIS],
+    point: [[Vertex<3>; 3]; TRIS],
+    ranges: [(u8, u8); TRIS],
+}
+
+const V4: Vertex<4> = Vertex::new([Fx::ZERO; 4], [0; 4]);
+const V3: Vertex<3> = Vertex::new([Fx::ZERO; 4], [0; 3]);
+
+impl Light3dBuffers {
+    /// Zeroed.
+    pub const fn new() -> Self {
+        Light3dBuffers {
+            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            lit: [[V4; 3]; TRIS],
+            point: [[V3; 3]; TRIS],
+            ranges: [(1, 0); TRIS],
+        }
+    }
+}
+
+impl Default for Light3dBuffers {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The cube's clip-space triangles with the object-space point (lattice units) as varyings
+/// 0..3 and the per-vertex light intensity as varying 3, into `out`; returns how many.
+pub fn triangles(out: &mut [[Vertex<4>; 3]; TRIS]) -> usize {
+    let cube = demo::cube();
+    let mesh = SolidMesh {
+        positions: &cube.positions,
+        normals: Some(&cube.normals),
+        indices: &cube.indices,
+        scale: SHOWCASE_SCALE,
+    };
+    let mut n = 0;
+    mesh.triangles(
+        &model(),
+        &demo::camera(20),
+        Some(&DirectionalLight::default()),
+        |t| {
+            if let Some(slot) = out.get_mut(n) {
+                *slot = *t;
+                n += 1;
+            }
+        },
+    );
+    n
+}
+
+/// The frame with a light-map shader (varyings `x, y, z`, e.g. `LitSolid`): geometry, then
+/// the bands. `pause` / `resume` bracket the harness-only checksum of each band.
+pub fn render_light_map<S: Shader<Varyings = [i32; 3]>>(
+    shader: S,
+    buf: &mut Light3dBuffers,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let n = triangles(&mut buf.lit);
+    for (p, l) in buf.point.iter_mut().zip(&buf.lit) {
+        *p = l.map(|v| Vertex::new(v.position, [v.varyings[0], v.varyings[1], v.varyings[2]]));
+    }
+    let tris = buf.point.get(..n).unwrap_or(&[]);
+    bands(shader, tris, &mut buf.color, &mut buf.ranges, pause, resume)
+}
+
+/// The same frame lit per vertex (varyings `x, y, z, i`, e.g. `SolidShader`): the baseline
+/// the light map is compared with.
+pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>>(
+    shader: S,
+    buf: &mut Light3dBuffers,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let n = triangles(&mut buf.lit);
+    let tris = buf.lit.get(..n).unwrap_or(&[]);
+    bands(shader, tris, &mut buf.color, &mut buf.ranges, pause, resume)
+}
+
+/// Each triangle's band range once, then band by band the triangles that meet the band.
+fn bands<S: Shader<Varyings = [i32; N]>, const N: usize>(
+    shader: S,
+    tris: &[[Vertex<N>; 3]],
+    color: &mut [Rgb565; (W * ROWS) as usize],
+    ranges: &mut [(u8, u8); TRIS],
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let draw =
+        ShadedDraw::<S, Exact, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    for (tr, r) in tris.iter().zip(ranges.iter_mut()) {
+        *r = (1, 0);
+        draw.project(tr, &mut |s| {
+            let lo = s.iter().map(|v| v.y).min().unwrap_or(0).max(0) >> 4;
+            let hi = s.iter().map(|v| v.y).max().unwrap_or(0).max(0) >> 4;
+            let (b0, b1) = (
+                (lo / ROWS as i32).min(BANDS as i32 - 1) as u8,
+                ((hi / ROWS as i32) as u8).min(BANDS as u8 - 1),
+            );
+            *r = if r.0 > r.1 {
+                (b0, b1)
+            } else {
+                (r.0.min(b0), r.1.max(b1))
+            };
+        });
+    }
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0;
+    for band in 0..BANDS as u8 {
+        let mut frame = Frame::new(color, W, ROWS)?.at_row(u32::from(band) * ROWS);
+        frame.clear(Rgb565::new(0, 0, 0));
+        for (tr, r) in tris.iter().zip(ranges.iter()) {
+            if r.0 <= band && band <= r.1 {
+                pixels += draw.clip_triangles(core::slice::from_ref(tr), &mut frame)?;
+            }
+        }
+        pause();
+        sum.pixels(frame.pixels());
+        resume();
+    }
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats: BandStats {
+            bands: BANDS as u32,
+            pixels,
+            ..BandStats::default()
+        },
+    })
+}
