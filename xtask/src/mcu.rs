@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 18] = [
+const SCENES: [&str; 19] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).

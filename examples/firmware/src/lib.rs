@@ -10,14 +10,14 @@
 pub mod aa;
 #[cfg(fixel_fw_report)]
 pub mod alpha;
-#[cfg(fixel_fw_report)]
-pub mod surface;
 pub mod data;
 pub mod env;
 pub mod mapping;
 pub mod modes;
 pub mod scenes;
 pub mod size;
+#[cfg(fixel_fw_report)]
+pub mod surface;
 
 #[cfg(target_arch = "arm")]
 #[doc(hidden)]

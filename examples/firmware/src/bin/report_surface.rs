@@ -6,9 +6,9 @@
 
 #[cfg(fixel_fw_report)]
 use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel_firmware::report_begin;
 #[cfg(fixel_fw_report)]
 use fixel_firmware::surface;
-use fixel_firmware::report_begin;
 #[cfg(fixel_fw_report)]
 use fixel_firmware::{bench_end, bench_mark, bench_start, outln};
 
