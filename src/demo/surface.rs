@@ -81,3 +81,32 @@ pub fn light(i: u32) -> PixelLight {
         bits((-5i64 << 16) + ((r * s) >> 16)),
     ))
 }
+
+/// Builds the `n x n` brick maps of the scenes into caller storage: `colours` (`n * n`),
+/// `heights` (the full mip chain, [`chain_len`](crate::texture::chain_len)`(n, n,
+/// levels)`) and its derivative map `derivs` (the same chain length); returns the
+/// derivative map's scale (see [`derivative_map`](crate::shading::bump::derivative_map)).
+///
+/// # Errors
+/// The size and length errors of [`bricks`](super::bricks) and
+/// [`HeightMap::new`](crate::texture::HeightMap::new).
+pub fn brick_maps(
+    n: u32,
+    levels: u32,
+    colours: &mut [embedded_graphics_core::pixelcolor::Rgb565],
+    heights: &mut [u8],
+    derivs: &mut [embedded_graphics_core::pixelcolor::Rgb565],
+) -> Result<Fx, Error> {
+    use crate::texture::{generate_height_mips, HeightMap};
+    super::bricks::brick_colours(n, colours)?;
+    let base = (n as usize).saturating_mul(n as usize);
+    let len = heights.len();
+    let level0 = heights.get_mut(..base).ok_or(Error::WrongLength {
+        expected: base,
+        actual: len,
+    })?;
+    super::bricks::brick_heights(n, level0)?;
+    generate_height_mips(heights, n, n, levels)?;
+    let map = HeightMap::new(heights, n, n, levels)?;
+    crate::shading::bump::derivative_map(&map, derivs)
+}

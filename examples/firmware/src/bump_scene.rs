@@ -8,20 +8,18 @@
 
 use crate::scenes::{Fnv1a, FrameResult, H, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::bricks::{brick_colours, brick_heights};
 use fixel::demo::surface;
 use fixel::demo::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::scene::{LitMesh, Tangent};
-use fixel::shading::bump::{derivative_map, Bumped, DerivativeMap};
+use fixel::shading::bump::{Bumped, DerivativeMap};
 use fixel::shading::lighting::Specular;
 use fixel::shading::TexBinding;
 use fixel::surface::{BandStats, Frame};
 use fixel::texture::{
-    chain_len, generate_height_mips, Bilinear, HeightMap, Lod, LodGranularity, MipTexture,
-    NearestMipmapNearest, Repeat, Texture,
+    chain_len, Bilinear, Lod, LodGranularity, MipTexture, NearestMipmapNearest, Repeat, Texture,
 };
 use fixel::Error;
 
@@ -46,11 +44,13 @@ impl BumpAssets {
         let (sphere, tangents) = surface::sphere()?;
         out.sphere = sphere;
         out.tangents = tangents;
-        brick_colours(SIZE, &mut out.colours)?;
-        brick_heights(SIZE, &mut out.heights[..(SIZE * SIZE) as usize])?;
-        generate_height_mips(&mut out.heights, SIZE, SIZE, LEVELS)?;
-        let map = HeightMap::new(&out.heights, SIZE, SIZE, LEVELS)?;
-        out.scale = derivative_map(&map, &mut out.derivs)?;
+        out.scale = surface::brick_maps(
+            SIZE,
+            LEVELS,
+            &mut out.colours,
+            &mut out.heights,
+            &mut out.derivs,
+        )?;
         Ok(())
     }
 

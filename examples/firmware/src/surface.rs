@@ -6,22 +6,18 @@
 
 use crate::scenes::Fnv1a;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo::bricks::{brick_colours, brick_heights};
 use fixel::demo::surface;
 use fixel::demo::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ProjectionStage, ShadedDraw, SubdividedBy};
 use fixel::scene::{LitMesh, Tangent};
-use fixel::shading::bump::{
-    derivative_map, normal_map, Bumped, DerivativeMap, HeightDifferences, NormalMap,
-};
+use fixel::shading::bump::{normal_map, Bumped, DerivativeMap, HeightDifferences, NormalMap};
 use fixel::shading::lighting::{Phong, Specular};
 use fixel::shading::{Gouraud, Shader, TexBinding};
 use fixel::surface::Frame;
 use fixel::texture::{
-    chain_len, generate_height_mips, Bilinear, HeightMap, Lod, MipTexture, Nearest,
-    NearestMipmapNearest, Repeat, Texture,
+    chain_len, Bilinear, HeightMap, Lod, MipTexture, Nearest, NearestMipmapNearest, Repeat, Texture,
 };
 use fixel::Error;
 
@@ -92,11 +88,13 @@ impl SurfaceAssets {
         let (sphere, tangents) = surface::sphere()?;
         self.sphere = sphere;
         self.tangents = tangents;
-        brick_colours(SIZE, &mut self.colours)?;
-        brick_heights(SIZE, &mut self.heights[..(SIZE * SIZE) as usize])?;
-        generate_height_mips(&mut self.heights, SIZE, SIZE, LEVELS)?;
-        let map = HeightMap::new(&self.heights, SIZE, SIZE, LEVELS)?;
-        self.scale = derivative_map(&map, &mut self.derivs)?;
+        self.scale = surface::brick_maps(
+            SIZE,
+            LEVELS,
+            &mut self.colours,
+            &mut self.heights,
+            &mut self.derivs,
+        )?;
         let base = HeightMap::new(&self.heights[..(SIZE * SIZE) as usize], SIZE, SIZE, 1)?;
         normal_map(&base, STRENGTH, &mut self.normals)?;
         Ok(())
