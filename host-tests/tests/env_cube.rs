@@ -372,6 +372,8 @@ fn per_pixel_matches_reference() {
                 draw(ReflectPerPixel(cube(&f, SIZE, Bilinear)), &sc.pixel)
             };
             let want = ref_per_pixel(&sc.pixel, &rf, rfil);
+            // Bit for bit too (bless with FIXEL_BLESS=1 after an intended change).
+            host_tests::golden::assert_golden(&format!("env_cube_{mesh}_{fname}"), W, H, &got.0);
             let r = frame_report(&format!("per-pixel {mesh} {fname}"), &got, &want);
             assert!(r.both_covered > 10_000, "{r}");
             assert!(
@@ -401,6 +403,7 @@ fn per_vertex_error_on_benchmark_meshes() {
     let rf = ref_faces(&f, SIZE);
     for (mesh, sc) in [("sphere", sphere_scene()), ("cube", cube_scene())] {
         let got = draw(ReflectPerVertex(cube(&f, SIZE, Bilinear)), &sc.vertex);
+        host_tests::golden::assert_golden(&format!("env_cube_{mesh}_per_vertex"), W, H, &got.0);
         let own = ref_per_vertex(&sc.vertex, &rf, RefFilter::Bilinear);
         let r = frame_report(
             &format!("per-vertex {mesh} bilinear vs interpolated-r reference"),

@@ -259,6 +259,8 @@ fn sphere_frames_match_reference() {
     let e = compare_rgb565(&got.0, &got.1, &want.0, &want.1);
     println!("per-pixel sphere, lat-long bilinear: {e}");
     assert!(e.max <= 3 && e.mean <= 0.03, "{e}");
+    // Bit for bit too (bless with FIXEL_BLESS=1 after an intended change).
+    host_tests::golden::assert_golden("env_sphere_latlong", 320, 240, &got.0);
     let got = frame(ReflectPerPixel(sm), &tris);
     let want = render_varyings(&tris, 320, 240, |_, _, a| {
         sphere_sample(&rsm, r(a), RefFilter::Bilinear)
@@ -266,6 +268,7 @@ fn sphere_frames_match_reference() {
     let e = compare_rgb565(&got.0, &got.1, &want.0, &want.1);
     println!("per-pixel sphere, sphere map bilinear: {e}");
     assert!(e.max <= 3 && e.mean <= 0.03, "{e}");
+    host_tests::golden::assert_golden("env_sphere_spheremap", 320, 240, &got.0);
 }
 
 proptest! {
