@@ -6,12 +6,19 @@
 //! | high directional light, PCF 2x2 bilinear | grazing directional light, PCF 3x3 |
 //! | spot light, PCF 2x2 bilinear | high light, single tap (the texels show) |
 //!
-//! and each panel alone (`shadow-*.png`), plus the high light's depth map (`shadow-map.png`).
+//! and each panel alone (`shadow-*.png`), plus the high light's depth map (`shadow-map.png`),
+//! and `shadow-teapot.png`: the Utah teapot (baked from OBJ, 1560 triangles) casting its
+//! shadow on the floor under the high light (PCF 2x2) and the grazing light (PCF 3x3).
 //!
 //! `cargo run --release --example shadow`
 
 #[path = "common/mod.rs"]
 mod common;
+
+#[allow(dead_code)] // positions, normals, uvs and indices only
+mod teapot {
+    include!("../assets/teapot/teapot_mesh.rs");
+}
 
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -132,4 +139,106 @@ fn main() {
     let path = common::out_dir().join("shadow.png");
     common::write_png(&path, 2 * W, 2 * H, &sheet);
     println!("wrote {}", path.display());
+
+    // The teapot on the floor, under the high and the grazing light.
+    let porcelain = [Rgb565::new(29, 58, 27)];
+    let white = MipTexture::single(Texture::new(&porcelain, 1, 1).unwrap());
+    let mut sheet = vec![Rgb565::default(); (2 * W * H) as usize];
+    for (k, px) in [
+        teapot_panel::<Pcf2x2>(&high, SceneLight::High, &white, &floor),
+        teapot_panel::<Pcf3x3>(&grazing, SceneLight::Grazing, &white, &floor),
+    ]
+    .iter()
+    .enumerate()
+    {
+        for y in 0..H {
+            for x in 0..W {
+                sheet[(y * 2 * W + k as u32 * W + x) as usize] = px[(y * W + x) as usize];
+            }
+        }
+    }
+    let path = common::out_dir().join("shadow-teapot.png");
+    common::write_png(&path, 2 * W, H, &sheet);
+    println!("wrote {}", path.display());
+}
+
+/// A uniform scale.
+fn scale(k: fixel::math::Fx) -> Mat4 {
+    let (o, z) = (fixel::math::Fx::ONE, fixel::math::Fx::ZERO);
+    Mat4::from_rows([[k, z, z, z], [z, k, z, z], [z, z, k, z], [z, z, z, o]])
+}
+
+/// The teapot (scaled to the cube's size, standing on the floor) and the floor, with a
+/// 128 x 128 map from the directional light `space`.
+fn teapot_panel<'t, F: ShadowFilter>(
+    space: &LightSpace<fixel::shading::shadow::Directional>,
+    light: SceneLight,
+    tex: &'t MipTexture<'t>,
+    floor_tex: &'t MipTexture<'t>,
+) -> Vec<Rgb565> {
+    use fixel::math::{fx, Angle};
+    use fixel::pipeline::DepthOnlyDraw;
+    use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles, Mesh};
+    use fixel::shading::shadow::with_light;
+    use fixel::shading::Classic;
+    const TMAP: u32 = 128;
+    let pot = Mesh::new(
+        &teapot::TEAPOT_POSITIONS,
+        Some(&teapot::TEAPOT_NORMALS),
+        &teapot::TEAPOT_UVS,
+        &teapot::TEAPOT_INDICES,
+    )
+    .unwrap();
+    // The baked teapot is centred (y from -1.575 to 1.575): at 0.6 x, its base 0.945 below
+    // its centre stands on the floor.
+    let model = Mat4::translation(Vec3::new(fx(0.4), scene::FLOOR_Y + fx(0.945), fx(-5.2)))
+        * Mat4::rotation_y(Angle::from_degrees(fx(-35)))
+        * scale(fx(0.6));
+    let floor_mesh = scene::floor();
+    let floor = floor_mesh.mesh().unwrap();
+    let mut texels = vec![0u16; (TMAP * TMAP) as usize];
+    let mut map = DepthMap::new(&mut texels, TMAP).unwrap();
+    map.clear();
+    let depth_draw = DepthOnlyDraw::new(&map, Cull::Back).unwrap();
+    light_pass_mesh(&depth_draw, &pot, &model, space, &mut map);
+    light_pass_mesh(&depth_draw, &floor, &Mat4::IDENTITY, space, &mut map);
+    let vp = Viewport::new(0, 0, W, H).unwrap();
+    let view = map.view();
+    let draw = |t: &'t MipTexture<'t>| {
+        let binding = TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
+        let shader = Shadowed::<_, fixel::shading::shadow::Directional, F, 6>::new(
+            ModulateIntensity { tex: binding },
+            view,
+            Bias::for_filter::<F>(),
+        )
+        .unwrap();
+        ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).unwrap()
+    };
+    let n = (W * H) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::default(); n], vec![0u16; n]);
+    let mut frame = Frame::new(&mut color, W, H)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    frame.clear(Rgb565::new(4, 10, 14));
+    let cam = scene::camera();
+    let gl = scene::gouraud_light(light);
+    for (mesh, m, d) in [
+        (&pot, model, draw(tex)),
+        (&floor, Mat4::IDENTITY, draw(floor_tex)),
+    ] {
+        shadowed_mesh_triangles(mesh, &m, &cam, Some(&gl), space, |cv, lv| {
+            let tri = [0, 1, 2].map(|k| {
+                let inner = fixel::geometry::Vertex::new(
+                    cv[k].position,
+                    ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(
+                        &cv[k].to_vertex().varyings,
+                    ),
+                );
+                with_light::<3, 6>(&inner, lv[k])
+            });
+            d.clip_triangles(&[tri], &mut frame).unwrap();
+        });
+    }
+    color
 }
