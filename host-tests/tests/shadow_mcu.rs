@@ -30,13 +30,14 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 }
 
 /// Checksums printed by the firmware (identical on Cortex-M4F and Cortex-M0+).
-const FIRMWARE: [(&str, u32); 6] = [
+const FIRMWARE: [(&str, u32); 7] = [
     ("shadow_light", 0x89313f10),
     ("shadow_none", 0x9638d801),
     ("shadow_single", 0x85cf7ac5),
     ("shadow_pcf2x2", 0xa6edc826),
     ("shadow_pcf3x3", 0xd81a32ec),
     ("shadow_spot", 0xddd514a9),
+    ("shadow_grazing", 0x2800acf9),
 ];
 
 /// The banded firmware frame and the same frame drawn whole: (banded, whole) checksums and
@@ -44,6 +45,7 @@ const FIRMWARE: [(&str, u32); 6] = [
 fn frames<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     light: SceneLight,
+    cull: Cull,
 ) -> (u32, u32, u32) {
     let (t128, t64) = (texture(128, 128), texture(64, 64));
     let (c, f) = (
@@ -51,7 +53,7 @@ fn frames<K: LightKind, F: ShadowFilter, const M: usize>(
         Texture::new(&t64, 64, 64).unwrap(),
     );
     let mut buf = Box::new(ShadowBuffers::new());
-    shadow::light_pass(space, &mut buf.map).unwrap();
+    shadow::light_pass_culling(space, &mut buf.map, cull).unwrap();
     let banded =
         shadow::lit_pass::<K, F, M>(&mut buf, space, light, c, f, &mut || (), &mut || ()).unwrap();
     // Whole frame, through the demo's own lit pass.
@@ -108,19 +110,27 @@ fn firmware_checksums_and_bands_equal_whole_frame() {
     for (name, (banded, whole, px)) in [
         (
             "shadow_single",
-            frames::<_, SingleTap, 6>(&high, SceneLight::High),
+            frames::<_, SingleTap, 6>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_pcf2x2",
-            frames::<_, Pcf2x2, 6>(&high, SceneLight::High),
+            frames::<_, Pcf2x2, 6>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_pcf3x3",
-            frames::<_, Pcf3x3, 6>(&high, SceneLight::High),
+            frames::<_, Pcf3x3, 6>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_spot",
-            frames::<_, Pcf2x2, 7>(&scene::spot().unwrap(), SceneLight::Spot),
+            frames::<_, Pcf2x2, 7>(&scene::spot().unwrap(), SceneLight::Spot, Cull::Back),
+        ),
+        (
+            "shadow_grazing",
+            frames::<_, Pcf3x3, 6>(
+                &scene::directional(SceneLight::Grazing).unwrap(),
+                SceneLight::Grazing,
+                Cull::Front,
+            ),
         ),
     ] {
         assert_eq!(banded, whole, "{name}: bands differ from the whole frame");

@@ -157,8 +157,19 @@ pub fn light_pass<K: LightKind>(
     space: &LightSpace<K>,
     map: &mut DepthMap<'_>,
 ) -> Result<u32, Error> {
+    light_pass_culling(space, map, crate::geometry::Cull::Back)
+}
+
+/// [`light_pass`] culling `cull` faces as seen from the light: `Cull::Front` keeps only the
+/// faces turned away from the light in the map (the floor, open to the light, is then not
+/// in it and cannot shadow itself: the usual cure for acne at grazing angles).
+pub fn light_pass_culling<K: LightKind>(
+    space: &LightSpace<K>,
+    map: &mut DepthMap<'_>,
+    cull: crate::geometry::Cull,
+) -> Result<u32, Error> {
     map.clear();
-    let draw = DepthOnlyDraw::new(map, crate::geometry::Cull::Back)?;
+    let draw = DepthOnlyDraw::new(map, cull)?;
     let (cube, model, floor) = meshes();
     let mut n = light_pass_mesh(&draw, &cube.mesh()?, &model, space, map);
     n += light_pass_mesh(&draw, &floor.mesh()?, &Mat4::IDENTITY, space, map);

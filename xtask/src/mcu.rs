@@ -50,7 +50,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 19] = [
+const SCENES: [&str; 20] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -65,6 +65,8 @@ const SCENES: [&str; 19] = [
     "shadow_pcf2x2",
     "shadow_pcf3x3",
     "shadow_spot",
+    // The grazing light, front faces culled in the light pass.
+    "shadow_grazing",
     // Solid textures: the marble sphere, the flame and the wooden cube lit by the baked 3D
     // light map.
     "noise",

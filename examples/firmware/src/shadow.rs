@@ -57,8 +57,17 @@ impl Default for ShadowBuffers {
 
 /// The light pass of the scene into `map`; returns the texels written.
 pub fn light_pass<K: LightKind>(space: &LightSpace<K>, map: &mut [u16]) -> Result<u32, Error> {
+    light_pass_culling(space, map, Cull::Back)
+}
+
+/// [`light_pass`] culling `cull` faces as seen from the light (`Cull::Front` against acne).
+pub fn light_pass_culling<K: LightKind>(
+    space: &LightSpace<K>,
+    map: &mut [u16],
+    cull: Cull,
+) -> Result<u32, Error> {
     let mut m = DepthMap::new(map, MAP)?;
-    scene::light_pass(space, &mut m)
+    scene::light_pass_culling(space, &mut m, cull)
 }
 
 /// The lit pass in bands, with filter `F` under `space` (its map in `buf.map`, drawn
@@ -212,22 +221,27 @@ fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
     })
 }
 
-/// A whole `shadow_*` firmware under the high directional light: the light pass (not
-/// counted), then the lit pass with filter `F`, counted and reported as scene `name`.
-/// (Firmware only: the host tests include this file for the scene code above.)
+/// A whole `shadow_*` firmware under directional light `light`: the light pass culling
+/// `cull` faces (not counted), then the lit pass with filter `F`, counted and reported as
+/// scene `name`. (Firmware only: the host tests include this file for the scene code above.)
 #[cfg(target_os = "none")]
-pub fn run_directional<F: ShadowFilter>(name: &str, buf: &mut ShadowBuffers) -> bool {
-    let Ok(space) = scene::directional(SceneLight::High) else {
+pub fn run_directional<F: ShadowFilter>(
+    name: &str,
+    light: SceneLight,
+    cull: Cull,
+    buf: &mut ShadowBuffers,
+) -> bool {
+    let Ok(space) = scene::directional(light) else {
         return false;
     };
-    if light_pass(&space, &mut buf.map).is_err() {
+    if light_pass_culling(&space, &mut buf.map, cull).is_err() {
         return false;
     }
     crate::report(name, |pause, resume| {
         lit_pass::<_, F, 6>(
             buf,
             &space,
-            SceneLight::High,
+            light,
             core::hint::black_box(crate::data::T128),
             core::hint::black_box(crate::data::T64),
             pause,
