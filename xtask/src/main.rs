@@ -908,7 +908,8 @@ fn report(flags: &[String]) -> ExitCode {
         "--bin",
         "shadow_report",
     ];
-    if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s]].concat()).run() {
+    let shadow_mcu: &[&str] = if mcu_on { &["--mcu", &tsv_s] } else { &[] };
+    if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s], shadow_mcu].concat()).run() {
         eprintln!("report: {e}");
         return ExitCode::FAILURE;
     }

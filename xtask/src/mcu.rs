@@ -1062,7 +1062,7 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 10] = [
+const REPORT_BINS: [&str; 11] = [
     "report_cube",
     "report_sphere",
     "report_floor",
@@ -1073,6 +1073,7 @@ const REPORT_BINS: [&str; 10] = [
     "report_aa",
     "report_alpha",
     "report_surface",
+    "report_shadow",
 ];
 
 /// One mode of one report firmware on one MCU.

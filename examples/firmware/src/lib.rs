@@ -15,6 +15,8 @@ pub mod env;
 pub mod mapping;
 pub mod modes;
 pub mod scenes;
+#[cfg(fixel_fw_report)]
+pub mod shadow_modes;
 pub mod size;
 #[cfg(fixel_fw_report)]
 pub mod surface;

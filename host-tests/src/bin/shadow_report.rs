@@ -6,10 +6,20 @@
 //! `target/report/shadow.md`.
 //!
 //! `cargo run --release -p host-tests --bin shadow_report [-- --out DIR]` (`cargo xtask
-//! report` runs it). The Cortex-M0+ and Cortex-M4F instruction counts are the `shadow_*`
-//! scenes of `cargo xtask mcu` (64 x 64 map; a 128 x 128 map does not fit the firmwares'
-//! 24 KiB of RAM), read from `target/mcu/scenes.md`, which that command writes; the rows
-//! say so when it has not run.
+//! report` runs it, with `--mcu target/report/mcu.tsv`). The Cortex-M0+ and Cortex-M4F
+//! instruction counts of every row are the report firmware `report_shadow`'s
+//! (`examples/firmware/src/shadow_modes.rs`: whole 320 x 240 frame, textured and lit, light
+//! pass and lit pass counted apart), checked against the same code's checksums run here;
+//! the `shadow_*` scenes of `cargo xtask mcu` (bands of 4 rows, 64 x 64 map) are quoted
+//! from `target/mcu/scenes.md` when it exists.
+
+#[path = "../../../examples/firmware/src/scenes.rs"]
+#[allow(dead_code)]
+mod scenes;
+
+#[path = "../../../examples/firmware/src/shadow_modes.rs"]
+#[allow(dead_code)]
+mod shadow_modes;
 
 use std::time::Instant;
 
@@ -53,11 +63,67 @@ fn scene_of(light: &str, size: u32, filter: &str) -> Option<&'static str> {
 /// 1024² map.
 type Point = (&'static str, u32, &'static str, f64, f64);
 
+/// The report firmware's counts: lit pass per (light, size, filter) and light pass per
+/// (light, size), M0+ and M4F, each checked against this machine's run of the same code.
+#[derive(Default)]
+struct Firmware {
+    lit: std::collections::HashMap<(&'static str, u32, &'static str), Counts>,
+    light: std::collections::HashMap<(&'static str, u32), Counts>,
+}
+
+/// M0+ and M4F instructions per pixel (or texel), when measured.
+type Counts = Option<(f64, f64)>;
+
+impl Firmware {
+    fn new(path: Option<&std::path::Path>) -> Self {
+        use embedded_graphics_core::pixelcolor::Rgb565;
+        let rows = path
+            .map(|p| host_tests::report_mcu::read(p, "shadow"))
+            .unwrap_or_default();
+        let mut fw = Firmware::default();
+        let (mut t128, mut t64) = (
+            vec![Rgb565::new(0, 0, 0); 128 * 128],
+            vec![Rgb565::new(0, 0, 0); 64 * 64],
+        );
+        fixel::demo::checker_texture(128, 128, &mut t128).unwrap();
+        fixel::demo::checker_texture(64, 64, &mut t64).unwrap();
+        let tex = [
+            fixel::texture::Texture::new(&t128, 128, 128).unwrap(),
+            fixel::texture::Texture::new(&t64, 64, 64).unwrap(),
+        ];
+        let px = (shadow_modes::W * shadow_modes::H) as usize;
+        let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); px], vec![0u16; px]);
+        let mut map = vec![0u16; shadow_modes::MAP_TEXELS];
+        let names = ["single tap", "PCF 2x2 bilinear", "PCF 3x3"];
+        for (l, light) in shadow_modes::LIGHTS.iter().enumerate() {
+            for size in shadow_modes::SIZES {
+                shadow_modes::light_pass(l, size, &mut map).unwrap();
+                let n = (size * size) as usize;
+                let c = shadow_modes::map_checksum(&map[..n]);
+                let mode = format!("{light}-{size}-light");
+                fw.light
+                    .insert((light, size), host_tests::report_mcu::of(&rows, &mode, c));
+                for (f, filter) in shadow_modes::FILTERS.iter().enumerate() {
+                    shadow_modes::lit_pass(l, f, size, &map, tex, &mut color, &mut depth).unwrap();
+                    let c = shadow_modes::checksum(&color);
+                    let mode = format!("{light}-{size}-{filter}");
+                    fw.lit.insert(
+                        (light, size, names[f]),
+                        host_tests::report_mcu::of(&rows, &mode, c),
+                    );
+                }
+            }
+        }
+        fw
+    }
+}
+
 fn row<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     size: u32,
     truth: &host_tests::reference::shadow::RefShadowImage,
     table: &str,
+    fw: &Firmware,
     points: &mut Vec<Point>,
 ) -> String {
     let m = demo_meshes();
@@ -79,10 +145,15 @@ fn row<K: LightKind, F: ShadowFilter, const M: usize>(
     let ns = best * 1e9 / f64::from(fx.pixels);
     let share = 100.0 * alias.wrong as f64 / alias.both.max(1) as f64;
     points.push((K::NAME, size, F::NAME, ns, share));
-    let (m0, m4) = match scene_of(K::NAME, size, F::NAME) {
-        Some(sc) => (mcu(table, sc, "Cortex-M0+"), mcu(table, sc, "Cortex-M4F")),
-        None => ("-".into(), "-".into()),
-    };
+    let _ = (table, scene_of(K::NAME, size, F::NAME));
+    let (m0, m4) = fw
+        .lit
+        .get(&(K::NAME, size, F::NAME))
+        .copied()
+        .flatten()
+        .map_or(("-".into(), "-".into()), |(a, b)| {
+            (format!("{a:.1}"), format!("{b:.1}"))
+        });
     format!(
         "| {} | {size} | {} | {:.1} | {m0} | {m4} | {:.4} | {} | {:.4} | {} ({:.2} %) |",
         K::NAME,
@@ -117,14 +188,42 @@ fn main() {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/mcu/scenes.md"),
     )
     .unwrap_or_default();
+    let args: Vec<String> = std::env::args().collect();
+    let mcu_path = args
+        .iter()
+        .position(|a| a == "--mcu")
+        .and_then(|i| args.get(i + 1))
+        .map(std::path::PathBuf::from);
+    let fw = Firmware::new(mcu_path.as_deref());
     let mut out = String::from(
         "Shadow maps on the demo scene (cube on a floor, 320x240). host ns/px: both passes, \
          white inner shader, best of 5 (noisy on a shared machine). M0+ / M4F: exact \
-         instructions per pixel of the lit pass (textured, lit, bands of 4 rows) from `cargo \
-         xtask mcu` (no-shadow baseline: shadow_none; light pass per map texel: \
-         shadow_light). Errors in lit fraction (0..1) per covered pixel; wrong side = \
+         instructions per pixel of the lit pass (textured, lit, whole frame) of the report \
+         firmware `report_shadow` (`examples/firmware/src/shadow_modes.rs`, checksums equal \
+         to the host's). Errors in lit fraction (0..1) per covered pixel; wrong side = \
          |Δlit| > 0.5.\n\n",
     );
+    let light_row = |light: &'static str| {
+        let cell = |size: u32| {
+            fw.light
+                .get(&(light, size))
+                .copied()
+                .flatten()
+                .map_or("- / -".to_string(), |(a, b)| format!("{a:.1} / {b:.1}"))
+        };
+        format!(
+            "| {light} | {} | {} | {} |\n",
+            cell(32),
+            cell(64),
+            cell(128)
+        )
+    };
+    out +=
+        "Light pass (cube + floor, geometry included), instructions per map texel, M0+ / M4F:\n\n\
+            | light | 32² | 64² | 128² |\n|---|---|---|---|\n";
+    out += &light_row("directional");
+    out += &light_row("spot");
+    out += "\n";
     if table.is_empty() {
         out += "(`target/mcu/scenes.md` missing: run `cargo xtask mcu` for the M0+ / M4F columns.)\n\n";
     }
@@ -138,24 +237,23 @@ fn main() {
     out += "| light | map | filter | host ns/px | M0+ instr/px | M4F instr/px | mean \\|Δlit\\| vs f64, same map | wrong-side px vs f64, same map | mean \\|Δlit\\| vs f64 1024² | wrong-side px vs f64 1024² |\n|---|---|---|---|---|---|---|---|---|---|\n";
     let mut pts = Vec::new();
     for size in [32, 64, 128] {
-        out += &row::<_, SingleTap, 3>(&high, size, &th, &table, &mut pts);
+        out += &row::<_, SingleTap, 3>(&high, size, &th, &table, &fw, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf2x2, 3>(&high, size, &th, &table, &mut pts);
+        out += &row::<_, Pcf2x2, 3>(&high, size, &th, &table, &fw, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf3x3, 3>(&high, size, &th, &table, &mut pts);
+        out += &row::<_, Pcf3x3, 3>(&high, size, &th, &table, &fw, &mut pts);
         out += "\n";
     }
     for size in [32, 64, 128] {
-        out += &row::<_, SingleTap, 4>(&spot, size, &ts, &table, &mut pts);
+        out += &row::<_, SingleTap, 4>(&spot, size, &ts, &table, &fw, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts, &table, &mut pts);
+        out += &row::<_, Pcf2x2, 4>(&spot, size, &ts, &table, &fw, &mut pts);
         out += "\n";
-        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table, &mut pts);
+        out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table, &fw, &mut pts);
         out += "\n";
     }
     out += "\n![shadow maps: host cost against aliasing](shadow.png)\n";
     print!("{out}");
-    let args: Vec<String> = std::env::args().collect();
     let dir = match args.iter().position(|a| a == "--out") {
         Some(i) if i + 1 < args.len() => std::path::PathBuf::from(&args[i + 1]),
         _ => std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/report"),
