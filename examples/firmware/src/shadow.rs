@@ -221,9 +221,8 @@ fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
     })
 }
 
-/// A whole `shadow_*` firmware under directional light `light`: the light pass culling
-/// `cull` faces (not counted), then the lit pass with filter `F`, counted and reported as
-/// scene `name`. (Firmware only: the host tests include this file for the scene code above.)
+/// A whole `shadow_*` firmware under directional light `light`: see [`run`].
+/// (Firmware only: the host tests include this file for the scene code above.)
 #[cfg(target_os = "none")]
 pub fn run_directional<F: ShadowFilter>(
     name: &str,
@@ -231,16 +230,30 @@ pub fn run_directional<F: ShadowFilter>(
     cull: Cull,
     buf: &mut ShadowBuffers,
 ) -> bool {
-    let Ok(space) = scene::directional(light) else {
-        return false;
-    };
-    if light_pass_culling(&space, &mut buf.map, cull).is_err() {
+    match scene::directional(light) {
+        Ok(space) => run::<_, F, 6>(name, &space, light, cull, buf),
+        Err(_) => false,
+    }
+}
+
+/// A whole `shadow_*` firmware: the light pass of `space` culling `cull` faces (not
+/// counted), then the lit pass with filter `F` (`M`: 6 directional, 7 spot), counted and
+/// reported as scene `name`.
+#[cfg(target_os = "none")]
+pub fn run<K: LightKind, F: ShadowFilter, const M: usize>(
+    name: &str,
+    space: &LightSpace<K>,
+    light: SceneLight,
+    cull: Cull,
+    buf: &mut ShadowBuffers,
+) -> bool {
+    if light_pass_culling(space, &mut buf.map, cull).is_err() {
         return false;
     }
     crate::report(name, |pause, resume| {
-        lit_pass::<_, F, 6>(
+        lit_pass::<_, F, M>(
             buf,
-            &space,
+            space,
             light,
             core::hint::black_box(crate::data::T128),
             core::hint::black_box(crate::data::T64),

@@ -4,9 +4,9 @@
 #![no_main]
 
 use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel::geometry::Cull;
 use fixel::shading::pcf::Pcf2x2;
 use fixel_firmware::shadow::{self, ShadowBuffers};
-use fixel_firmware::{data, report};
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 
@@ -16,20 +16,7 @@ fn run() -> bool {
     let Ok(space) = scene::spot() else {
         return false;
     };
-    if shadow::light_pass(&space, &mut buf.map).is_err() {
-        return false;
-    }
-    report("shadow_spot", |pause, resume| {
-        shadow::lit_pass::<_, Pcf2x2, 7>(
-            buf,
-            &space,
-            SceneLight::Spot,
-            core::hint::black_box(data::T128),
-            core::hint::black_box(data::T64),
-            pause,
-            resume,
-        )
-    })
+    shadow::run::<_, Pcf2x2, 7>("shadow_spot", &space, SceneLight::Spot, Cull::Back, buf)
 }
 
 fixel_firmware::entry!(run);
