@@ -115,6 +115,12 @@ COMMANDS:
     bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]
                 Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
                 as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env)
+    bake-obj <input.obj> <output.rs> [--name NAME] [--uv keep|spherical|cylindrical|planar]
+                 [--axis x|y|z] [--normals keep|smooth] [--tangents] [--scale S]
+                A Wavefront OBJ model as static arrays in fixel's formats (positions,
+                normals, uvs, u16 triangles, tangent frames); prints the flash per array
+    teapot      Tessellates Newell's teapot patches (assets/teapot/newell.txt) into
+                assets/teapot/teapot.obj
     bake-displaced <output.rs> [--sphere coarse|fine] [--levels N] [--scale S]
                  [--bias B] [--name NAME]
                 A displaced mesh as static arrays (the bake-obj format): the demo
