@@ -6,6 +6,7 @@
 
 pub mod adapter;
 pub mod displaced;
+pub mod env_scene;
 pub mod golden;
 pub mod metrics;
 pub mod noise_scenes;

@@ -10,7 +10,7 @@
 
 mod height;
 pub(crate) mod mip;
-mod sample;
+pub(crate) mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
 mod wrap;

@@ -94,7 +94,7 @@ fn fetch(tex: &Texture<'_>, i: Option<u32>, j: Option<u32>) -> u16 {
 /// moves the numerator by half a unit, which cannot cross a multiple of 2^15. `(c >> 1) -
 /// 2^14` cannot overflow. The fraction only needs the low 16 bits, so wrapping is fine.
 #[inline(always)]
-fn split_half(c: i32) -> (i32, u32) {
+pub(crate) fn split_half(c: i32) -> (i32, u32) {
     let i0 = ((c >> 1) - 0x4000) >> 15;
     let f = (c.wrapping_sub(0x8000) as u32) & 0xFFFF;
     (i0, f)

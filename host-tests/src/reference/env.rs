@@ -8,6 +8,7 @@
 //!   direction gives the centre of face 0.
 //! * [`cube_sample`]: the face sampled with the reference's GL nearest or bilinear filter,
 //!   `CLAMP_TO_EDGE` on both axes.
+//! * [`cube_sample_seamless`]: GL's seamless bilinear filter across face edges.
 //! * [`render_varyings`]: a depth-tested, back-face-culled rasterization of clip-space
 //!   triangles with `N` varyings interpolated perspective-correctly, each pixel's colour
 //!   computed by a closure of the pixel and the interpolated varyings (as f64 of their bits).
@@ -63,6 +64,62 @@ pub fn cube_sample(faces: &[RefTexture; 6], d: [f64; 3], filter: RefFilter) -> [
         RefWrap::ClampToEdge,
         RefWrap::ClampToEdge,
     )
+}
+
+/// GL's seamless cube-map bilinear filter (`TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6
+/// §8.14.1) in direction `d`: the four taps around `(s n − 1/2, t n − 1/2)`; a tap outside
+/// the face is the texel, on whichever face it lands, that contains the tap's centre on
+/// the face's extended plane (found by GL's face selection of that point); a tap outside in
+/// both `i` and `j` is the average of the other three, as the specification recommends.
+pub fn cube_sample_seamless(faces: &[RefTexture; 6], d: [f64; 3]) -> [f64; 3] {
+    let (f, s, t) = cube_face_st(d);
+    let n = faces[0].width;
+    let nf = f64::from(n);
+    let (u, v) = (s * nf - 0.5, t * nf - 0.5);
+    let (i0, j0) = (u.floor() as i64, v.floor() as i64);
+    let (a, b) = (u - u.floor(), v - v.floor());
+    let inside = |k: i64| (0..i64::from(n)).contains(&k);
+    let tap = |i: i64, j: i64| -> Option<[f64; 3]> {
+        if inside(i) && inside(j) {
+            return Some(super::types::rgb565_to_f64(
+                faces[f].texel(i as u32, j as u32),
+            ));
+        }
+        if !inside(i) && !inside(j) {
+            return None;
+        }
+        // The tap's centre on the extended plane of face f, as a direction.
+        let sc = 2.0 * (i as f64 + 0.5) / nf - 1.0;
+        let tc = 2.0 * (j as f64 + 0.5) / nf - 1.0;
+        let p = match f {
+            0 => [1.0, -tc, -sc],
+            1 => [-1.0, -tc, sc],
+            2 => [sc, 1.0, tc],
+            3 => [sc, -1.0, -tc],
+            4 => [sc, -tc, 1.0],
+            _ => [-sc, -tc, -1.0],
+        };
+        let (g, s2, t2) = cube_face_st(p);
+        let idx = |c: f64| ((c * nf).floor() as i64).clamp(0, i64::from(n) - 1) as u32;
+        Some(super::types::rgb565_to_f64(
+            faces[g].texel(idx(s2), idx(t2)),
+        ))
+    };
+    let taps = [
+        tap(i0, j0),
+        tap(i0 + 1, j0),
+        tap(i0, j0 + 1),
+        tap(i0 + 1, j0 + 1),
+    ];
+    let got: Vec<[f64; 3]> = taps.iter().flatten().copied().collect();
+    let corner = if got.len() == 3 {
+        [0, 1, 2].map(|c| (got[0][c] + got[1][c] + got[2][c]) / 3.0)
+    } else {
+        [0.0; 3]
+    };
+    let c = taps.map(|t| t.unwrap_or(corner));
+    let w = [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b];
+    [0, 1, 2].map(|ch| (0..4).map(|k| w[k] * c[k][ch]).sum())
 }
 
 /// Rasterizes `tris` into a `width x height` frame (depth test less, back faces culled;

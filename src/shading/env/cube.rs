@@ -39,7 +39,8 @@
 //! # Filtering
 //!
 //! Within a face, with any [`Sampler`] (`Nearest` or `Bilinear`) and `CLAMP_TO_EDGE`: what
-//! GL does for cube maps without `TEXTURE_CUBE_MAP_SEAMLESS` (not implemented here).
+//! GL does for cube maps without `TEXTURE_CUBE_MAP_SEAMLESS`; [`CubeMap::seamless`] gives
+//! the seamless filter ([`SeamlessCubeMap`](super::SeamlessCubeMap)).
 
 use crate::texture::{ClampToEdge, Sampler, Texture};
 use crate::Error;

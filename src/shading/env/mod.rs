@@ -2,7 +2,8 @@
 //! direction of the reflection vector `r = 2 (n·v) n − v`.
 //!
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
-//!   major axis through a reciprocal table, nearest or bilinear within a face.
+//!   major axis through a reciprocal table, nearest or bilinear within a face;
+//!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges.
 //! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
@@ -52,11 +53,13 @@ pub mod convolve;
 pub mod cube;
 pub mod latlong;
 pub mod reflect;
+pub mod seamless;
 
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+pub use seamless::SeamlessCubeMap;
 pub use sphere::SphereMap;
 pub mod sky;
 pub mod sphere;

@@ -1,0 +1,121 @@
+//! The environment-mapping test scene shared by the env tests and the env report: the
+//! procedural sky as cube-map faces (fixel's and the reference's copies of the same texels),
+//! the benchmark sphere and cube as per-pixel-reflection vertices, a depth-tested 320 x 240
+//! draw, and the reference render with `r` per pixel.
+
+use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::math::{Mat4, Vec3};
+use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+use fixel::shading::env::{sky, CubeMap, EnvVertices};
+use fixel::shading::Shader;
+use fixel::surface::{Frame, DEPTH_CLEAR};
+use fixel::texture::{Sampler, Texture};
+
+use crate::reference::env::{reflect, render_varyings};
+use crate::reference::RefTexture;
+
+/// Frame width.
+pub const W: u32 = 320;
+/// Frame height.
+pub const H: u32 = 240;
+
+/// An RGB565 frame (raw) and its coverage (depth written).
+pub type Image = (Vec<u16>, Vec<bool>);
+
+/// The six sky faces of side `size` (GL order).
+pub fn faces(size: u32) -> Vec<Vec<Rgb565>> {
+    (0..6)
+        .map(|f| {
+            let mut t = vec![Rgb565::new(0, 0, 0); (size * size) as usize];
+            sky::sky_face(f, size, &mut t).expect("sky face");
+            t
+        })
+        .collect()
+}
+
+/// The reference's copy of `faces`.
+pub fn ref_faces(f: &[Vec<Rgb565>], size: u32) -> [RefTexture; 6] {
+    core::array::from_fn(|i| RefTexture {
+        width: size,
+        height: size,
+        texels: f[i].iter().map(|&c| c.into_storage()).collect(),
+        border: 0,
+    })
+}
+
+/// fixel's cube map over `faces`.
+pub fn cube<F: Sampler>(f: &[Vec<Rgb565>], size: u32, filter: F) -> CubeMap<'_, F> {
+    CubeMap::new(
+        core::array::from_fn(|i| Texture::new(&f[i], size, size).expect("face")),
+        filter,
+    )
+    .expect("cube map")
+}
+
+/// The triangles of `m` (with `model`, the benchmark camera of frame 20) as vertices of
+/// `vertex` (for example [`EnvVertices::per_pixel`]).
+pub fn triangles<const V: usize, const T: usize, const N: usize>(
+    m: &fixel::demo::MeshData<V, T>,
+    model: &Mat4,
+    vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
+) -> Vec<[Vertex<N>; 3]> {
+    let cam = fixel::demo::camera(20);
+    let s = EnvVertices::new(model, &cam.projection.mul(&cam.view), Vec3::ZERO);
+    m.indices
+        .iter()
+        .map(|t| {
+            t.map(|i| {
+                let i = usize::from(i);
+                vertex(&s, m.positions[i], m.normals[i]).expect("vertex")
+            })
+        })
+        .collect()
+}
+
+/// The benchmark sphere (frame 0) with per-pixel-reflection vertices.
+pub fn sphere_pixel() -> Vec<[Vertex<6>; 3]> {
+    triangles(
+        &fixel::demo::sphere(),
+        &fixel::demo::sphere_model(0),
+        EnvVertices::per_pixel,
+    )
+}
+
+/// Draws `tris` with `shader` into a fresh `W x H` frame (exact perspective, depth less,
+/// back faces culled).
+pub fn draw<S: Shader<Varyings = [i32; N]>, const N: usize>(
+    shader: S,
+    tris: &[[Vertex<N>; 3]],
+) -> Image {
+    let vp = Viewport::new(0, 0, W, H).expect("viewport");
+    let d = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
+    let n = (W * H) as usize;
+    let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); n], vec![0u16; n]);
+    let mut frame = Frame::new(&mut color, W, H)
+        .expect("frame")
+        .with_depth(&mut depth)
+        .expect("depth");
+    d.clip_triangles(tris, &mut frame).expect("drawn");
+    let cov = frame
+        .depth()
+        .expect("depth")
+        .iter()
+        .map(|&z| z != DEPTH_CLEAR)
+        .collect();
+    (
+        frame.pixels().iter().map(|&c| c.into_storage()).collect(),
+        cov,
+    )
+}
+
+/// The reference with the reflection per pixel (from the interpolated `n`, `v` of the
+/// first six varyings), coloured by `lookup` of the unnormalised `r`.
+pub fn reference_per_pixel<const N: usize>(
+    tris: &[[Vertex<N>; 3]],
+    lookup: impl Fn([f64; 3]) -> [f64; 3],
+) -> Image {
+    render_varyings(tris, W, H, |_, _, a| {
+        lookup(reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]))
+    })
+}

@@ -1,0 +1,207 @@
+//! Seamless cube-map filtering (GL's `TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6 §8.14.1):
+//! bilinear taps that fall off the edge of a face are read from the face beyond that edge,
+//! so a filtered cube map has no visible seams where faces meet.
+//!
+//! # Which texel lies beyond an edge
+//!
+//! A tap at texel `(i, j)` of face `f` with `i` or `j` one step outside `0..n` (bilinear
+//! never reaches further) is the texel whose centre lies in the direction of that tap's
+//! centre on the face's extended plane: `sc = 2i + 1 − n`, `tc = 2j + 1 − n`, `ma = n` (in
+//! half-texel units), turned into a 3D direction by inverting GL's face table. Its major
+//! axis is the one the tap crossed into (`|sc| = n + 1 > n`), and on that face the
+//! coordinates are either the old major value `±n` (the edge row or column: index `0` or
+//! `n − 1`) or an odd `c` in `(−n, n)` (index `(c + n − 1) / 2`, the same row or column,
+//! possibly mirrored). All in `i32`, no division: `(c + n − 1) >> 1` clamped to `0..n`.
+//!
+//! **Corners**: a tap outside the face in both `i` and `j` has no unique neighbour; as the
+//! GL specification recommends, it is the average of the three other taps (the three
+//! texels that meet at the cube's corner), per channel, rounded.
+//!
+//! # Cost
+//!
+//! Inside a face (all four taps on it, which is almost every pixel) the lookup is
+//! [`CubeMap`]'s bilinear one plus four compares; a pixel whose taps straddle an edge
+//! maps one or two taps (a few adds and compares each, one table-free projection), and a
+//! corner adds a three-way average.
+
+use super::cube::{CubeMap, EnvLookup};
+use crate::texture::sample::{blend_q8, split_half};
+use crate::texture::{Sampler, Texture};
+
+/// A cube map filtered bilinearly across face edges (`TEXTURE_CUBE_MAP_SEAMLESS`). Made by
+/// [`CubeMap::seamless`]; copying it copies six references.
+#[derive(Clone, Copy, Debug)]
+pub struct SeamlessCubeMap<'a> {
+    faces: [Texture<'a>; 6],
+    log2_size: u8,
+}
+
+impl<'a, F: Sampler> CubeMap<'a, F> {
+    /// The same faces, filtered bilinearly across face edges (whatever `F` is).
+    pub fn seamless(&self) -> SeamlessCubeMap<'a> {
+        SeamlessCubeMap {
+            faces: *self.faces(),
+            log2_size: self.size().trailing_zeros() as u8,
+        }
+    }
+}
+
+/// The direction (in half-texel units, `|major| = n`) of the centre of texel `(i, j)` of
+/// face `face` of side `n`, `i` and `j` possibly one step outside the face: GL's face table
+/// inverted (see [`cube`](super::cube)).
+#[inline(always)]
+fn tap_direction(face: usize, i: i32, j: i32, n: i32) -> [i32; 3] {
+    let (sc, tc) = (2 * i + 1 - n, 2 * j + 1 - n);
+    match face {
+        0 => [n, -tc, -sc],
+        1 => [-n, -tc, sc],
+        2 => [sc, n, tc],
+        3 => [sc, -n, -tc],
+        4 => [sc, -tc, n],
+        _ => [-sc, -tc, -n],
+    }
+}
+
+/// Face and texel indices of the texel whose centre is in direction `d` (half-texel units:
+/// every component odd or `±n` or `±(n + 1)`, one strict major axis), faces of side `n`.
+#[inline(always)]
+fn texel_of(d: [i32; 3], n: i32) -> (usize, u32, u32) {
+    let [x, y, z] = d;
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    // (face, sc, tc) from GL's table.
+    let (face, sc, tc) = if ax >= ay && ax >= az {
+        if x >= 0 {
+            (0, -z, -y)
+        } else {
+            (1, z, -y)
+        }
+    } else if ay >= az {
+        if y >= 0 {
+            (2, x, z)
+        } else {
+            (3, x, -z)
+        }
+    } else if z >= 0 {
+        (4, x, -y)
+    } else {
+        (5, -x, -y)
+    };
+    let idx = |c: i32| ((c + n - 1) >> 1).clamp(0, n - 1) as u32;
+    (face, idx(sc), idx(tc))
+}
+
+/// Average of three RGB565 colours per channel, rounded.
+#[inline(always)]
+fn average3(a: u16, b: u16, c: u16) -> u16 {
+    let ch = |sh: u32, mask: u32| {
+        let s = ((u32::from(a) >> sh) & mask)
+            + ((u32::from(b) >> sh) & mask)
+            + ((u32::from(c) >> sh) & mask);
+        // s / 3 rounded: s <= 189, and (s * 21846 + 32768) >> 16 is exact there.
+        ((s * 21846 + 32768) >> 16) << sh
+    };
+    (ch(11, 31) | ch(5, 63) | ch(0, 31)) as u16
+}
+
+impl SeamlessCubeMap<'_> {
+    /// The side of every face in texels.
+    pub fn size(&self) -> u32 {
+        1 << self.log2_size
+    }
+
+    /// The raw texel at `(i, j)` of `face`, either index possibly one step outside the face
+    /// (read from the neighbouring face); `None` for a corner tap.
+    #[inline(always)]
+    fn tap(&self, face: usize, i: i32, j: i32) -> Option<u16> {
+        let n = 1i32 << self.log2_size;
+        let (ii, jj) = (i >= 0 && i < n, j >= 0 && j < n);
+        let (f, ti, tj) = match (ii, jj) {
+            (true, true) => (face, i as u32, j as u32),
+            (false, false) => return None,
+            _ => texel_of(tap_direction(face, i, j, n), n),
+        };
+        Some(self.faces[f % 6].texel_raw(ti, tj))
+    }
+}
+
+impl EnvLookup for SeamlessCubeMap<'_> {
+    #[inline(always)]
+    fn lookup(&self, dir: [i32; 3]) -> u16 {
+        let c = super::cube::face_coords(dir);
+        let l = u32::from(self.log2_size);
+        let face = usize::from(c.face) % 6;
+        // Q16 s, t <= 2^16 and size <= 2^12: fits i32.
+        let (i0, fu) = split_half((c.s << l) as i32);
+        let (j0, fv) = split_half((c.t << l) as i32);
+        let (a, b) = ((fu + 0x80) >> 8, (fv + 0x80) >> 8);
+        let n = 1i32 << l;
+        let tex = &self.faces[face];
+        let taps = if i0 >= 0 && j0 >= 0 && i0 + 1 < n && j0 + 1 < n {
+            let (i, j) = (i0 as u32, j0 as u32);
+            [
+                tex.texel_raw(i, j),
+                tex.texel_raw(i + 1, j),
+                tex.texel_raw(i, j + 1),
+                tex.texel_raw(i + 1, j + 1),
+            ]
+        } else {
+            let t = [
+                self.tap(face, i0, j0),
+                self.tap(face, i0 + 1, j0),
+                self.tap(face, i0, j0 + 1),
+                self.tap(face, i0 + 1, j0 + 1),
+            ];
+            // At most one tap is a corner (the others are in the face or across one edge).
+            let get = |k: usize| t[k].unwrap_or(0);
+            core::array::from_fn(|k| match t[k] {
+                Some(c) => c,
+                None => average3(get((k + 1) % 4), get((k + 2) % 4), get((k + 3) % 4)),
+            })
+        };
+        blend_q8(taps, a, b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_edge_tap_lands_on_the_adjacent_edge_texel() {
+        // Walk each face's border one step outside: the neighbour texel's centre direction
+        // must be the tap's direction nudged back onto the cube (same sign pattern, adjacent
+        // face), and mapping back from it must return to the tap's own face edge.
+        for n in [1i32, 2, 4, 16] {
+            for face in 0..6 {
+                for k in 0..n {
+                    for (i, j) in [(-1, k), (n, k), (k, -1), (k, n)] {
+                        let (f, ti, tj) = texel_of(tap_direction(face, i, j, n), n);
+                        assert_ne!(f, face, "n={n} face={face} tap=({i},{j})");
+                        // The neighbour texel is on its face's border.
+                        let last = (n - 1) as u32;
+                        assert!(
+                            ti == 0 || ti == last || tj == 0 || tj == last,
+                            "n={n} face={face} ({i},{j}) -> {f} ({ti},{tj})"
+                        );
+                        // Its centre direction and the tap's differ by one texel step in
+                        // one component: they are adjacent across the edge.
+                        let a = tap_direction(face, i, j, n);
+                        let b = tap_direction(f, ti as i32, tj as i32, n);
+                        let d: i32 = (0..3).map(|c| (a[c] - b[c]).abs()).sum();
+                        assert_eq!(d, 2, "n={n} face={face} ({i},{j}): {a:?} vs {b:?}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn average3_rounds_per_channel() {
+        let w = 0xFFFF;
+        assert_eq!(average3(w, w, w), w);
+        assert_eq!(average3(0, 0, 0), 0);
+        // R: (31 + 0 + 0) / 3 = 10.33 -> 10; G: 63 / 3 = 21; B: (31 + 31) / 3 = 20.67 -> 21.
+        let c = average3(0xF800 | 0x07E0, 0x001F, 0x001F);
+        assert_eq!((c >> 11, (c >> 5) & 63, c & 31), (10, 21, 21));
+    }
+}
