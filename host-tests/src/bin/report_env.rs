@@ -39,9 +39,10 @@ use fixel::shading::Shader;
 use fixel::shading::TexBinding;
 use fixel::surface::{Frame, DEPTH_CLEAR};
 use fixel::texture::{Bilinear, Lod, MipTexture, Nearest, Repeat, Texture};
+use host_tests::cost_plot::Point;
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::reference::env::{
-    cube_sample, latlong_sample, reflect, render_varyings, sphere_sample,
+    cube_sample, cube_sample_seamless, latlong_sample, reflect, render_varyings, sphere_sample,
 };
 use host_tests::reference::{RefFilter, RefTexture};
 
@@ -241,6 +242,21 @@ fn main() {
                 )
             })
     };
+    let m4 = |name: &str, want: &(String, u64)| -> Option<f64> {
+        mcu.get(name)
+            .and_then(|m| m.get("Cortex-M4F"))
+            .filter(|(_, px, sum)| *sum == want.0 && *px == want.1)
+            .map(|(ipp, _, _)| *ipp)
+    };
+    let mut points: Vec<Point> = Vec::new();
+    let mut point = |name: &str, ns: f64, want: &(String, u64), e: &Report| {
+        points.push(Point {
+            name: name.to_string(),
+            host_ns: ns,
+            m4f: m4(name, want),
+            psnr: e.psnr_db,
+        })
+    };
     struct Variant {
         name: &'static str,
         per_pixel: bool,
@@ -318,6 +334,7 @@ fn main() {
             }
         };
         let e = cmp(&img, &reference);
+        point(v.name, ns, &want, &e);
         md += &format!(
             "| {} | {:.1} | {} | {} | {} | {} |\n",
             v.name,
@@ -326,6 +343,25 @@ fn main() {
             mcu_cell(v.name, &want, "Cortex-M4F"),
             fmt_err(&e),
             own.as_ref().map_or("-".into(), fmt_err)
+        );
+    }
+
+    // Seamless bilinear across face edges, against the reference's seamless filter.
+    {
+        let name = "pixel-seamless";
+        let sm = cube.seamless();
+        let reference = render_varyings(&sphere.pixel, W, H, |_, _, a| {
+            cube_sample_seamless(&rf, reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]))
+        });
+        let (img, ns) = run(ReflectPerPixel(sm), &sphere.pixel, runs);
+        let want = band_checksum(ReflectPerPixel(sm), EnvVertices::per_pixel);
+        let e = cmp(&img, &reference);
+        point(name, ns, &want, &e);
+        md += &format!(
+            "| {name} (bilinear across face edges) | {ns:.1} | {} | {} | {} | - |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&e)
         );
     }
 
@@ -357,11 +393,13 @@ fn main() {
         });
         let (img, ns) = run(ReflectPerPixel(sm), &sphere.pixel, runs);
         let want = band_checksum(ReflectPerPixel(sm), EnvVertices::per_pixel);
+        let e = cmp(&img, &reference);
+        point(name, ns, &want, &e);
         md += &format!(
             "| {name} (64 x 64 sphere map) | {ns:.1} | {} | {} | {} | - |\n",
             mcu_cell(name, &want, "Cortex-M0+"),
             mcu_cell(name, &want, "Cortex-M4F"),
-            fmt_err(&cmp(&img, &reference))
+            fmt_err(&e)
         );
         let name = "latlong-pixel-bilinear";
         let reference = render_varyings(&sphere.pixel, W, H, |_, _, a| {
@@ -369,11 +407,13 @@ fn main() {
         });
         let (img, ns) = run(ReflectPerPixel(ll), &sphere.pixel, runs);
         let want = band_checksum(ReflectPerPixel(ll), EnvVertices::per_pixel);
+        let e = cmp(&img, &reference);
+        point(name, ns, &want, &e);
         md += &format!(
             "| {name} (128 x 64 lat-long map) | {ns:.1} | {} | {} | {} | - |\n",
             mcu_cell(name, &want, "Cortex-M0+"),
             mcu_cell(name, &want, "Cortex-M4F"),
-            fmt_err(&cmp(&img, &reference))
+            fmt_err(&e)
         );
     }
 
@@ -474,11 +514,13 @@ fn main() {
         .expect("band frame");
         let want = (format!("0x{:08x}", r.checksum), u64::from(r.stats.pixels));
         let name = "envlit-bilinear";
+        let e = cmp(&img, &reference);
+        point(name, ns, &want, &e);
         md += &format!(
             "| {name} (T(256, 128) x irradiance + 0.5 glossy, 6 x 16² each) | {ns:.1} | {} | {} | {} | - |\n",
             mcu_cell(name, &want, "Cortex-M0+"),
             mcu_cell(name, &want, "Cortex-M4F"),
-            fmt_err(&cmp(&img, &reference))
+            fmt_err(&e)
         );
     }
 
@@ -499,7 +541,16 @@ fn main() {
             fmt_err(&cmp(&pp, &reference))
         );
     }
+    md += "\n![cost against error: one point per variant](env.png)\n";
     print!("{md}");
     std::fs::create_dir_all(&out).expect("out dir");
     std::fs::write(out.join("env.md"), md).expect("write env.md");
+    if let Err(e) = host_tests::cost_plot::write(
+        &points,
+        "environment maps: cost against PSNR (benchmark sphere)",
+        (20.0, 55.0),
+        &out.join("env.png"),
+    ) {
+        eprintln!("report_env: no plot: {e}");
+    }
 }

@@ -23,7 +23,7 @@ mod scenes;
 #[allow(dead_code)]
 mod surface;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
@@ -135,66 +135,22 @@ fn main() {
          --out target/report [--mcu target/report/mcu.tsv]`).\n\n![cost against error](surface.png)\n",
     );
     std::fs::write(out.join("surface.md"), md).expect("surface.md");
-    if let Err(e) = plot(&rows, &out.join("surface.png")) {
+    let points: Vec<host_tests::cost_plot::Point> = rows
+        .iter()
+        .map(|r| host_tests::cost_plot::Point {
+            name: r.name.to_string(),
+            host_ns: r.ns,
+            m4f: r.mcu.map(|m| m.1),
+            psnr: r.psnr,
+        })
+        .collect();
+    if let Err(e) = host_tests::cost_plot::write(
+        &points,
+        "surface detail: cost against PSNR",
+        (30.0, 50.0),
+        &out.join("surface.png"),
+    ) {
         eprintln!("surface_report: no plot: {e}");
     }
     println!("surface_report: wrote {}", out.join("surface.md").display());
-}
-
-fn plot(rows: &[Row], path: &Path) -> Result<(), String> {
-    use plotters::prelude::*;
-    host_tests::plot_font::register()?;
-    let (w, h) = (900u32, 420u32);
-    let mut buf = vec![255u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        // M4F instructions when measured, else host ns.
-        let measured = rows.iter().all(|r| r.mcu.is_some());
-        let pts: Vec<(f64, f64, &str)> = rows
-            .iter()
-            .map(|r| {
-                let x = if measured {
-                    r.mcu.map_or(r.ns, |m| m.1)
-                } else {
-                    r.ns
-                };
-                (x, r.psnr.min(60.0), r.name)
-            })
-            .collect();
-        let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) * 0.8;
-        let x1 = pts.iter().map(|p| p.0).fold(1.0, f64::max) * 1.5;
-        let mut chart = ChartBuilder::on(&root)
-            .caption("surface detail: cost against PSNR", ("sans-serif", 18))
-            .margin(14)
-            .x_label_area_size(40)
-            .y_label_area_size(56)
-            .build_cartesian_2d((x0..x1).log_scale(), 30.0..50.0)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc(if measured {
-                "Cortex-M4F instructions / pixel (log)"
-            } else {
-                "host ns / pixel (log)"
-            })
-            .y_desc("PSNR against the f64 reference, dB")
-            .label_style(("sans-serif", 13))
-            .draw()
-            .map_err(|e| e.to_string())?;
-        for (x, y, name) in pts {
-            chart
-                .draw_series([Circle::new((x, y), 5, BLUE.filled())])
-                .map_err(|e| e.to_string())?;
-            chart
-                .draw_series([Text::new(
-                    name.to_string(),
-                    (x * 1.03, y + 0.3),
-                    ("sans-serif", 12),
-                )])
-                .map_err(|e| e.to_string())?;
-        }
-        root.present().map_err(|e| e.to_string())?;
-    }
-    host_tests::png_io::write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
 }

@@ -132,6 +132,19 @@ pub fn render_varyings<const N: usize>(
     height: u32,
     mut shade: impl FnMut(u32, u32, [f64; N]) -> [f64; 3],
 ) -> (Vec<u16>, Vec<bool>) {
+    render_varyings_with_derivatives(tris, width, height, |x, y, a, _| shade(x, y, a))
+}
+
+/// [`render_varyings`], and `shade` also gets the varyings half a pixel left and right and
+/// half a pixel up and down of the pixel centre (`[x − ½, x + ½, y − ½, y + ½]`), each
+/// interpolated perspective-correctly on the same triangle's planes (extrapolated past its
+/// edges), for central differences.
+pub fn render_varyings_with_derivatives<const N: usize>(
+    tris: &[[Vertex<N>; 3]],
+    width: u32,
+    height: u32,
+    mut shade: impl FnMut(u32, u32, [f64; N], [[f64; N]; 4]) -> [f64; 3],
+) -> (Vec<u16>, Vec<bool>) {
     let n = (width * height) as usize;
     let (mut rgb, mut cov, mut depth) = (vec![0u16; n], vec![false; n], vec![f64::MAX; n]);
     for tri in tris {
@@ -155,6 +168,21 @@ pub fn render_varyings<const N: usize>(
             continue;
         }
         let vary = tri.map(|v| v.varyings.map(f64::from));
+        // Screen barycentrics at any point, from the exact window positions.
+        let area = (win[1].ex - win[0].ex) * (win[2].ey - win[0].ey)
+            - (win[2].ex - win[0].ex) * (win[1].ey - win[0].ey);
+        let bary = |px: f64, py: f64| -> [f64; 3] {
+            let e = |a: usize, b: usize| {
+                (win[b].ex - win[a].ex) * (py - win[a].ey)
+                    - (px - win[a].ex) * (win[b].ey - win[a].ey)
+            };
+            [e(1, 2) / area, e(2, 0) / area, e(0, 1) / area]
+        };
+        let interp = |l: [f64; 3]| -> [f64; N] {
+            let q = [0, 1, 2].map(|k| l[k] * win[k].inv_w);
+            let qs = q[0] + q[1] + q[2];
+            core::array::from_fn(|j| (0..3).map(|k| q[k] * vary[k][j]).sum::<f64>() / qs)
+        };
         rasterize(&win, width, height, |x, y, l| {
             let i = (y * width + x) as usize;
             let z = l[0] * win[0].z + l[1] * win[1].z + l[2] * win[2].z;
@@ -162,15 +190,61 @@ pub fn render_varyings<const N: usize>(
                 return;
             }
             depth[i] = z;
-            let q = [0, 1, 2].map(|k| l[k] * win[k].inv_w);
-            let qs = q[0] + q[1] + q[2];
-            let a: [f64; N] =
-                core::array::from_fn(|j| (0..3).map(|k| q[k] * vary[k][j]).sum::<f64>() / qs);
-            rgb[i] = rgb565_from_f64(shade(x, y, a));
+            let (cx, cy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let around = [
+                interp(bary(cx - 0.5, cy)),
+                interp(bary(cx + 0.5, cy)),
+                interp(bary(cx, cy - 0.5)),
+                interp(bary(cx, cy + 0.5)),
+            ];
+            rgb[i] = rgb565_from_f64(shade(x, y, interp(l), around));
             cov[i] = true;
         });
     }
     (rgb, cov)
+}
+
+/// `(s, t)` of direction `d` on face `face`'s plane (GL's table, `(sc / ma + 1) / 2`),
+/// extended beyond the face's edges.
+pub fn face_plane_st(face: usize, d: [f64; 3]) -> (f64, f64) {
+    let [x, y, z] = d;
+    let (sc, tc, ma) = match face {
+        0 => (-z, -y, x),
+        1 => (z, -y, -x),
+        2 => (x, z, y),
+        3 => (x, -z, -y),
+        4 => (x, -y, z),
+        _ => (-x, -y, -z),
+    };
+    (0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0))
+}
+
+/// GL's mipmapped cube-map lookup (trilinear: bilinear within a level, linear between
+/// levels, clamp-to-edge) of direction `d`, with `around` the directions half a pixel
+/// left, right, up and down: the face is `d`'s, the level-0 texel derivatives of `s`, `t`
+/// are central differences on that face's plane, `lambda = log2` of the longer (Heckbert).
+pub fn cube_sample_trilinear(
+    chains: &[super::mip::RefMipChain; 6],
+    d: [f64; 3],
+    around: [[f64; 3]; 4],
+) -> [f64; 3] {
+    let (f, s, t) = cube_face_st(d);
+    let size = f64::from(chains[f].base().width);
+    let st = around.map(|a| face_plane_st(f, a));
+    let deriv = [
+        [(st[1].0 - st[0].0) * size, (st[1].1 - st[0].1) * size],
+        [(st[3].0 - st[2].0) * size, (st[3].1 - st[2].1) * size],
+    ];
+    super::mip::sample_mip(
+        &chains[f],
+        [s, t],
+        deriv,
+        RefFilter::Bilinear,
+        RefFilter::Bilinear,
+        super::RefMip::Linear,
+        &super::RefLod::default(),
+        [RefWrap::ClampToEdge, RefWrap::ClampToEdge],
+    )
 }
 
 /// Sphere-map `(s, t)` of direction `d` (seed 000 §3.3): `r̂ = d / |d|`,

@@ -1,0 +1,84 @@
+//! The speed-against-error plot of the technique reports: one labelled point per variant,
+//! cost on a log x axis (Cortex-M4F instructions per pixel when every variant has them, else
+//! host ns per pixel), PSNR against the f64 reference on the y axis.
+
+use std::path::Path;
+
+/// One variant of a report.
+#[derive(Clone, Debug)]
+pub struct Point {
+    /// The variant's name, printed beside its point.
+    pub name: String,
+    /// Host ns per pixel.
+    pub host_ns: f64,
+    /// Cortex-M4F instructions per pixel, if measured.
+    pub m4f: Option<f64>,
+    /// PSNR against the reference, dB (capped at 60 on the plot).
+    pub psnr: f64,
+}
+
+/// Writes the plot of `points` to `path` (900 x 420 PNG) with `title`; the y axis spans
+/// `psnr_range` dB.
+pub fn write(
+    points: &[Point],
+    title: &str,
+    psnr_range: (f64, f64),
+    path: &Path,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    crate::plot_font::register()?;
+    let (w, h) = (900u32, 420u32);
+    let mut buf = vec![255u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let measured = points.iter().all(|p| p.m4f.is_some());
+        let pts: Vec<(f64, f64, &str)> = points
+            .iter()
+            .map(|p| {
+                let x = if measured {
+                    p.m4f.unwrap_or(p.host_ns)
+                } else {
+                    p.host_ns
+                };
+                let y = p.psnr.clamp(psnr_range.0, psnr_range.1.min(60.0));
+                (x, y, p.name.as_str())
+            })
+            .collect();
+        let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) * 0.8;
+        let x1 = pts.iter().map(|p| p.0).fold(1.0, f64::max) * 1.6;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 18))
+            .margin(14)
+            .x_label_area_size(40)
+            .y_label_area_size(56)
+            .build_cartesian_2d((x0..x1).log_scale(), psnr_range.0..psnr_range.1)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc(if measured {
+                "Cortex-M4F instructions / pixel (log)"
+            } else {
+                "host ns / pixel (log)"
+            })
+            .y_desc("PSNR against the f64 reference, dB")
+            .label_style(("sans-serif", 13))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let dy = (psnr_range.1 - psnr_range.0) / 60.0;
+        for (x, y, name) in pts {
+            chart
+                .draw_series([Circle::new((x, y), 5, BLUE.filled())])
+                .map_err(|e| e.to_string())?;
+            chart
+                .draw_series([Text::new(
+                    name.to_string(),
+                    (x * 1.03, y + dy),
+                    ("sans-serif", 12),
+                )])
+                .map_err(|e| e.to_string())?;
+        }
+        root.present().map_err(|e| e.to_string())?;
+    }
+    crate::png_io::write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
+}

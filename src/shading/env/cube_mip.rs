@@ -1,0 +1,248 @@
+//! Mipmapped cube maps: a mip chain per face and the level of detail from the derivatives
+//! of the reflection's face coordinates (GL ES 3.0 §3.8.10 and §3.8.11 for cube maps).
+//!
+//! GL takes the LOD of a cube-map lookup from the screen derivatives of the face
+//! coordinates `s`, `t` on the face the pixel's direction selects. fixel gets them from
+//! the span loop's existing level-of-detail machinery ([`Fragment::lambda`]) instead of
+//! differentiating the per-pixel reflection: per triangle, [`ReflectPerPixelMip`]'s hook
+//! reflects at the three vertices and projects the three `r` onto the face plane of their
+//! sum's major axis (`sc / ma`, `tc / ma` on that face's axes, extended beyond the face
+//! edges), in texel units. These two extra varyings are interpolated like any other and
+//! the span loop computes `lambda` from their derivatives (Heckbert's `log2` of the longer
+//! derivative, Q8.8), at each pixel, per span or per triangle as
+//! [`Lod::granularity`](crate::texture::Lod) says. The lookup itself still uses the exact
+//! per-pixel reflection; only the LOD comes from the projected pair.
+//!
+//! This is a first-order model of `r`'s face coordinates across the triangle: exact for
+//! `lambda` when the face coordinates are projective in screen space, which the
+//! reflection of a curved surface is not. On the benchmark sphere (small triangles) it is
+//! within a fraction of a level of the reference's `lambda` (see `host-tests`). If the
+//! three reflections of a triangle span more than about 80° (`ma` of a vertex at most 1/8
+//! of its largest component, or behind the face plane), the projected pair is clamped to
+//! a spread of `2^13` texels: the coarsest level, which is what such a triangle needs.
+//!
+//! # Formats
+//!
+//! Varyings: `nx, ny, nz, vx, vy, vz` as [`ReflectPerPixel`](super::ReflectPerPixel) (any
+//! scale per vector), then two slots the hook fills (`s`, `t` in I16F16 texel units of
+//! level 0; give 0 in the vertex, as [`EnvVertices::per_pixel_mip`] does).
+
+use super::cube::{face_coords, EnvLookup};
+use super::reflect::{fit_group, reflect_fit, EnvVertices, FIT_BITS, VARYING_BITS};
+use crate::geometry::Vertex;
+use crate::math::Vec3;
+use crate::shading::{Fragment, Shader};
+use crate::texture::{ClampToEdge, Lod, LodGranularity, MipTexture, TexSampler};
+use crate::Error;
+
+/// Six mip chains of one square power-of-two size and level count, GL face order, sampled
+/// with `S` (for example [`Trilinear`](crate::texture::Trilinear)) and clamp-to-edge within
+/// a face. Holds a reference to the caller's six chains, so copying it is cheap.
+#[derive(Clone, Copy, Debug)]
+pub struct MipCubeMap<'a, S> {
+    faces: &'a [MipTexture<'a>; 6],
+    log2_size: u8,
+    sampler: S,
+}
+
+impl<'a, S: TexSampler> MipCubeMap<'a, S> {
+    /// A mipmapped cube map over six chains (GL order), sampled with `sampler`.
+    ///
+    /// # Errors
+    /// [`Error::BadCubeMap`] naming the first face whose level 0 is not square or not the
+    /// size of face 0; [`Error::BadSize`] (with the level count) when a face has another
+    /// number of levels than face 0.
+    pub fn new(faces: &'a [MipTexture<'a>; 6], sampler: S) -> Result<Self, Error> {
+        let size = faces[0].base().width();
+        for (i, f) in faces.iter().enumerate() {
+            let b = f.base();
+            if b.width() != size || b.height() != size {
+                return Err(Error::BadCubeMap {
+                    face: i as u8,
+                    width: b.width(),
+                    height: b.height(),
+                });
+            }
+            if f.levels() != faces[0].levels() {
+                return Err(Error::BadSize(f.levels()));
+            }
+        }
+        Ok(MipCubeMap {
+            faces,
+            log2_size: size.trailing_zeros() as u8,
+            sampler,
+        })
+    }
+
+    /// The side of level 0 of every face, in texels.
+    pub fn size(&self) -> u32 {
+        1 << self.log2_size
+    }
+
+    /// The colour in direction `dir` (any length) at level of detail `lambda` (Q8.8, after
+    /// any bias and clamp; `<= 0` magnifies level 0).
+    #[inline(always)]
+    pub fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16 {
+        let c = face_coords(dir);
+        let l = u32::from(self.log2_size);
+        let tex = &self.faces[usize::from(c.face) % 6];
+        self.sampler.sample_mip(
+            tex,
+            ClampToEdge,
+            ClampToEdge,
+            (c.s << l) as i32,
+            (c.t << l) as i32,
+            lambda,
+        )
+    }
+}
+
+impl<S: TexSampler> EnvLookup for MipCubeMap<'_, S> {
+    /// Level 0 (no derivatives here): [`MipCubeMap::lookup_lod`] with `lambda = 0`.
+    #[inline(always)]
+    fn lookup(&self, dir: [i32; 3]) -> u16 {
+        self.lookup_lod(dir, 0)
+    }
+}
+
+/// Largest magnitude of the projected pair, I16F16 texels (`2^13` texels): differences of
+/// two stay within `i32`.
+const PAIR_LIMIT: i64 = 1 << 29;
+
+/// `(sc / ma + 1) size / 2` in I16F16 texels on the face `(axis, sign)` (GL's table), the
+/// face plane extended; `None` when `ma` is at most 1/8 of the largest component (or
+/// behind the plane).
+#[inline]
+fn plane_coords(r: [i32; 3], face: u8, log2_size: u32) -> Option<(i64, i64)> {
+    let [x, y, z] = r.map(i64::from);
+    let (sc, tc, ma) = match face {
+        0 => (-z, -y, x),
+        1 => (z, -y, -x),
+        2 => (x, z, y),
+        3 => (x, -z, -y),
+        4 => (x, -y, z),
+        _ => (-x, -y, -z),
+    };
+    let big = x.abs().max(y.abs()).max(z.abs());
+    if ma <= 0 || ma * 8 <= big {
+        return None;
+    }
+    // |r| < 2^31, size <= 2^12: (sc << (15 + l)) < 2^58.
+    let half = 1i64 << (15 + log2_size);
+    let q = |c: i64| ((c * half) / ma + half).clamp(-PAIR_LIMIT, PAIR_LIMIT);
+    Some((q(sc), q(tc)))
+}
+
+/// Environment mapping with the reflection per pixel and mipmapped cube faces (trilinear
+/// or any [`TexSampler`]). Varyings: `n`, `v` (as [`ReflectPerPixel`](super::ReflectPerPixel))
+/// and the two slots the hook fills; see the module docs.
+#[derive(Clone, Copy, Debug)]
+pub struct ReflectPerPixelMip<'a, S> {
+    /// The mipmapped cube map.
+    pub map: MipCubeMap<'a, S>,
+    /// Bias, clamps (Q8.8) and where `lambda` is computed.
+    pub lod: Lod,
+}
+
+impl<S: TexSampler> Shader for ReflectPerPixelMip<'_, S> {
+    type Varyings = [i32; 8];
+    type Triangle = ();
+    const TEXCOORDS: Option<(usize, usize)> = Some((6, 7));
+    const LOD: bool = true;
+
+    #[inline(always)]
+    fn lod_granularity(&self) -> LodGranularity {
+        self.lod.granularity
+    }
+
+    #[inline]
+    fn triangle(&self, v: &mut [[i32; 8]; 3]) {
+        fit_group::<8, VARYING_BITS>(v, 0);
+        fit_group::<8, VARYING_BITS>(v, 3);
+        const S: u32 = VARYING_BITS - FIT_BITS;
+        let r = v.map(|a| {
+            reflect_fit(
+                [a[0] >> S, a[1] >> S, a[2] >> S],
+                [a[3] >> S, a[4] >> S, a[5] >> S],
+            )
+        });
+        // The face of the triangle's mean reflection (each r below 2^30: the sum fits i32
+        // after halving), so the projection is centred on the triangle.
+        let mean: [i32; 3] =
+            core::array::from_fn(|c| (r[0][c] >> 2) + (r[1][c] >> 2) + (r[2][c] >> 2));
+        let face = face_coords(mean).face;
+        let l = u32::from(self.map.log2_size);
+        let p = r.map(|ri| plane_coords(ri, face, l));
+        let centre = 1i64 << (15 + l);
+        let (s0, t0) = p[0].unwrap_or((centre, centre));
+        for (k, vert) in v.iter_mut().enumerate() {
+            // A vertex whose r leaves the face plane's useful range: spread the pair to the
+            // limit (the coarsest level), away from vertex 0.
+            let (s, t) = p[k].unwrap_or_else(|| {
+                let away = |c0: i64, k: usize| {
+                    if (c0 < centre) ^ (k == 2) {
+                        PAIR_LIMIT
+                    } else {
+                        -PAIR_LIMIT
+                    }
+                };
+                (away(s0, k), away(t0, k + 1))
+            });
+            vert[6] = s as i32;
+            vert[7] = t as i32;
+        }
+    }
+
+    #[inline(always)]
+    fn shade(&self, f: &Fragment<[i32; 8], ()>) -> Option<u16> {
+        const S: u32 = VARYING_BITS - FIT_BITS;
+        let a = f.varyings;
+        let r = reflect_fit(
+            [a[0] >> S, a[1] >> S, a[2] >> S],
+            [a[3] >> S, a[4] >> S, a[5] >> S],
+        );
+        let lod = &self.lod;
+        let lambda = f
+            .lambda
+            .saturating_add(lod.bias)
+            .clamp(lod.min, lod.max.max(lod.min));
+        Some(self.map.lookup_lod(r, lambda))
+    }
+}
+
+impl EnvVertices {
+    /// A vertex for [`ReflectPerPixelMip`]: [`EnvVertices::per_pixel`]'s six varyings and two
+    /// zero slots for the projected face coordinates. `None` when a component overflows.
+    pub fn per_pixel_mip(&self, p: Vec3, n: Vec3) -> Option<Vertex<8>> {
+        let v = self.per_pixel(p, n)?;
+        let a = v.varyings;
+        Some(Vertex::new(
+            v.position,
+            [a[0], a[1], a[2], a[3], a[4], a[5], 0, 0],
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plane_coords_match_face_coords_on_the_face() {
+        for d in [
+            [1000, 200, -300],
+            [-50, 900, 10],
+            [7, -8, -1000],
+            [300, 300, 1000],
+        ] {
+            let c = face_coords(d);
+            let (s, t) = plane_coords(d, c.face, 6).unwrap();
+            // face_coords is Q16 of [0, 1]; the plane pair is I16F16 texels of a 64 face.
+            assert!((s - (i64::from(c.s) << 6)).abs() <= 256, "{d:?}");
+            assert!((t - (i64::from(c.t) << 6)).abs() <= 256, "{d:?}");
+        }
+        // Behind the plane, or grazing it: no coordinates.
+        assert_eq!(plane_coords([-5, 1, 1], 0, 6), None);
+        assert_eq!(plane_coords([1, 100, 0], 0, 6), None);
+    }
+}
