@@ -87,6 +87,15 @@ fn main() {
             .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
             .collect();
         fs::write(out.join(format!("sky64-{face}.bin")), bytes).unwrap();
+        // Its full mip chain (7 levels, 5461 texels), for the mipmapped mode of the report.
+        let mut chain = vec![Rgb565::new(0, 0, 0); fixel::texture::chain_len(64, 64, 7)];
+        chain[..64 * 64].copy_from_slice(&t);
+        fixel::texture::generate_mips(&mut chain, 64, 64, 7).unwrap();
+        let bytes: Vec<u8> = chain
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join(format!("sky64mip-{face}.bin")), bytes).unwrap();
     }
     // The same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map.
     let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];

@@ -163,6 +163,54 @@ fn sphere_map_rim() {
     assert_eq!(SphereMap::<Bilinear>::coords([0, 0, 0]), (32768, 32768));
 }
 
+/// Near the rim (r within 25° of pointing away from the viewer, where the map squeezes a
+/// ring of directions into the last texels), the sky's sphere map filters to the colours
+/// around the rim, not to the black outside the disc: averaged over all azimuths, the
+/// bilinear lookups are as bright as the sky in those directions. The same map with black
+/// outside the disc (what `sky_spheremap` wrote before) is measurably darker there.
+#[test]
+fn sphere_map_rim_is_not_dark() {
+    let n = 64;
+    let t = sphere_tex(n);
+    let mut black = t.clone();
+    for (k, px) in black.iter_mut().enumerate() {
+        let (i, j) = ((k as u32) % n, (k as u32) / n);
+        let sx = 2.0 * (f64::from(i) + 0.5) / f64::from(n) - 1.0;
+        let ty = 2.0 * (f64::from(j) + 0.5) / f64::from(n) - 1.0;
+        if sx * sx + ty * ty > 1.0 {
+            *px = Rgb565::new(0, 0, 0);
+        }
+    }
+    let lum = |p: u16| f64::from((p >> 11) * 2 + ((p >> 5) & 63) + (p & 31) * 2);
+    for deg in [155.0f64, 165.0, 172.0] {
+        let th = deg.to_radians();
+        let (mut sky_sum, mut got, mut old) = (0.0, 0.0, 0.0);
+        for k in 0..512 {
+            let phi = f64::from(k) / 512.0 * std::f64::consts::TAU;
+            let d = [th.sin() * phi.cos(), th.sin() * phi.sin(), th.cos()];
+            let di = d.map(|c| (c * 1e6).round() as i32);
+            let c = sky::sky_colour(d.map(|c| c as f32));
+            sky_sum += lum(Rgb565::new(
+                (c[0] * 31.0).round() as u8,
+                (c[1] * 63.0).round() as u8,
+                (c[2] * 31.0).round() as u8,
+            )
+            .into_storage());
+            got += lum(SphereMap::new(Texture::new(&t, n, n).unwrap(), Bilinear).lookup(di));
+            old += lum(SphereMap::new(Texture::new(&black, n, n).unwrap(), Bilinear).lookup(di));
+        }
+        let (r, ro) = (got / sky_sum, old / sky_sum);
+        println!("sphere map at {deg}°: brightness vs the sky {r:.3} (black outside: {ro:.3})");
+        assert!((0.9..=1.1).contains(&r), "{deg}: {r}");
+        if deg >= 165.0 {
+            assert!(
+                ro < 0.85,
+                "{deg}: black outside should darken the rim ({ro})"
+            );
+        }
+    }
+}
+
 /// The lat-long poles: the first and last rows, at `s = 1/2`; near them, `t` within 2^-12.
 #[test]
 fn latlong_poles() {

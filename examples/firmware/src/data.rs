@@ -76,6 +76,17 @@ pub static SKY64: [[Rgb565; 64 * 64]; 6] = [
     texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64-5.bin"))),
 ];
 
+/// [`SKY64`] with full mip chains (7 levels, 5461 texels a face; 64 KB of flash, linked only
+/// by the report's mipmapped mode).
+pub static SKY64_MIPS: [[Rgb565; 5461]; 6] = [
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-0.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-1.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-2.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-3.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-4.bin"))),
+    texels(include_bytes!(concat!(env!("OUT_DIR"), "/sky64mip-5.bin"))),
+];
+
 /// The same sky as a 64 x 64 sphere map (8 KB).
 pub static SKY_SPHERE64: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
     env!("OUT_DIR"),

@@ -203,8 +203,11 @@ pub fn sky_latlong(w: u32, h: u32, out: &mut [Rgb565]) -> Result<(), Error> {
 }
 
 /// Fills `out` (`size * size`, row 0 first) with the sky as a sphere map (see
-/// [`sphere`](super::sphere): texel centre `(s, t)`, `ρ = |(2s − 1, 2t − 1)|` = `sin(θ/2)`,
-/// black outside the disc), one sample per texel.
+/// [`sphere`](super::sphere): texel centre `(s, t)`, `ρ = |(2s − 1, 2t − 1)|` = `sin(θ/2)`),
+/// one sample per texel. Texels in the last half texel of the disc and outside it take the
+/// colour at `ρ = 1 − 1/(2 size)` on their radius: the rim (`r` pointing away from the
+/// viewer, a singularity where every `φ` meets) then filters to the colours around it
+/// rather than to black.
 ///
 /// # Errors
 /// [`Error::WrongLength`] if `out` is not `size * size` long.
@@ -221,10 +224,16 @@ pub fn sky_spheremap(size: u32, out: &mut [Rgb565]) -> Result<(), Error> {
         let (i, j) = ((k as u32) % size, (k as u32) / size);
         let sx = 2.0 * (i as f32 + 0.5) / size as f32 - 1.0;
         let ty = 2.0 * (j as f32 + 0.5) / size as f32 - 1.0;
-        let rho2 = sx * sx + ty * ty;
-        if rho2 > 1.0 {
-            *px = Rgb565::new(0, 0, 0);
-            continue;
+        let mut rho2 = sx * sx + ty * ty;
+        let (mut sx, mut ty) = (sx, ty);
+        // Outside the disc: the colour just inside the rim on the same radius, so a
+        // bilinear lookup at the rim blends neighbouring rim colours, not black.
+        let inner = 1.0 - 0.5 / size as f32;
+        if rho2 > inner * inner {
+            let k = inner / M::sqrt(rho2);
+            sx *= k;
+            ty *= k;
+            rho2 = inner * inner;
         }
         // rho = sin(θ/2): cos θ = 1 − 2 ρ², sin θ = 2 ρ sqrt(1 − ρ²); (rx, ry) along (sx, ty).
         let cz = 1.0 - 2.0 * rho2;

@@ -126,6 +126,42 @@ fn env_lit(buf: &mut EnvBuffers) -> bool {
     })
 }
 
+/// The sphere with 64-texel mipmapped faces, trilinear, LOD per pixel.
+#[cfg(fixel_fw_report)]
+#[inline(never)]
+fn mipmapped(buf: &mut EnvBuffers) -> bool {
+    use fixel::shading::env::{MipCubeMap, ReflectPerPixelMip};
+    use fixel::texture::Trilinear;
+    let s = core::hint::black_box(&data::SPHERE);
+    let c = core::hint::black_box(&data::SKY64_MIPS);
+    let chain = |i: usize| MipTexture::new(&c[i], 64, 64, 7);
+    let (Ok(a), Ok(b), Ok(d), Ok(e), Ok(f), Ok(g)) =
+        (chain(0), chain(1), chain(2), chain(3), chain(4), chain(5))
+    else {
+        return false;
+    };
+    let faces = [a, b, d, e, f, g];
+    let Ok(map) = MipCubeMap::new(&faces, Trilinear::default()) else {
+        return false;
+    };
+    let shader = ReflectPerPixelMip {
+        map,
+        lod: Lod::default(),
+    };
+    mode("pixel-trilinear", |pause, resume| {
+        env::env_frame::<_, Exact, 8>(
+            buf,
+            shader,
+            &s.positions,
+            &s.normals,
+            &s.indices,
+            EnvVertices::per_pixel_mip,
+            pause,
+            resume,
+        )
+    })
+}
+
 fn run() -> bool {
     let mut buf = EnvBuffers::new();
     let f = core::hint::black_box(&data::SKY64);
@@ -153,11 +189,14 @@ fn run() -> bool {
         "latlong-pixel-bilinear",
         LatLongMap::new(ll, Bilinear),
     );
-    // Only in the report layout (`cargo xtask report`): with `T(256, 128)` this mode does
-    // not fit the default 256K of flash next to the others.
+    // Only in the report layout (`cargo xtask report`): with `T(256, 128)`, the mip chains
+    // and the seamless filter's code these modes do not fit the default 256K of flash next
+    // to the others.
     #[cfg(fixel_fw_report)]
     {
+        ok &= per_pixel(&mut buf, "pixel-seamless", cube.seamless());
         ok &= env_lit(&mut buf);
+        ok &= mipmapped(&mut buf);
     }
     ok
 }
