@@ -8,6 +8,12 @@
 //!
 //! Each face is taken as stored, in GL's face orientation (`t = 0`, the face's first row,
 //! at the top), and rounded to RGB565 as `cargo xtask bake` does.
+//!
+//! Options bake more statics from the same faces: `--mips` the full mip chain of each face
+//! (`NAME_MIPS`, for `MipCubeMap`), `--irradiance SIZE` the cosine-convolved map
+//! (`NAME_IRRADIANCE`) and `--glossy EXPONENT[:SIZE]` the Phong-lobe-convolved map
+//! (`NAME_GLOSSY`, size 16 unless given), both with fixel's `convolve_face` from the faces
+//! reduced to at most 64 texels a side.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -77,16 +83,147 @@ pub fn source(s: u32, faces: &[Vec<[u8; 3]>], input: &str, name: &str, rgb565: &
     o
 }
 
-/// Parses `bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]` and bakes.
+/// Appends `pub static {name}: [[Rgb565; len]; 6]` of raw RGB565 `faces` (each `len`).
+fn push_faces(o: &mut String, name: &str, doc: &str, faces: &[Vec<u16>], rgb565: &str) {
+    let len = faces.first().map_or(0, Vec::len);
+    let _ = writeln!(o, "\n/// {doc}");
+    let _ = writeln!(o, "pub static {name}: [[{rgb565}; {len}]; 6] = [");
+    for f in faces {
+        o.push_str("    [\n");
+        for &t in f {
+            let _ = writeln!(
+                o,
+                "        {rgb565}::new({}, {}, {}),",
+                t >> 11,
+                (t >> 5) & 63,
+                t & 31
+            );
+        }
+        o.push_str("    ],\n");
+    }
+    o.push_str("];\n");
+}
+
+fn raw(f: &[[u8; 3]]) -> Vec<u16> {
+    f.iter()
+        .map(|t| (u16::from(t[0]) << 11) | (u16::from(t[1]) << 5) | u16::from(t[2]))
+        .collect()
+}
+
+fn to_rgb565(f: &[u16]) -> Vec<fixel::Rgb565> {
+    use fixel::Rgb565;
+    f.iter()
+        .map(|&t| Rgb565::new((t >> 11) as u8, ((t >> 5) & 63) as u8, (t & 31) as u8))
+        .collect()
+}
+
+fn from_rgb565(f: &[fixel::Rgb565]) -> Vec<u16> {
+    use fixel::embedded_graphics_core::pixelcolor::IntoStorage;
+    f.iter().map(|c| c.into_storage()).collect()
+}
+
+/// Each face's full mip chain (`fixel::texture::generate_mips`, GL's box filter), raw.
+fn mip_chains(s: u32, faces: &[Vec<u16>]) -> Result<Vec<Vec<u16>>, String> {
+    let levels = fixel::texture::full_levels(s, s);
+    faces
+        .iter()
+        .map(|f| {
+            let mut chain = to_rgb565(f);
+            chain.resize(
+                fixel::texture::chain_len(s, s, levels),
+                fixel::Rgb565::new(0, 0, 0),
+            );
+            fixel::texture::generate_mips(&mut chain, s, s, levels)
+                .map_err(|e| format!("mip chain: {e:?}"))?;
+            Ok(from_rgb565(&chain))
+        })
+        .collect()
+}
+
+/// Faces convolved with `lobe` (`fixel::shading::env::convolve_face`) at `out` texels a
+/// side, from the source reduced (by its mip chain) to at most 64 texels a side: the
+/// convolved maps are smooth, and the brute force costs `36 out² src²`.
+fn convolved(
+    s: u32,
+    faces: &[Vec<u16>],
+    lobe: fixel::shading::env::Lobe,
+    out: u32,
+    what: &str,
+) -> Result<Vec<Vec<u16>>, String> {
+    let (mut src, mut side) = (faces.to_vec(), s);
+    if side > 64 {
+        let chains = mip_chains(s, faces)?;
+        let k = (side / 64).trailing_zeros();
+        let off = (0..k)
+            .map(|l| (fixel::texture::level_side(s, l) as usize).pow(2))
+            .sum::<usize>();
+        side = 64;
+        src = chains
+            .iter()
+            .map(|c| c[off..off + 64 * 64].to_vec())
+            .collect();
+    }
+    let srcs: [&[u16]; 6] = core::array::from_fn(|i| &src[i][..]);
+    (0..6)
+        .map(|f| {
+            let mut o = vec![fixel::Rgb565::new(0, 0, 0); (out * out) as usize];
+            fixel::shading::env::convolve_face(srcs, side, lobe, f, out, &mut o)
+                .map_err(|e| format!("{what}: {e:?}"))?;
+            println!(
+                "  {what}: face {} of 6 ({out} x {out} from {side} x {side})",
+                f + 1
+            );
+            Ok(from_rgb565(&o))
+        })
+        .collect()
+}
+
+fn parse_side(v: &str, flag: &str) -> Result<u32, BakeError> {
+    match v.parse::<u32>() {
+        Ok(n) if n.is_power_of_two() && n <= 256 => Ok(n),
+        _ => Err(BakeError::Usage(format!(
+            "{flag}: `{v}` is not a power of two from 1 to 256"
+        ))),
+    }
+}
+
+const USAGE: &str = "usage: bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] \
+                     [--mips] [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]";
+
+/// Parses `bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] [--mips]
+/// [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]` and bakes.
 pub fn run(args: &[String]) -> Result<(), BakeError> {
     let mut pos = Vec::new();
     let (mut name, mut rgb565) = (
         None,
         "embedded_graphics_core::pixelcolor::Rgb565".to_string(),
     );
+    let (mut mips, mut irradiance, mut glossy) = (false, None, None);
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
+            "--mips" => mips = true,
+            "--irradiance" => {
+                let v = it
+                    .next()
+                    .ok_or(BakeError::Usage("--irradiance SIZE".into()))?;
+                irradiance = Some(parse_side(v, "--irradiance")?);
+            }
+            "--glossy" => {
+                let v = it
+                    .next()
+                    .ok_or(BakeError::Usage("--glossy EXPONENT[:SIZE]".into()))?;
+                let (e, n) = v.split_once(':').unwrap_or((v, "16"));
+                let e = match e.parse::<u16>() {
+                    Ok(e) if (1..=1000).contains(&e) => e,
+                    _ => {
+                        return Err(BakeError::Usage(format!(
+                            "--glossy: exponent `{e}` is not a number from 1 to 1000"
+                        )))
+                    }
+                };
+                glossy = Some((e, parse_side(n, "--glossy")?));
+            }
             "--name" => {
                 name = Some(
                     it.next()
@@ -107,15 +244,136 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
         }
     }
     let [input, output] = pos.as_slice() else {
-        return Err(BakeError::Usage(
-            "usage: bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]".into(),
-        ));
+        return Err(BakeError::Usage(USAGE.into()));
     };
     let name = name.unwrap_or_else(|| crate::bake::default_name(Path::new(input)));
     let (w, h, px) = read_rgb8(Path::new(input))?;
     let (s, faces) = split(w, h, &px)?;
-    let src = source(s, &faces, input, &name, &rgb565);
+    let mut src = source(s, &faces, input, &name, &rgb565);
+    let raw_faces: Vec<Vec<u16>> = faces.iter().map(|f| raw(f)).collect();
+    let mut made = vec![format!("{name}_FACES")];
+    if mips {
+        let levels = fixel::texture::full_levels(s, s);
+        push_faces(
+            &mut src,
+            &format!("{name}_MIPS"),
+            &format!(
+                "Each face with its full mip chain ({levels} levels, GL's box filter): \
+                 `fixel::texture::MipTexture::new(&{name}_MIPS[i], {s}, {s}, {levels})`, then \
+                 `fixel::shading::env::MipCubeMap::new`."
+            ),
+            &mip_chains(s, &raw_faces)?,
+            &rgb565,
+        );
+        made.push(format!("{name}_MIPS"));
+    }
+    if let Some(n) = irradiance {
+        let m = convolved(
+            s,
+            &raw_faces,
+            fixel::shading::env::Lobe::Cosine,
+            n,
+            "irradiance",
+        )?;
+        push_faces(
+            &mut src,
+            &format!("{name}_IRRADIANCE"),
+            &format!(
+                "The irradiance (cosine-convolved) map, six {n} x {n} faces indexed by the \
+                 normal (`fixel::shading::env::EnvLit::diffuse`)."
+            ),
+            &m,
+            &rgb565,
+        );
+        made.push(format!("{name}_IRRADIANCE"));
+    }
+    if let Some((e, n)) = glossy {
+        let m = convolved(
+            s,
+            &raw_faces,
+            fixel::shading::env::Lobe::Phong(e),
+            n,
+            "glossy",
+        )?;
+        push_faces(
+            &mut src,
+            &format!("{name}_GLOSSY"),
+            &format!(
+                "The glossy (Phong-lobe, exponent {e}) map, six {n} x {n} faces indexed by the \
+                 reflection (`fixel::shading::env::EnvLit::glossy`)."
+            ),
+            &m,
+            &rgb565,
+        );
+        made.push(format!("{name}_GLOSSY"));
+    }
     std::fs::write(output, src).map_err(|e| format!("write {output}: {e}"))?;
-    println!("baked {input} (six {s} x {s} faces) into {output} as {name}_FACES");
+    println!(
+        "baked {input} (six {s} x {s} faces) into {output}: {}",
+        made.join(", ")
+    );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Six uniform grey faces of side `s` as the strip layout.
+    fn grey_strip(s: u32) -> Vec<[u8; 3]> {
+        vec![[128, 128, 128]; (6 * s * s) as usize]
+    }
+
+    #[test]
+    fn strip_and_cross_split_and_bad_layouts_are_refused() {
+        let (s, faces) = split(6 * 4, 4, &grey_strip(4)).unwrap();
+        assert_eq!((s, faces.len(), faces[0].len()), (4, 6, 16));
+        assert!(split(10, 4, &vec![[0; 3]; 40]).is_err());
+        assert!(split(4 * 3, 3 * 3, &vec![[0; 3]; 108]).is_err(), "side 3");
+    }
+
+    #[test]
+    fn mips_and_convolved_maps_of_a_uniform_cube_are_uniform() {
+        let s = 128;
+        let (_, faces) = split(6 * s, s, &grey_strip(s)).unwrap();
+        let raw_faces: Vec<Vec<u16>> = faces.iter().map(|f| raw(f)).collect();
+        let chains = mip_chains(s, &raw_faces).unwrap();
+        assert_eq!(chains[0].len(), fixel::texture::chain_len(s, s, 8));
+        assert!(chains
+            .iter()
+            .all(|c| c.iter().all(|&t| t == raw_faces[0][0])));
+        // The cosine and Phong lobes are normalised: a uniform sky convolves to itself
+        // (within 1 LSB per channel), and a 128-texel source is reduced to 64 first.
+        for lobe in [
+            fixel::shading::env::Lobe::Cosine,
+            fixel::shading::env::Lobe::Phong(8),
+        ] {
+            let m = convolved(s, &raw_faces, lobe, 4, "test").unwrap();
+            for f in &m {
+                for &t in f {
+                    let d = |sh: u16, mask: u16| {
+                        ((t >> sh) & mask).abs_diff((raw_faces[0][0] >> sh) & mask)
+                    };
+                    assert!(
+                        d(11, 31) <= 1 && d(5, 63) <= 1 && d(0, 31) <= 1,
+                        "{lobe:?}: {t:04x}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn bad_sizes_and_exponents_are_refused() {
+        let a = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        for bad in [
+            a(&["in.png", "out.rs", "--irradiance", "12"]),
+            a(&["in.png", "out.rs", "--glossy", "0"]),
+            a(&["in.png", "out.rs", "--glossy", "16:300"]),
+            a(&["in.png", "out.rs", "--wat"]),
+            a(&["in.png"]),
+        ] {
+            assert!(matches!(run(&bad), Err(BakeError::Usage(_))), "{bad:?}");
+        }
+    }
 }

@@ -112,9 +112,12 @@ COMMANDS:
                  --light X,Y,Z,P [--light ...] [--name NAME]
                 Bake a 3D light map (fixel::shading::noise::LightMap3d) from point
                 lights with inverse-square falloff (see xtask/src/light3d.rs)
-    bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH]
+    bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] [--mips]
+              [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]
                 Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
-                as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env)
+                as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env);
+                --mips adds NAME_MIPS (full chains, MipCubeMap), --irradiance and
+                --glossy the convolved maps NAME_IRRADIANCE / NAME_GLOSSY (EnvLit)
     bake-obj <input.obj> <output.rs> [--name NAME] [--uv keep|spherical|cylindrical|planar]
                  [--axis x|y|z] [--normals keep|smooth] [--tangents] [--scale S]
                 A Wavefront OBJ model as static arrays in fixel's formats (positions,
