@@ -328,8 +328,8 @@ mod tests {
     fn strip_and_cross_split_and_bad_layouts_are_refused() {
         let (s, faces) = split(6 * 4, 4, &grey_strip(4)).unwrap();
         assert_eq!((s, faces.len(), faces[0].len()), (4, 6, 16));
-        assert!(split(10, 4, &vec![[0; 3]; 40]).is_err());
-        assert!(split(4 * 3, 3 * 3, &vec![[0; 3]; 108]).is_err(), "side 3");
+        assert!(split(10, 4, &[[0; 3]; 40]).is_err());
+        assert!(split(4 * 3, 3 * 3, &[[0; 3]; 108]).is_err(), "side 3");
     }
 
     #[test]
