@@ -26,6 +26,39 @@
 //! Varyings: `nx, ny, nz, vx, vy, vz` as [`ReflectPerPixel`](super::ReflectPerPixel) (any
 //! scale per vector), then two slots the hook fills (`s`, `t` in I16F16 texel units of
 //! level 0; give 0 in the vertex, as [`EnvVertices::per_pixel_mip`] does).
+//!
+//! # Example
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::math::fx;
+//! use fixel::pipeline::{DepthLess, Exact};
+//! use fixel::shading::env::{EnvVertices, MipCubeMap, ReflectPerPixelMip};
+//! use fixel::texture::{chain_len, generate_mips, Lod, MipTexture, Trilinear};
+//!
+//! // Six 8x8 faces with their 4-level chains (8, 4, 2, 1), each a plain colour.
+//! let mut chains = [[Rgb565::new(0, 0, 0); 85]; 6];
+//! for (i, c) in chains.iter_mut().enumerate() {
+//!     c[..64].fill(Rgb565::new(5 * i as u8, 40, 10));
+//!     generate_mips(c, 8, 8, 4)?;
+//! }
+//! assert_eq!(chain_len(8, 8, 4), 85);
+//! let faces = [0, 1, 2, 3, 4, 5].map(|i| MipTexture::new(&chains[i], 8, 8, 4).unwrap());
+//! let map = MipCubeMap::new(&faces, Trilinear::default())?;
+//! let shader = ReflectPerPixelMip { map, lod: Lod::default() };
+//!
+//! let proj = Mat4::perspective(Angle::from_degrees(fx(45)), fx(1), fx(0.5), fx(20))?;
+//! let setup = EnvVertices::new(&Mat4::IDENTITY, &proj, Vec3::ZERO);
+//! let n = Vec3::from_num(0, 0.5, 0.866);
+//! let tri = [(-1, -1), (1, -1), (0, 1)].map(|(x, y)| {
+//!     setup.per_pixel_mip(Vec3::from_num(x, y, -4), n).unwrap()
+//! });
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, 32, 32)?, Cull::Back)?;
+//! let (mut color, mut depth) = ([Rgb565::default(); 32 * 32], [0u16; 32 * 32]);
+//! let mut frame = Frame::new(&mut color, 32, 32)?.with_depth(&mut depth)?;
+//! assert!(draw.clip_triangles(&[tri], &mut frame)? > 100);
+//! # Ok::<(), fixel::Error>(())
+//! ```
 
 use super::cube::{face_coords, EnvLookup};
 use super::reflect::{fit_group, reflect_fit, EnvVertices, FIT_BITS, VARYING_BITS};

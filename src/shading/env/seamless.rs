@@ -23,6 +23,28 @@
 //! [`CubeMap`]'s bilinear one plus four compares; a pixel whose taps straddle an edge
 //! maps one or two taps (a few adds and compares each, one table-free projection), and a
 //! corner adds a three-way average.
+//!
+//! # Example
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::shading::env::{CubeMap, EnvLookup};
+//! use fixel::texture::Bilinear;
+//!
+//! // Six 4x4 faces of plain colours: +X red, +Y green, the others grey.
+//! let grey = [Rgb565::new(16, 32, 16); 16];
+//! let (red, green) = ([Rgb565::new(31, 0, 0); 16], [Rgb565::new(0, 63, 0); 16]);
+//! let faces = [&red, &grey, &green, &grey, &grey, &grey].map(|t| Texture::new(t, 4, 4).unwrap());
+//! let clamped = CubeMap::new(faces, Bilinear)?;
+//! let seamless = clamped.seamless();
+//! // On the edge between +X and +Y GL's clamped filter reads +X only; the seamless one
+//! // blends both faces half and half.
+//! let edge = [1 << 20, 1 << 20, 0];
+//! assert_eq!(clamped.lookup(edge), 0xF800);
+//! let c = seamless.lookup(edge);
+//! assert_eq!((c >> 11, (c >> 5) & 63, c & 31), (16, 32, 0));
+//! # Ok::<(), fixel::Error>(())
+//! ```
 
 use super::cube::{CubeMap, EnvLookup};
 use crate::texture::sample::{blend_q8, split_half};
