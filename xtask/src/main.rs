@@ -31,13 +31,14 @@ const CROSS_TARGETS: [&str; 3] = [
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 12] = [
+const RENDER_EXAMPLES: [&str; 13] = [
     "showcase",
     "scenes",
     "preview",
     "shadow",
     "noise",
     "envmap",
+    "envmap_filtering",
     "mappings",
     "quads",
     "antialias",
