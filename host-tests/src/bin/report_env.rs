@@ -32,18 +32,22 @@ use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    convolve_face, sky, CubeMap, EnvLit, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
-    ReflectPerVertex, SphereMap,
+    convolve_face, sky, CubeMap, EnvLit, EnvVertices, LatLongMap, Lobe, MipCubeMap,
+    ReflectPerPixel, ReflectPerPixelMip, ReflectPerVertex, SphereMap,
 };
 use fixel::shading::Shader;
 use fixel::shading::TexBinding;
 use fixel::surface::{Frame, DEPTH_CLEAR};
-use fixel::texture::{Bilinear, Lod, MipTexture, Nearest, Repeat, Texture};
+use fixel::texture::{
+    Bilinear, Lod, LodGranularity, MipTexture, Nearest, Repeat, Texture, Trilinear,
+};
 use host_tests::cost_plot::Point;
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::reference::env::{
-    cube_sample, cube_sample_seamless, latlong_sample, reflect, render_varyings, sphere_sample,
+    cube_sample, cube_sample_seamless, cube_sample_trilinear, latlong_sample, reflect,
+    render_varyings, render_varyings_with_derivatives, sphere_sample,
 };
+use host_tests::reference::mip::RefMipChain;
 use host_tests::reference::{RefFilter, RefTexture};
 
 const W: u32 = 320;
@@ -363,6 +367,83 @@ fn main() {
             mcu_cell(name, &want, "Cortex-M4F"),
             fmt_err(&e)
         );
+    }
+
+    // Trilinear mip chains per face (GL's box filter, 7 levels), LOD per pixel from the
+    // projected pair, against the reference's GL cube LOD (central differences of r).
+    {
+        let levels = fixel::texture::full_levels(SIZE, SIZE);
+        let chains: Vec<Vec<Rgb565>> = faces
+            .iter()
+            .map(|base| {
+                let mut c =
+                    vec![Rgb565::new(0, 0, 0); fixel::texture::chain_len(SIZE, SIZE, levels)];
+                c[..base.len()].copy_from_slice(base);
+                fixel::texture::generate_mips(&mut c, SIZE, SIZE, levels).expect("mips");
+                c
+            })
+            .collect();
+        let mips: [MipTexture<'_>; 6] = core::array::from_fn(|i| {
+            MipTexture::new(&chains[i], SIZE, SIZE, levels).expect("chain")
+        });
+        let rc: [RefMipChain; 6] = core::array::from_fn(|f| {
+            let mut off = 0;
+            RefMipChain {
+                levels: (0..levels)
+                    .map(|k| {
+                        let side = fixel::texture::level_side(SIZE, k);
+                        let n = (side * side) as usize;
+                        let t = RefTexture {
+                            width: side,
+                            height: side,
+                            texels: chains[f][off..off + n]
+                                .iter()
+                                .map(|c| c.into_storage())
+                                .collect(),
+                            border: 0,
+                        };
+                        off += n;
+                        t
+                    })
+                    .collect(),
+            }
+        });
+        let tris: Vec<[Vertex<8>; 3]> = sphere
+            .pixel
+            .iter()
+            .map(|t| {
+                t.map(|v| {
+                    let a = v.varyings;
+                    Vertex::new(v.position, [a[0], a[1], a[2], a[3], a[4], a[5], 0, 0])
+                })
+            })
+            .collect();
+        let rr = |a: &[f64; 8]| reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]);
+        let reference = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
+            cube_sample_trilinear(&rc, rr(&a), around.map(|b| rr(&b)))
+        });
+        for (name, granularity, what) in [
+            ("pixel-trilinear", LodGranularity::Pixel, "pixel"),
+            ("pixel-trilinear-span", LodGranularity::Span, "span"),
+        ] {
+            let shader = ReflectPerPixelMip {
+                map: MipCubeMap::new(&mips, Trilinear::default()).expect("map"),
+                lod: Lod {
+                    granularity,
+                    ..Lod::default()
+                },
+            };
+            let (img, ns) = run(shader, &tris, runs);
+            let want = band_checksum(shader, EnvVertices::per_pixel_mip);
+            let e = cmp(&img, &reference);
+            point(name, ns, &want, &e);
+            md += &format!(
+                "| {name} (7-level chains per face, LOD per {what}; reference: GL's cube LOD) | {ns:.1} | {} | {} | {} | - |\n",
+                mcu_cell(name, &want, "Cortex-M0+"),
+                mcu_cell(name, &want, "Cortex-M4F"),
+                fmt_err(&e)
+            );
+        }
     }
 
     // The same sky as a sphere map and a lat-long map (per pixel, bilinear).

@@ -160,9 +160,19 @@ fn plane_coords(r: [i32; 3], face: u8, log2_size: u32) -> Option<(i64, i64)> {
     if ma <= 0 || ma * 8 <= big {
         return None;
     }
-    // |r| < 2^31, size <= 2^12: (sc << (15 + l)) < 2^58.
+    // 1 / ma through the cube lookup's reciprocal (no divide: a 64-bit division is a long
+    // library call on Cortex-M): ma (below 2^32) normalised to a 16-bit mantissa d, then
+    // c / ma = (c << n >> 16) (2^31 / d) / 2^31, within 2^-15 relative.
+    let n = (ma as u32).leading_zeros();
+    let d = ((ma as u32) << n) >> 16;
+    let r = i64::from(super::cube::recip16(d));
+    // |c| <= 8 ma, so (c << n) >> 16 < 2^19 and the product < 2^36; the result is
+    // c / ma in Q16, then scaled to half the face in I16F16 texels.
     let half = 1i64 << (15 + log2_size);
-    let q = |c: i64| ((c * half) / ma + half).clamp(-PAIR_LIMIT, PAIR_LIMIT);
+    let q = |c: i64| {
+        let ratio = (((c << n) >> 16) * r) >> 15; // Q16
+        (((ratio * half) >> 16) + half).clamp(-PAIR_LIMIT, PAIR_LIMIT)
+    };
     Some((q(sc), q(tc)))
 }
 

@@ -126,10 +126,14 @@ fn env_lit(buf: &mut EnvBuffers) -> bool {
     })
 }
 
-/// The sphere with 64-texel mipmapped faces, trilinear, LOD per pixel.
+/// The sphere with 64-texel mipmapped faces, trilinear, LOD per pixel or per span.
 #[cfg(fixel_fw_report)]
 #[inline(never)]
-fn mipmapped(buf: &mut EnvBuffers) -> bool {
+fn mipmapped(
+    buf: &mut EnvBuffers,
+    name: &str,
+    granularity: fixel::texture::LodGranularity,
+) -> bool {
     use fixel::shading::env::{MipCubeMap, ReflectPerPixelMip};
     use fixel::texture::Trilinear;
     let s = core::hint::black_box(&data::SPHERE);
@@ -146,9 +150,12 @@ fn mipmapped(buf: &mut EnvBuffers) -> bool {
     };
     let shader = ReflectPerPixelMip {
         map,
-        lod: Lod::default(),
+        lod: Lod {
+            granularity,
+            ..Lod::default()
+        },
     };
-    mode("pixel-trilinear", |pause, resume| {
+    mode(name, |pause, resume| {
         env::env_frame::<_, Exact, 8>(
             buf,
             shader,
@@ -196,7 +203,9 @@ fn run() -> bool {
     {
         ok &= per_pixel(&mut buf, "pixel-seamless", cube.seamless());
         ok &= env_lit(&mut buf);
-        ok &= mipmapped(&mut buf);
+        use fixel::texture::LodGranularity;
+        ok &= mipmapped(&mut buf, "pixel-trilinear", LodGranularity::Pixel);
+        ok &= mipmapped(&mut buf, "pixel-trilinear-span", LodGranularity::Span);
     }
     ok
 }
