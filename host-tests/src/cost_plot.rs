@@ -66,14 +66,27 @@ pub fn write(
             .draw()
             .map_err(|e| e.to_string())?;
         let dy = (psnr_range.1 - psnr_range.0) / 60.0;
+        // Labels go right of their point; one that would overlap an earlier label (close
+        // in log x and in y) moves below its point, then above.
+        let mut placed: Vec<(f64, f64)> = Vec::new();
         for (x, y, name) in pts {
             chart
                 .draw_series([Circle::new((x, y), 5, BLUE.filled())])
                 .map_err(|e| e.to_string())?;
+            let clash = |ly: f64| {
+                placed
+                    .iter()
+                    .any(|&(px, py)| (x / px).ln().abs() < 0.25 && (py - ly).abs() < 2.5 * dy)
+            };
+            let ly = [y + dy, y - 3.0 * dy, y + 4.0 * dy, y - 6.0 * dy]
+                .into_iter()
+                .find(|&ly| !clash(ly))
+                .unwrap_or(y + dy);
+            placed.push((x, ly));
             chart
                 .draw_series([Text::new(
                     name.to_string(),
-                    (x * 1.03, y + dy),
+                    (x * 1.03, ly),
                     ("sans-serif", 12),
                 )])
                 .map_err(|e| e.to_string())?;
