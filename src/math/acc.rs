@@ -30,6 +30,49 @@ pub(crate) fn sum_q32<const N: usize>(products: [i64; N]) -> i64 {
     hi + ((lo + (1 << 15)) >> 16)
 }
 
+/// `round(Σ a_i b_i / 2^16)` (round half up, exactly as [`sum_q32`] of the [`prod`]s) for
+/// raw I16F16 operands: the row of a matrix times a vector, a dot product.
+///
+/// On ARMv6-M (no 64-bit product instruction) each product is split into 16-bit halves,
+/// `a b = ah bh 2^32 + (ah bl + al bh) 2^16 + al bl` with `ah = a >> 16` (signed) and
+/// `al = a & 0xFFFF`, so every partial product is one 32-bit `muls` that cannot overflow
+/// (`|ah bh| <= 2^30`, `|ah bl| < 2^31`, `al bl < 2^32`), and the three sums are combined
+/// once: `2^16 Σ ah bh + Σ (ah bl + al bh) + floor((Σ al bl + 2^15) / 2^16)`. About 40 % of
+/// the instructions of the `i64` products and sums there; elsewhere the `i64` form.
+#[inline]
+pub(crate) fn dot_q16<const N: usize>(a: [i32; N], b: [i32; N]) -> i64 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        dot_q16_split(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        sum_q32(core::array::from_fn::<i64, N, _>(|k| {
+            prod(Fx::from_bits(a[k]), Fx::from_bits(b[k]))
+        }))
+    }
+}
+
+/// The 16-bit-split form of [`dot_q16`] (compiled everywhere so every target tests it).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline(always)]
+pub(crate) fn dot_q16_split<const N: usize>(a: [i32; N], b: [i32; N]) -> i64 {
+    let mut hh = 0i64;
+    let mut mid = 0i64;
+    let mut ll = 0u64;
+    for k in 0..N {
+        let (ah, al) = (a[k] >> 16, a[k] & 0xFFFF);
+        let (bh, bl) = (b[k] >> 16, b[k] & 0xFFFF);
+        hh += i64::from(ah * bh);
+        mid += i64::from(ah * bl) + i64::from(al * bh);
+        ll += u64::from((al as u32) * (bl as u32));
+    }
+    (hh << 16) + mid + ((ll + (1 << 15)) >> 16) as i64
+}
+
 /// Clamps a Q16 value held in an `i64` to the `Fx` range.
 #[inline]
 pub(crate) fn saturate(bits: i64) -> Fx {
@@ -69,5 +112,45 @@ mod tests {
             fit(sum_q32([prod(h, t), prod(t, t)])),
             Some(Fx::from_num(10.5))
         );
+    }
+
+    #[test]
+    fn split_dot_products_match_the_exact_sums() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as i32
+        };
+        let edge = [
+            0,
+            1,
+            -1,
+            0xFFFF,
+            0x10000,
+            -0x10000,
+            i32::MAX,
+            i32::MIN,
+            0x7FFF_0000,
+        ];
+        for i in 0..400_000 {
+            let pick = |k: usize, r: i32| {
+                if k % 3 == 0 {
+                    edge[(r as u32 as usize) % edge.len()]
+                } else {
+                    r
+                }
+            };
+            let a = [pick(i, next()), pick(i + 1, next()), pick(i + 2, next())];
+            let b = [pick(i + 1, next()), pick(i, next()), next() >> (i % 20)];
+            let exact = sum_q32([0, 1, 2].map(|k| prod(Fx::from_bits(a[k]), Fx::from_bits(b[k]))));
+            assert_eq!(dot_q16_split(a, b), exact, "{a:?} . {b:?}");
+            assert_eq!(dot_q16(a, b), exact, "{a:?} . {b:?}");
+            assert_eq!(
+                dot_q16_split([a[0]], [b[0]]),
+                sum_q32([prod(Fx::from_bits(a[0]), Fx::from_bits(b[0]))])
+            );
+        }
     }
 }

@@ -12,7 +12,7 @@
 //! to about half an ulp (2^-17) per component for any non-zero input, relative to the
 //! exact direction of the (already quantised) input.
 
-use super::acc::{fit, prod, saturate, sum_q32};
+use super::acc::{dot_q16, fit, prod, saturate, sum_q32};
 use super::recip::{isqrt_u64, reciprocal_u32};
 use super::Fx;
 use core::ops::{Add, Neg, Sub};
@@ -131,7 +131,10 @@ impl Vec3 {
     }
 
     fn dot_bits(self, o: Vec3) -> i64 {
-        sum_q32([prod(self.x, o.x), prod(self.y, o.y), prod(self.z, o.z)])
+        dot_q16(
+            [self.x.to_bits(), self.y.to_bits(), self.z.to_bits()],
+            [o.x.to_bits(), o.y.to_bits(), o.z.to_bits()],
+        )
     }
 
     /// Cross product (right-handed: `x × y = z`), each component exact then rounded once,
