@@ -137,8 +137,8 @@ impl Viewport {
             }
             (s as i32, off.clamp(-HALF, HALF) as i16)
         };
-        let (sx, ox) = axis(i64::from(x) * hw, cx);
-        let (sy, oy) = axis(-(i64::from(y) * hh), cy);
+        let (sx, ox) = axis(mul_i32_i64(x, hw), cx);
+        let (sy, oy) = axis(-mul_i32_i64(y, hh), cy);
         (sx, sy, [ox, oy])
     }
 
@@ -154,7 +154,20 @@ impl Viewport {
 #[inline]
 fn depth(z: i32, w: i64) -> i32 {
     let k = 65535i64 << 13;
-    (div_round(i64::from(z) * k, w) + k).clamp(0, 65535 << 14) as i32
+    (div_round(mul_i32_i64(z, k), w) + k).clamp(0, 65535 << 14) as i32
+}
+
+/// `a b` for a `b` that is normally within `i32` (viewport scales): on ARMv6-M a
+/// 16-bit-split product instead of an `__aeabi_lmul` call; elsewhere, and for a larger `b`,
+/// the `i64` product. Exact either way.
+#[inline(always)]
+fn mul_i32_i64(a: i32, b: i64) -> i64 {
+    if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
+        if let Ok(b) = i32::try_from(b) {
+            return crate::math::div::mul_wide_signed(a, b);
+        }
+    }
+    i64::from(a) * b
 }
 
 /// `n / d` rounded to nearest, ties away from zero; `d > 0`.
