@@ -8,6 +8,7 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
+use crate::math::div::HW_DIVIDE;
 use crate::math::{div_floor_i64, div_round_i64};
 use crate::raster::{
     Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
@@ -129,7 +130,13 @@ impl Viewport {
             let num = 2 * n + w;
             let s = div_floor_i64(num, 2 * w);
             let r = num - s * 2 * w; // 0 <= r < 2w
-            let off = div_floor_i64(((r - w) << R) + w, 2 * w);
+            let off = if HW_DIVIDE || w >= 1 << 30 {
+                div_floor_i64(((r - w) << R) + w, 2 * w)
+            } else {
+                // No divide instruction: the same quotient bit by bit (R + 1 steps of a
+                // compare and a subtract), see `fraction_offset`.
+                fraction_offset::<R>(r as u32, w as u32)
+            };
             let s = c + s;
             if s.abs() > lim {
                 // Clamped into the guard band (only vertices the clipper will cut).
@@ -155,6 +162,28 @@ impl Viewport {
 fn depth(z: i32, w: i64) -> i32 {
     let k = 65535i64 << 13;
     (div_round(mul_i32_i64(z, k), w) + k).clamp(0, 65535 << 14) as i32
+}
+
+/// `floor((2^R (r - w) + w) / 2w)` for `0 <= r < 2w` and `0 < w < 2^30`, without a
+/// division: it equals `floor((2^R r + w) / 2w) - 2^(R-1)`, and `floor(2^R r / 2w)` is R
+/// steps of restoring long division on `r < 2w` (each remainder stays below `2w < 2^31`, so
+/// doubling it fits `u32`); adding `w < 2w` to the final remainder carries at most one.
+#[inline(always)]
+fn fraction_offset<const R: u32>(r: u32, w: u32) -> i64 {
+    let d = 2 * w;
+    let (mut rem, mut t) = (r, 0u32);
+    for _ in 0..R {
+        rem <<= 1;
+        t <<= 1;
+        if rem >= d {
+            rem -= d;
+            t |= 1;
+        }
+    }
+    if rem + w >= d {
+        t += 1;
+    }
+    i64::from(t) - (1 << (R - 1))
 }
 
 /// `a b` for a `b` that is normally within `i32` (viewport scales): on ARMv6-M a
@@ -265,6 +294,33 @@ mod tests {
             let (gx, gy) = vp.guard;
             assert!((gx + 1) * i64::from(w) / 2 <= i64::from(GUARD_BAND_PX) + 1);
             assert!((gy + 1) * i64::from(h) / 2 <= i64::from(GUARD_BAND_PX) + 1);
+        }
+    }
+
+    #[test]
+    fn fraction_offset_matches_the_division() {
+        const R: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for i in 0..1_000_000u64 {
+            let w = match i % 3 {
+                0 => next() % 1000 + 1,
+                1 => next() % (1 << 24) + 1,
+                _ => next() % ((1 << 30) - 1) + 1,
+            } as i64;
+            let r = (next() % (2 * w as u64)) as i64;
+            let r = [r, 0, 2 * w - 1, w, w - 1][(i % 5) as usize];
+            let want = div_floor_i64(((r - w) << R) + w, 2 * w);
+            assert_eq!(
+                fraction_offset::<R>(r as u32, w as u32),
+                want,
+                "r {r} w {w}"
+            );
         }
     }
 }
