@@ -18,13 +18,16 @@
 //!   base × irradiance + 0.31 × glossy (Phong e = 16), glossy alone.
 
 mod common;
+#[path = "common/sky.rs"]
+mod sky_common;
+use sky_common::{background, sky_faces};
 
 use embedded_graphics_core::pixelcolor::IntoStorage;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Angle, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    convolve_face, sky, CubeMap, EnvLit, EnvLookup, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
+    convolve_face, sky, CubeMap, EnvLit, EnvVertices, LatLongMap, Lobe, ReflectPerPixel,
     ReflectPerVertex, SphereMap,
 };
 use fixel::shading::TexBinding;
@@ -63,39 +66,6 @@ fn torus(a: f64, b: f64, nu: u16, nv: u16) -> (Vec<Vec3>, Vec<Vec3>, Vec<[u16; 3
     (p, n, idx)
 }
 
-fn sky_faces(size: u32) -> Vec<Vec<Rgb565>> {
-    (0..6)
-        .map(|f| {
-            let mut t = vec![Rgb565::new(0, 0, 0); (size * size) as usize];
-            sky::sky_face(f, size, &mut t).expect("face");
-            t
-        })
-        .collect()
-}
-
-/// The cube map's colour along each pixel's view ray (camera at the origin, -z, 45 degrees).
-fn background<M: EnvLookup>(env: &M, frame: &mut [Rgb565], view: &Mat4) {
-    let f = f64::from(H) / 2.0 / (22.5f64).to_radians().tan();
-    for y in 0..H {
-        for x in 0..W {
-            let d = [
-                (f64::from(x) + 0.5 - f64::from(W) / 2.0) / f,
-                -(f64::from(y) + 0.5 - f64::from(H) / 2.0) / f,
-                -1.0,
-            ];
-            // World direction = view rotation transposed times d.
-            let m = &view.m;
-            let w = [0, 1, 2].map(|c| (0..3).map(|r| m[r][c].to_num::<f64>() * d[r]).sum::<f64>());
-            let dir = w.map(|c| (c * 16384.0) as i32);
-            frame[(y * W + x) as usize] = raw(env.lookup(dir));
-        }
-    }
-}
-
-fn raw(c: u16) -> Rgb565 {
-    Rgb565::new((c >> 11) as u8, ((c >> 5) & 63) as u8, (c & 31) as u8)
-}
-
 fn tris<const N: usize>(
     p: &[Vec3],
     n: &[Vec3],
@@ -125,7 +95,7 @@ fn main() -> Result<(), fixel::Error> {
     let vproj = proj.mul(&view);
     let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
     let mut depth = vec![0u16; (W * H) as usize];
-    background(&cube, &mut color, &view);
+    background(&cube, &mut color, W, H, &view);
     {
         let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
         let draw = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)?;
@@ -182,7 +152,7 @@ fn main() -> Result<(), fixel::Error> {
     for (k, per_pixel) in [false, true].into_iter().enumerate() {
         let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
         let mut depth = vec![0u16; (W * H) as usize];
-        background(&cube, &mut color, &Mat4::IDENTITY);
+        background(&cube, &mut color, W, H, &Mat4::IDENTITY);
         {
             let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
             if per_pixel {
@@ -236,7 +206,7 @@ fn main() -> Result<(), fixel::Error> {
     for k in 0..3 {
         let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
         let mut depth = vec![0u16; (W * H) as usize];
-        background(&cube64, &mut color, &Mat4::IDENTITY);
+        background(&cube64, &mut color, W, H, &Mat4::IDENTITY);
         {
             let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
             match k {
@@ -316,7 +286,7 @@ fn main() -> Result<(), fixel::Error> {
     for k in 0..3u32 {
         let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
         let mut depth = vec![0u16; (W * H) as usize];
-        background(&cube, &mut color, &Mat4::IDENTITY);
+        background(&cube, &mut color, W, H, &Mat4::IDENTITY);
         {
             let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
             let shader = match k {

@@ -13,12 +13,15 @@
 //!   trilinear mipmaps with GL's cube-map LOD (right, `MipCubeMap` + `ReflectPerPixelMip`).
 
 mod common;
+#[path = "common/sky.rs"]
+mod sky_common;
+use sky_common::{background, sky_faces};
 
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Angle, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{
-    sky, CubeMap, EnvLookup, EnvVertices, MipCubeMap, ReflectPerPixel, ReflectPerPixelMip,
+    CubeMap, EnvLookup, EnvVertices, MipCubeMap, ReflectPerPixel, ReflectPerPixelMip,
 };
 use fixel::shading::Shader;
 use fixel::surface::Frame;
@@ -29,36 +32,6 @@ use fixel::Rgb565;
 
 const W: u32 = 320;
 const H: u32 = 240;
-
-fn sky_faces(size: u32) -> Vec<Vec<Rgb565>> {
-    (0..6)
-        .map(|f| {
-            let mut t = vec![Rgb565::new(0, 0, 0); (size * size) as usize];
-            sky::sky_face(f, size, &mut t).expect("face");
-            t
-        })
-        .collect()
-}
-
-fn raw(c: u16) -> Rgb565 {
-    Rgb565::new((c >> 11) as u8, ((c >> 5) & 63) as u8, (c & 31) as u8)
-}
-
-/// The environment behind the sphere along each pixel's view ray (camera at the origin
-/// looking down -z, 45 degrees vertically).
-fn background<M: EnvLookup>(env: &M, frame: &mut [Rgb565]) {
-    let f = f64::from(H) / 2.0 / (22.5f64).to_radians().tan();
-    for y in 0..H {
-        for x in 0..W {
-            let d = [
-                (f64::from(x) + 0.5 - f64::from(W) / 2.0) / f,
-                -(f64::from(y) + 0.5 - f64::from(H) / 2.0) / f,
-                -1.0,
-            ];
-            frame[(y * W + x) as usize] = raw(env.lookup(d.map(|c| (c * 16384.0) as i32)));
-        }
-    }
-}
 
 /// The benchmark sphere at `model` with vertices from `vertex`.
 fn sphere<const N: usize>(
@@ -85,7 +58,7 @@ fn frame<S: Shader<Varyings = [i32; N]>, const N: usize, B: EnvLookup>(
 ) -> Result<Vec<Rgb565>, fixel::Error> {
     let mut color = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
     let mut depth = vec![0u16; (W * H) as usize];
-    background(bg, &mut color);
+    background(bg, &mut color, W, H, &Mat4::IDENTITY);
     let mut f = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
     ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?
         .clip_triangles(tris, &mut f)?;

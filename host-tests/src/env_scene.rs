@@ -1,7 +1,8 @@
 //! The environment-mapping test scene shared by the env tests and the env report: the
-//! procedural sky as cube-map faces (fixel's and the reference's copies of the same texels),
-//! the benchmark sphere and cube as per-pixel-reflection vertices, a depth-tested 320 x 240
-//! draw, and the reference render with `r` per pixel.
+//! procedural sky as cube-map faces and mip chains (fixel's and the reference's copies of
+//! the same texels), the benchmark sphere and cube as per-pixel-reflection vertices, a
+//! depth-tested 320 x 240 draw, the reference render with `r` per pixel, and the direction
+//! set the lookup tests sweep.
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::geometry::{Cull, Vertex, Viewport};
@@ -13,7 +14,9 @@ use fixel::surface::{Frame, DEPTH_CLEAR};
 use fixel::texture::{Sampler, Texture};
 
 use crate::reference::env::{reflect, render_varyings};
+use crate::reference::mip::RefMipChain;
 use crate::reference::RefTexture;
+use fixel::texture::{chain_len, full_levels, generate_mips, level_side};
 
 /// Frame width.
 pub const W: u32 = 320;
@@ -118,4 +121,61 @@ pub fn reference_per_pixel<const N: usize>(
     render_varyings(tris, W, H, |_, _, a| {
         lookup(reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]))
     })
+}
+
+/// The six sky faces of side `size` with full mip chains (fixel's box filter), one buffer
+/// per face.
+pub fn sky_chains(size: u32) -> Vec<Vec<Rgb565>> {
+    let levels = full_levels(size, size);
+    faces(size)
+        .into_iter()
+        .map(|base| {
+            let mut c = vec![Rgb565::new(0, 0, 0); chain_len(size, size, levels)];
+            c[..base.len()].copy_from_slice(&base);
+            generate_mips(&mut c, size, size, levels).expect("mips");
+            c
+        })
+        .collect()
+}
+
+/// The reference's copy of full chains of side `size` (data shared, nothing else).
+pub fn ref_chains(c: &[Vec<Rgb565>], size: u32) -> [RefMipChain; 6] {
+    let levels = full_levels(size, size);
+    core::array::from_fn(|f| {
+        let mut off = 0;
+        RefMipChain {
+            levels: (0..levels)
+                .map(|k| {
+                    let s = level_side(size, k);
+                    let n = (s * s) as usize;
+                    let t = RefTexture {
+                        width: s,
+                        height: s,
+                        texels: c[f][off..off + n]
+                            .iter()
+                            .map(|p| p.into_storage())
+                            .collect(),
+                        border: 0,
+                    };
+                    off += n;
+                    t
+                })
+                .collect(),
+        }
+    })
+}
+
+/// A deterministic spread of `n` directions: a Fibonacci sphere at four scales (from 3e3 to
+/// 1e9 per unit), as `i32` components.
+pub fn directions(n: usize) -> Vec<[i32; 3]> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n)
+        .map(|i| {
+            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - y * y).sqrt();
+            let a = golden * i as f64;
+            let scale = [3.0e3, 1.0e5, 2.0e7, 1.0e9][i % 4];
+            [r * a.cos(), y, r * a.sin()].map(|c| (c * scale).round() as i32)
+        })
+        .collect()
 }

@@ -18,25 +18,13 @@ use fixel::shading::env::{sky, EnvLookup, EnvVertices, LatLongMap, ReflectPerPix
 use fixel::shading::Shader;
 use fixel::surface::{Frame, DEPTH_CLEAR};
 use fixel::texture::{Bilinear, Texture};
+use host_tests::env_scene::directions;
 use host_tests::metrics::{channel_errors, compare_rgb565};
 use host_tests::reference::env::{
     latlong_sample, latlong_st, reflect, render_varyings, sphere_sample, sphere_st,
 };
 use host_tests::reference::{rgb565_from_f64, RefFilter, RefTexture};
 use proptest::prelude::*;
-
-fn directions(n: usize) -> Vec<[i32; 3]> {
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|i| {
-            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let r = (1.0 - y * y).sqrt();
-            let a = golden * i as f64;
-            let scale = [3.0e3, 1.0e5, 2.0e7, 1.0e9][i % 4];
-            [r * a.cos(), y, r * a.sin()].map(|c| (c * scale).round() as i32)
-        })
-        .collect()
-}
 
 fn f(d: [i32; 3]) -> [f64; 3] {
     d.map(f64::from)

@@ -16,70 +16,28 @@
 
 #![allow(clippy::needless_range_loop)]
 
-use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
+mod common;
+use common::any_bits_env;
+use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::env::{EnvVertices, MipCubeMap, ReflectPerPixel, ReflectPerPixelMip};
 use fixel::surface::Frame;
-use fixel::texture::{
-    chain_len, full_levels, generate_mips, level_side, Bilinear, Lod, LodGranularity, MipTexture,
-    Trilinear,
-};
-use host_tests::env_scene::{self, cube, faces, ref_faces, H, W};
+use fixel::texture::{full_levels, Bilinear, Lod, LodGranularity, MipTexture, Trilinear};
+use host_tests::env_scene::{self, cube, faces, ref_chains, ref_faces, sky_chains, H, W};
 use host_tests::metrics::compare_rgb565;
 use host_tests::reference::env::{
     cube_sample, cube_sample_trilinear, reflect, render_varyings_with_derivatives,
 };
 use host_tests::reference::mip::RefMipChain;
-use host_tests::reference::{RefFilter, RefTexture};
+use host_tests::reference::RefFilter;
 use proptest::prelude::*;
 
 const SIZE: u32 = 64;
 
-/// Six full chains of the sky (fixel's box filter), as one buffer per face.
-fn chains(size: u32) -> Vec<Vec<Rgb565>> {
-    let levels = full_levels(size, size);
-    faces(size)
-        .into_iter()
-        .map(|base| {
-            let mut c = vec![Rgb565::new(0, 0, 0); chain_len(size, size, levels)];
-            c[..base.len()].copy_from_slice(&base);
-            generate_mips(&mut c, size, size, levels).unwrap();
-            c
-        })
-        .collect()
-}
-
 fn mips(c: &[Vec<Rgb565>], size: u32) -> [MipTexture<'_>; 6] {
     let levels = full_levels(size, size);
     core::array::from_fn(|i| MipTexture::new(&c[i], size, size, levels).unwrap())
-}
-
-/// The reference's copy of the same chains (data shared, nothing else).
-fn ref_chains(c: &[Vec<Rgb565>], size: u32) -> [RefMipChain; 6] {
-    let levels = full_levels(size, size);
-    core::array::from_fn(|f| {
-        let mut off = 0;
-        RefMipChain {
-            levels: (0..levels)
-                .map(|k| {
-                    let s = level_side(size, k);
-                    let n = (s * s) as usize;
-                    let t = RefTexture {
-                        width: s,
-                        height: s,
-                        texels: c[f][off..off + n]
-                            .iter()
-                            .map(|p| p.into_storage())
-                            .collect(),
-                        border: 0,
-                    };
-                    off += n;
-                    t
-                })
-                .collect(),
-        }
-    })
 }
 
 fn sphere() -> Vec<[Vertex<8>; 3]> {
@@ -107,7 +65,7 @@ fn lod(granularity: LodGranularity) -> Lod {
 /// The sphere, trilinear, LOD per pixel / span / triangle, against the reference's GL LOD.
 #[test]
 fn mip_sphere_matches_reference() {
-    let c = chains(SIZE);
+    let c = sky_chains(SIZE);
     let m = mips(&c, SIZE);
     let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
     let rc = ref_chains(&c, SIZE);
@@ -137,7 +95,7 @@ fn level_zero_sparkles_trilinear_overblurs() {
     const BIG: u32 = 256;
     let f = faces(BIG);
     let rf = ref_faces(&f, BIG);
-    let c = chains(BIG);
+    let c = sky_chains(BIG);
     let m = mips(&c, BIG);
     let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
     let tris = sphere();
@@ -213,9 +171,9 @@ fn level_zero_sparkles_trilinear_overblurs() {
     let _ = (pl, ql);
 }
 
-/// RMS (per channel, RGB565 LSB) of `img` minus its 5 x 5 box blur, over pixels whose
-/// window is covered.
-fn high_pass_rms(img: &env_scene::Image) -> f64 {
+/// Per covered pixel whose whole 5 x 5 window is covered: its RGB565 channels and the
+/// window's mean (a 5 x 5 box blur), `None` elsewhere.
+fn blur5(img: &env_scene::Image) -> Vec<Option<([f64; 3], [f64; 3])>> {
     let ch = |p: u16| {
         [
             f64::from(p >> 11),
@@ -224,69 +182,58 @@ fn high_pass_rms(img: &env_scene::Image) -> f64 {
         ]
     };
     let (w, h) = (W as i32, H as i32);
-    let (mut sum, mut n) = (0.0, 0usize);
-    for y in 2..h - 2 {
-        for x in 2..w - 2 {
+    (0..w * h)
+        .map(|k| {
+            let (x, y) = (k % w, k / w);
+            if x < 2 || y < 2 || x >= w - 2 || y >= h - 2 {
+                return None;
+            }
             let mut acc = [0.0; 3];
-            let mut full = true;
             for dy in -2..=2 {
                 for dx in -2..=2 {
                     let i = ((y + dy) * w + x + dx) as usize;
-                    full &= img.1[i];
+                    if !img.1[i] {
+                        return None;
+                    }
                     let c = ch(img.0[i]);
                     for q in 0..3 {
                         acc[q] += c[q] / 25.0;
                     }
                 }
             }
-            if full {
-                let c = ch(img.0[(y * w + x) as usize]);
-                for q in 0..3 {
-                    sum += (c[q] - acc[q]).powi(2);
-                }
-                n += 3;
-            }
-        }
-    }
-    (sum / n as f64).sqrt()
+            Some((ch(img.0[k as usize]), acc))
+        })
+        .collect()
 }
 
 /// RMS difference (per channel, RGB565 LSB) of `a` and `b` after a 5 x 5 box blur of each,
-/// over pixels whose whole 5 x 5 window is covered in both.
+/// over pixels whose whole window is covered in both.
 fn low_pass_error(a: &env_scene::Image, b: &env_scene::Image) -> f64 {
-    let ch = |p: u16| {
-        [
-            f64::from(p >> 11),
-            f64::from((p >> 5) & 63),
-            f64::from(p & 31),
-        ]
-    };
-    let (w, h) = (W as i32, H as i32);
-    let (mut sum, mut n) = (0.0, 0usize);
-    for y in 2..h - 2 {
-        for x in 2..w - 2 {
-            let mut acc = [[0.0; 3]; 2];
-            let mut full = true;
-            for dy in -2..=2 {
-                for dx in -2..=2 {
-                    let i = ((y + dy) * w + x + dx) as usize;
-                    full &= a.1[i] && b.1[i];
-                    for (k, img) in [a, b].iter().enumerate() {
-                        let c = ch(img.0[i]);
-                        for q in 0..3 {
-                            acc[k][q] += c[q] / 25.0;
-                        }
-                    }
-                }
-            }
-            if full {
-                for q in 0..3 {
-                    sum += (acc[0][q] - acc[1][q]).powi(2);
-                }
-                n += 3;
-            }
-        }
-    }
+    let (sum, n) = blur5(a)
+        .iter()
+        .zip(blur5(b))
+        .filter_map(|(p, q)| Some((p.as_ref()?.1, q?.1)))
+        .fold((0.0, 0usize), |(s, n), (p, q)| {
+            (
+                s + (0..3).map(|c| (p[c] - q[c]).powi(2)).sum::<f64>(),
+                n + 3,
+            )
+        });
+    (sum / n as f64).sqrt()
+}
+
+/// RMS (per channel, RGB565 LSB) of `img` minus its 5 x 5 box blur, over pixels whose
+/// window is covered.
+fn high_pass_rms(img: &env_scene::Image) -> f64 {
+    let (sum, n) = blur5(img)
+        .into_iter()
+        .flatten()
+        .fold((0.0, 0usize), |(s, n), (c, m)| {
+            (
+                s + (0..3).map(|q| (c[q] - m[q]).powi(2)).sum::<f64>(),
+                n + 3,
+            )
+        });
     (sum / n as f64).sqrt()
 }
 
@@ -295,7 +242,7 @@ fn low_pass_error(a: &env_scene::Image, b: &env_scene::Image) -> f64 {
 /// level where r spans too much, errors for mismatched chains.
 #[test]
 fn hard_cases() {
-    let c = chains(16);
+    let c = sky_chains(16);
     let m = mips(&c, 16);
     let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
     let vp = Viewport::new(0, 0, 64, 64).unwrap();
@@ -332,7 +279,7 @@ fn hard_cases() {
     ];
     assert!(d.clip_triangles(&[fanned, zero], &mut frame).unwrap() > 0);
     // Mismatched chains are refused.
-    let small = chains(8);
+    let small = sky_chains(8);
     let sm = mips(&small, 8);
     let mut mixed = m;
     mixed[3] = sm[3];
@@ -343,23 +290,15 @@ fn hard_cases() {
     assert!(MipCubeMap::new(&mixed, Trilinear::default()).is_err());
 }
 
-fn any_bits() -> impl Strategy<Value = i32> {
-    prop_oneof![
-        3 => any::<i32>(),
-        2 => -(1i32 << 16)..(1 << 16),
-        1 => prop::sample::select(vec![0, 1, -1, i32::MAX, i32::MIN, 1 << 30, -(1 << 30)]),
-    ]
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
     /// Wild vertices never panic and never write outside the frame.
     #[test]
     fn wild_triangles_never_panic(
-        v in prop::collection::vec(([any_bits(), any_bits(), any_bits(), any_bits()], [any_bits(), any_bits(), any_bits(), any_bits(), any_bits(), any_bits()]), 3..8)
+        v in prop::collection::vec(([any_bits_env(), any_bits_env(), any_bits_env(), any_bits_env()], [any_bits_env(), any_bits_env(), any_bits_env(), any_bits_env(), any_bits_env(), any_bits_env()]), 3..8)
     ) {
-        let c = chains(8);
+        let c = sky_chains(8);
         let m = mips(&c, 8);
         let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
         let verts: Vec<Vertex<8>> = v
@@ -398,7 +337,7 @@ impl fixel::shading::Shader for LambdaOut<'_> {
 
 #[test]
 fn lambda_matches_gl_lod() {
-    let c = chains(SIZE);
+    let c = sky_chains(SIZE);
     let m = mips(&c, SIZE);
     let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
     let tris = sphere();

@@ -14,10 +14,12 @@
 //! | the same frame with GL's clamped filter, against the seamless reference | max 20, > 2 LSB 0.55 %, 35.6 dB |
 //! | (and against its own, clamped, reference) | max 21, > 2 LSB 0.07 %, 36.9 dB |
 
+mod common;
+use common::any_bits_env;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::shading::env::{sky, CubeMap, EnvLookup, ReflectPerPixel};
 use fixel::texture::{Bilinear, Texture};
-use host_tests::env_scene::{self, cube, faces, ref_faces};
+use host_tests::env_scene::{self, cube, directions, faces, ref_faces};
 use host_tests::metrics::{channel_errors, compare_rgb565};
 use host_tests::reference::env::{cube_sample, cube_sample_seamless};
 use host_tests::reference::{rgb565_from_f64, RefFilter};
@@ -27,20 +29,6 @@ const SIZE: u32 = 64;
 
 fn to_f64(d: [i32; 3]) -> [f64; 3] {
     d.map(f64::from)
-}
-
-/// A Fibonacci sphere of directions at several scales.
-fn directions(n: usize) -> Vec<[i32; 3]> {
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|i| {
-            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let r = (1.0 - y * y).sqrt();
-            let a = golden * i as f64;
-            let scale = [3.0e3, 1.0e5, 2.0e7, 1.0e9][i % 4];
-            [r * a.cos(), y, r * a.sin()].map(|c| (c * scale).round() as i32)
-        })
-        .collect()
 }
 
 #[test]
@@ -250,21 +238,13 @@ fn seamless_sphere_matches_reference() {
     println!("clamped sphere vs clamped reference: {o}");
 }
 
-fn any_bits() -> impl Strategy<Value = i32> {
-    prop_oneof![
-        3 => any::<i32>(),
-        2 => -(1i32 << 16)..(1 << 16),
-        1 => prop::sample::select(vec![0, 1, -1, i32::MAX, i32::MIN, 1 << 30, -(1 << 30)]),
-    ]
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
 
     /// Any direction whose major magnitude is at least 2^12 (so the direction is resolved
     /// finer than a texel): within 1 LSB of the reference.
     #[test]
-    fn any_direction_within_one_lsb(d in [any_bits(), any_bits(), any_bits()]) {
+    fn any_direction_within_one_lsb(d in [any_bits_env(), any_bits_env(), any_bits_env()]) {
         prop_assume!(d.iter().map(|c| c.unsigned_abs()).max().unwrap() >= 1 << 12);
         let f = faces(16);
         let (c, rf) = (cube(&f, 16, Bilinear).seamless(), ref_faces(&f, 16));

@@ -47,7 +47,6 @@ use host_tests::reference::env::{
     cube_sample, cube_sample_seamless, cube_sample_trilinear, latlong_sample, reflect,
     render_varyings, render_varyings_with_derivatives, sphere_sample,
 };
-use host_tests::reference::mip::RefMipChain;
 use host_tests::reference::{RefFilter, RefTexture};
 
 const W: u32 = 320;
@@ -373,41 +372,11 @@ fn main() {
     // projected pair, against the reference's GL cube LOD (central differences of r).
     {
         let levels = fixel::texture::full_levels(SIZE, SIZE);
-        let chains: Vec<Vec<Rgb565>> = faces
-            .iter()
-            .map(|base| {
-                let mut c =
-                    vec![Rgb565::new(0, 0, 0); fixel::texture::chain_len(SIZE, SIZE, levels)];
-                c[..base.len()].copy_from_slice(base);
-                fixel::texture::generate_mips(&mut c, SIZE, SIZE, levels).expect("mips");
-                c
-            })
-            .collect();
+        let chains = host_tests::env_scene::sky_chains(SIZE);
         let mips: [MipTexture<'_>; 6] = core::array::from_fn(|i| {
             MipTexture::new(&chains[i], SIZE, SIZE, levels).expect("chain")
         });
-        let rc: [RefMipChain; 6] = core::array::from_fn(|f| {
-            let mut off = 0;
-            RefMipChain {
-                levels: (0..levels)
-                    .map(|k| {
-                        let side = fixel::texture::level_side(SIZE, k);
-                        let n = (side * side) as usize;
-                        let t = RefTexture {
-                            width: side,
-                            height: side,
-                            texels: chains[f][off..off + n]
-                                .iter()
-                                .map(|c| c.into_storage())
-                                .collect(),
-                            border: 0,
-                        };
-                        off += n;
-                        t
-                    })
-                    .collect(),
-            }
-        });
+        let rc = host_tests::env_scene::ref_chains(&chains, SIZE);
         let tris: Vec<[Vertex<8>; 3]> = sphere
             .pixel
             .iter()

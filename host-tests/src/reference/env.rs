@@ -91,15 +91,7 @@ pub fn cube_sample_seamless(faces: &[RefTexture; 6], d: [f64; 3]) -> [f64; 3] {
         // The tap's centre on the extended plane of face f, as a direction.
         let sc = 2.0 * (i as f64 + 0.5) / nf - 1.0;
         let tc = 2.0 * (j as f64 + 0.5) / nf - 1.0;
-        let p = match f {
-            0 => [1.0, -tc, -sc],
-            1 => [-1.0, -tc, sc],
-            2 => [sc, 1.0, tc],
-            3 => [sc, -1.0, -tc],
-            4 => [sc, -tc, 1.0],
-            _ => [-sc, -tc, -1.0],
-        };
-        let (g, s2, t2) = cube_face_st(p);
+        let (g, s2, t2) = cube_face_st(face_point(f, sc, tc));
         let idx = |c: f64| ((c * nf).floor() as i64).clamp(0, i64::from(n) - 1) as u32;
         Some(super::types::rgb565_to_f64(
             faces[g].texel(idx(s2), idx(t2)),
@@ -294,19 +286,25 @@ pub fn latlong_sample(tex: &RefTexture, d: [f64; 3], filter: RefFilter) -> [f64;
     sample(tex, [s, t], filter, RefWrap::Repeat, RefWrap::ClampToEdge)
 }
 
-/// The unit direction through the centre of texel `(i, j)` of face `face` (GL order) of a
-/// cube map of side `size` (the inverse of GL's face table).
-pub fn texel_dir(face: usize, i: u32, j: u32, size: u32) -> [f64; 3] {
-    let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
-    let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
-    let d = match face {
+/// The point `(sc, tc)` (each in `[-1, 1]` on the face, beyond it outside) of face `face`'s
+/// plane at distance 1 from the centre: GL's face table inverted.
+pub fn face_point(face: usize, sc: f64, tc: f64) -> [f64; 3] {
+    match face {
         0 => [1.0, -tc, -sc],
         1 => [-1.0, -tc, sc],
         2 => [sc, 1.0, tc],
         3 => [sc, -1.0, -tc],
         4 => [sc, -tc, 1.0],
         _ => [-sc, -tc, -1.0],
-    };
+    }
+}
+
+/// The unit direction through the centre of texel `(i, j)` of face `face` (GL order) of a
+/// cube map of side `size` (the inverse of GL's face table).
+pub fn texel_dir(face: usize, i: u32, j: u32, size: u32) -> [f64; 3] {
+    let sc = 2.0 * (f64::from(i) + 0.5) / f64::from(size) - 1.0;
+    let tc = 2.0 * (f64::from(j) + 0.5) / f64::from(size) - 1.0;
+    let d = face_point(face, sc, tc);
     let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     d.map(|c| c / l)
 }

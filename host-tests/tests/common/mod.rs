@@ -274,3 +274,14 @@ impl Rng {
         a + (b - a) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
     }
 }
+
+/// Any `i32`, weighted towards small magnitudes and the extremes: direction and vertex
+/// components for the environment maps' never-panics properties.
+pub fn any_bits_env() -> impl proptest::strategy::Strategy<Value = i32> {
+    use proptest::prelude::*;
+    prop_oneof![
+        3 => any::<i32>(),
+        2 => -(1i32 << 16)..(1 << 16),
+        1 => prop::sample::select(vec![0, 1, -1, i32::MAX, i32::MIN, 1 << 30, -(1 << 30)]),
+    ]
+}
