@@ -120,7 +120,9 @@ impl Viewport {
         let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
         let cx = i64::from(self.rect.x0) * one + hw;
         let cy = i64::from(self.rect.y0) * one + hh;
-        let lim = i64::from(GUARD_BAND_PX) * one;
+        // A constant, not a captured local: the closure below may be out of line, and its
+        // clamp must still see `-lim <= lim` (else it links a panic with i64 formatting).
+        const LIM: i64 = GUARD_BAND_PX as i64 * SUBPIXEL_ONE as i64;
         const R: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
         const HALF: i64 = 1 << (R - 1);
         // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
@@ -138,9 +140,9 @@ impl Viewport {
                 fraction_offset::<R>(r as u32, w as u32)
             };
             let s = c + s;
-            if s.abs() > lim {
+            if s.abs() > LIM {
                 // Clamped into the guard band (only vertices the clipper will cut).
-                return (s.clamp(-lim, lim) as i32, 0);
+                return (s.clamp(-LIM, LIM) as i32, 0);
             }
             (s as i32, off.clamp(-HALF, HALF) as i16)
         };

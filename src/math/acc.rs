@@ -47,6 +47,26 @@ pub(crate) fn dot_q16<const N: usize>(a: [i32; N], b: [i32; N]) -> i64 {
     }
     #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
     {
+        dot_q16_i64(a, b)
+    }
+}
+
+/// [`dot_q16`] out of line on ARMv6-M (one copy for the callers that are not per-vertex hot
+/// paths, such as normal transforms and dot products: flash, not speed, matters there).
+#[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
+#[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
+pub(crate) fn dot3_q16_shared(a: [i32; 3], b: [i32; 3]) -> i64 {
+    dot_q16(a, b)
+}
+
+/// The `i64` form of [`dot_q16`]: exact products, [`sum_q32`].
+#[cfg_attr(
+    all(target_arch = "arm", not(target_has_atomic = "32")),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn dot_q16_i64<const N: usize>(a: [i32; N], b: [i32; N]) -> i64 {
+    {
         sum_q32(core::array::from_fn::<i64, N, _>(|k| {
             prod(Fx::from_bits(a[k]), Fx::from_bits(b[k]))
         }))

@@ -12,7 +12,7 @@
 //! `cot(fovy/2)` and quotients are computed from Q2.30 sines and correctly rounded
 //! division-free quotients, so every entry is within about one ulp of the exact value.
 
-use super::acc::{dot_q16, fit, prod, saturate, sum_q32};
+use super::acc::{dot3_q16_shared, dot_q16, fit, prod, saturate, sum_q32};
 use super::recip::{div_round, signed_fx};
 use super::trig::{sin_cos, sin_cos_q30};
 use super::{Angle, Fx, Vec3, Vec4};
@@ -213,6 +213,9 @@ impl Mat4 {
 
     /// `self · (p, 1)`: a point to homogeneous coordinates. Each component is an exact sum
     /// rounded once; `None` if any component does not fit in `Fx` (skip the vertex).
+    // One out-of-line copy on ARMv6-M, where the split products are long: inlined into
+    // every caller they cost flash for no speed.
+    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
     pub fn transform_point(&self, p: Vec3) -> Option<Vec4> {
         let r = |i: usize| {
             let row = &self.m[i];
@@ -228,10 +231,13 @@ impl Mat4 {
     /// `self · (v, 0)`, first three components: a direction (e.g. a normal under a
     /// rotation-only model-view; general matrices need the inverse transpose). `None` if a
     /// component does not fit in `Fx`.
+    // One out-of-line copy on ARMv6-M, where the split products are long: inlined into
+    // every caller they cost flash for no speed.
+    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
     pub fn transform_vector(&self, v: Vec3) -> Option<Vec3> {
         let r = |i: usize| {
             let row = &self.m[i];
-            fit(dot_q16(
+            fit(dot3_q16_shared(
                 [row[0].to_bits(), row[1].to_bits(), row[2].to_bits()],
                 [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()],
             ))

@@ -12,7 +12,7 @@
 //! to about half an ulp (2^-17) per component for any non-zero input, relative to the
 //! exact direction of the (already quantised) input.
 
-use super::acc::{dot_q16, fit, prod, saturate, sum_q32};
+use super::acc::{dot3_q16_shared, fit, prod, saturate, sum_q32};
 use super::recip::{isqrt_u64, reciprocal_u32};
 use super::Fx;
 use core::ops::{Add, Neg, Sub};
@@ -131,7 +131,7 @@ impl Vec3 {
     }
 
     fn dot_bits(self, o: Vec3) -> i64 {
-        dot_q16(
+        dot3_q16_shared(
             [self.x.to_bits(), self.y.to_bits(), self.z.to_bits()],
             [o.x.to_bits(), o.y.to_bits(), o.z.to_bits()],
         )
