@@ -179,10 +179,22 @@ impl Divisor32 {
     }
 }
 
+/// High 64 bits of the 96-bit product `a b` for `a < 2^32`: two 32 x 32-bit products
+/// (`a bh + floor(a bl / 2^32)` stays below 2^64).
+#[inline(always)]
+fn mul_hi64_32(a: u32, b: u64) -> u64 {
+    let (bh, bl) = ((b >> 32) as u32, b as u32);
+    (mul_wide(a, bh) + (mul_wide(a, bl) >> 32)) >> 32
+}
+
 /// High 64 bits of the 128-bit product `a b`, from four 32 x 32-bit products.
 #[inline(always)]
 fn mul_hi64(a: u64, b: u64) -> u64 {
     let (ah, al) = ((a >> 32) as u32, a as u32);
+    if !HW_DIVIDE && ah == 0 {
+        // ARMv6-M, `a < 2^32`: two of the four products (each 4 `muls` there) are zero.
+        return mul_hi64_32(al, b);
+    }
     let (bh, bl) = ((b >> 32) as u32, b as u32);
     let ll = mul_wide(al, bl);
     let lh = mul_wide(al, bh);
@@ -378,5 +390,29 @@ mod tests {
                 assert_eq!(div_round_i64(sn, sd), want, "{sn} / {sd}");
             }
         }
+    }
+
+    #[test]
+    fn high_products_are_exact() {
+        let mut x = 0x0123_4567_89AB_CDEFu64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for i in 0..200_000 {
+            let (a, b) = (next(), next());
+            let a = if i % 2 == 0 { a >> 32 } else { a };
+            let exact = ((u128::from(a) * u128::from(b)) >> 64) as u64;
+            assert_eq!(mul_hi64(a, b), exact);
+            if a >> 32 == 0 {
+                assert_eq!(mul_hi64_32(a as u32, b), exact);
+            }
+        }
+        assert_eq!(
+            mul_hi64_32(u32::MAX, u64::MAX),
+            ((u128::from(u32::MAX) * u128::from(u64::MAX)) >> 64) as u64
+        );
     }
 }
