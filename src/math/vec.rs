@@ -151,8 +151,8 @@ impl Vec3 {
     /// `x² + y² + z²` as exact Q32 bits (value = bits / 2^32); at most 3·2^62, no overflow.
     pub fn length_squared_bits(self) -> u64 {
         let sq = |c: Fx| {
-            let a = u64::from(c.to_bits().unsigned_abs());
-            a * a
+            let a = c.to_bits().unsigned_abs();
+            super::div::mul_wide(a, a)
         };
         sq(self.x) + sq(self.y) + sq(self.z)
     }
