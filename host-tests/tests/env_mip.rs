@@ -13,24 +13,30 @@
 //! | `lambda` against GL's, 18,576 minified px of the sphere (64-texel faces) | mean 0.12 levels, p99 0.46, max 2.1 |
 //! | trilinear sphere vs reference, LOD per pixel / span / triangle | mean 0.108 / 0.109 / 0.111 LSB, > 2 LSB 0.16 / 0.17 / 0.19 %, max 21 |
 //! | high-pass RMS, 256-texel faces: level 0 / trilinear / 4 x 4 supersampled | 3.80 / 2.53 / 3.08 LSB |
+//! | seamless trilinear sphere vs the seamless reference | max 3, mean 0.099, > 2 LSB 0.085 %, 40.9 dB |
+//! | clamped trilinear sphere vs the seamless reference | max 20, > 2 LSB 1.29 %, 33.1 dB |
 
 #![allow(clippy::needless_range_loop)]
 
 mod common;
 use common::any_bits_env;
+use embedded_graphics_core::pixelcolor::IntoStorage;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
-use fixel::shading::env::{EnvVertices, MipCubeMap, ReflectPerPixel, ReflectPerPixelMip};
+use fixel::shading::env::{
+    EnvLookupLod, EnvVertices, MipCubeMap, ReflectPerPixel, ReflectPerPixelMip,
+};
 use fixel::surface::Frame;
 use fixel::texture::{full_levels, Bilinear, Lod, LodGranularity, MipTexture, Trilinear};
 use host_tests::env_scene::{self, cube, faces, ref_chains, ref_faces, sky_chains, H, W};
 use host_tests::metrics::compare_rgb565;
 use host_tests::reference::env::{
-    cube_sample, cube_sample_trilinear, reflect, render_varyings_with_derivatives,
+    cube_sample, cube_sample_trilinear, cube_sample_trilinear_seamless, reflect,
+    render_varyings_with_derivatives,
 };
 use host_tests::reference::mip::RefMipChain;
-use host_tests::reference::RefFilter;
+use host_tests::reference::{RefFilter, RefTexture};
 use proptest::prelude::*;
 
 const SIZE: u32 = 64;
@@ -84,6 +90,110 @@ fn mip_sphere_matches_reference() {
         println!("trilinear sphere, LOD per {name}: {r}");
         assert!(r.both_covered > 10_000, "{r}");
         assert!(r.mean <= mean && r.share_over_2 <= over2, "{name}: {r}");
+    }
+}
+
+/// Trilinear with the seamless rule on every level (`MipCubeMap::seamless`) against the
+/// reference's seamless trilinear; GL's clamped trilinear against the same reference shows
+/// what the seams cost at coarse levels.
+#[test]
+fn seamless_trilinear_sphere_matches_reference() {
+    let c = sky_chains(SIZE);
+    let m = mips(&c, SIZE);
+    let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
+    let rc = ref_chains(&c, SIZE);
+    let levels: Vec<[RefTexture; 6]> = (0..rc[0].levels.len())
+        .map(|k| core::array::from_fn(|f| rc[f].levels[k].clone()))
+        .collect();
+    let tris = sphere();
+    let rr = |a: &[f64; 8]| reflect([a[0], a[1], a[2]], [a[3], a[4], a[5]]);
+    let want = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
+        cube_sample_trilinear_seamless(&levels, rr(&a), around.map(|b| rr(&b)))
+    });
+    let got = env_scene::draw(
+        ReflectPerPixelMip {
+            map: map.seamless(),
+            lod: Lod::default(),
+        },
+        &tris,
+    );
+    host_tests::golden::assert_golden("env_cube_sphere_trilinear_seamless", W, H, &got.0);
+    let r = compare_rgb565(&got.0, &got.1, &want.0, &want.1);
+    println!("seamless trilinear sphere vs seamless reference: {r}");
+    assert!(r.both_covered > 10_000, "{r}");
+    assert!(
+        r.max <= 4 && r.mean <= 0.15 && r.share_over_2 <= 0.002,
+        "{r}"
+    );
+    let clamped = env_scene::draw(
+        ReflectPerPixelMip {
+            map,
+            lod: Lod::default(),
+        },
+        &tris,
+    );
+    let c = compare_rgb565(&clamped.0, &clamped.1, &want.0, &want.1);
+    println!("clamped trilinear sphere vs seamless reference: {c}");
+}
+
+/// Plain faces at the coarsest level (1 x 1 per face): on an edge the seamless trilinear
+/// lookup blends the two faces, at a corner the three; GL's clamped one reads one face.
+#[test]
+fn seamless_trilinear_blends_faces_at_the_coarsest_level() {
+    let colours = [
+        Rgb565::new(30, 0, 0),
+        Rgb565::new(0, 60, 0),
+        Rgb565::new(0, 0, 30),
+        Rgb565::new(30, 60, 0),
+        Rgb565::new(0, 60, 30),
+        Rgb565::new(30, 0, 30),
+    ];
+    // 4 x 4 faces with 3 levels (4, 2, 1), every level the face's colour.
+    let chains: Vec<Vec<Rgb565>> = colours.iter().map(|&c| vec![c; 21]).collect();
+    let m: [MipTexture<'_>; 6] =
+        core::array::from_fn(|i| MipTexture::new(&chains[i], 4, 4, 3).unwrap());
+    let clamped = MipCubeMap::new(&m, Trilinear::default()).unwrap();
+    let seamless = clamped.seamless();
+    let ch = |v: u16| {
+        [
+            f64::from(v >> 11),
+            f64::from((v >> 5) & 63),
+            f64::from(v & 31),
+        ]
+    };
+    let mean = |fs: &[usize]| -> [f64; 3] {
+        core::array::from_fn(|k| {
+            fs.iter()
+                .map(|&f| ch(colours[f].into_storage())[k])
+                .sum::<f64>()
+                / fs.len() as f64
+        })
+    };
+    let near = |got: u16, want: [f64; 3]| (0..3).all(|k| (ch(got)[k] - want[k]).abs() <= 0.67);
+    let coarsest = 2 * 256; // lambda = 2: level 2, 1 x 1
+    let s = 1 << 20;
+    assert!(near(
+        seamless.lookup_lod([s, s, 0], coarsest),
+        mean(&[0, 2])
+    ));
+    assert!(near(
+        seamless.lookup_lod([s, s, s], coarsest),
+        mean(&[0, 2, 4])
+    ));
+    assert!(near(
+        seamless.lookup_lod([-s, 0, -s], coarsest),
+        mean(&[1, 5])
+    ));
+    assert_eq!(
+        clamped.lookup_lod([s, s, 0], coarsest),
+        colours[0].into_storage()
+    );
+    // Between levels and magnified: still the faces' colours in the face centres.
+    for lambda in [-512, 0, 100, 300, 5000] {
+        assert_eq!(
+            seamless.lookup_lod([s, 3, -7], lambda),
+            colours[0].into_storage()
+        );
     }
 }
 
@@ -312,6 +422,8 @@ proptest! {
             let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); 40 * 32], vec![0u16; 40 * 32]);
             let mut frame = Frame::new(&mut color, 40, 32).unwrap().with_depth(&mut depth).unwrap();
             d.clip_triangles(&tris, &mut frame).unwrap();
+            let d = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixelMip { map: map.seamless(), lod: lod(g) }, vp, Cull::None).unwrap();
+            d.clip_triangles(&tris, &mut frame).unwrap();
         }
     }
 }
@@ -320,7 +432,7 @@ proptest! {
 /// levels so it stays positive) instead of a colour, against the reference's GL `lambda`
 /// from central differences of the exact reflection, where the sphere minifies the sky.
 #[derive(Clone, Copy, Debug)]
-struct LambdaOut<'a>(ReflectPerPixelMip<'a, Trilinear>);
+struct LambdaOut<'a>(ReflectPerPixelMip<MipCubeMap<'a, Trilinear>>);
 
 impl fixel::shading::Shader for LambdaOut<'_> {
     type Varyings = [i32; 8];

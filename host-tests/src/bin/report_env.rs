@@ -44,8 +44,8 @@ use fixel::texture::{
 use host_tests::cost_plot::Point;
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::reference::env::{
-    cube_sample, cube_sample_seamless, cube_sample_trilinear, latlong_sample, reflect,
-    render_varyings, render_varyings_with_derivatives, sphere_sample,
+    cube_sample, cube_sample_seamless, cube_sample_trilinear, cube_sample_trilinear_seamless,
+    latlong_sample, reflect, render_varyings, render_varyings_with_derivatives, sphere_sample,
 };
 use host_tests::reference::{RefFilter, RefTexture};
 
@@ -413,6 +413,33 @@ fn main() {
                 fmt_err(&e)
             );
         }
+        // Seamless on every level, LOD per span, against the seamless reference.
+        let levels: Vec<[RefTexture; 6]> = (0..rc[0].levels.len())
+            .map(|k| core::array::from_fn(|f| rc[f].levels[k].clone()))
+            .collect();
+        let reference = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
+            cube_sample_trilinear_seamless(&levels, rr(&a), around.map(|b| rr(&b)))
+        });
+        let name = "pixel-trilinear-seamless-span";
+        let shader = ReflectPerPixelMip {
+            map: MipCubeMap::new(&mips, Trilinear::default())
+                .expect("map")
+                .seamless(),
+            lod: Lod {
+                granularity: LodGranularity::Span,
+                ..Lod::default()
+            },
+        };
+        let (img, ns) = run(shader, &tris, runs);
+        let want = band_checksum(shader, EnvVertices::per_pixel_mip);
+        let e = cmp(&img, &reference);
+        point(name, ns, &want, &e);
+        md += &format!(
+            "| {name} (the same, seamless on every level; reference: GL's seamless trilinear) | {ns:.1} | {} | {} | {} | - |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&e)
+        );
     }
 
     // The same sky as a sphere map and a lat-long map (per pixel, bilinear).

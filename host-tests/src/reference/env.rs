@@ -114,6 +114,35 @@ pub fn cube_sample_seamless(faces: &[RefTexture; 6], d: [f64; 3]) -> [f64; 3] {
     [0, 1, 2].map(|ch| (0..4).map(|k| w[k] * c[k][ch]).sum())
 }
 
+/// [`cube_sample_trilinear`] with GL's seamless rule on every level: the same face, LOD and
+/// level selection, each level sampled with [`cube_sample_seamless`]. `levels[k]` holds the
+/// six faces of level `k`.
+pub fn cube_sample_trilinear_seamless(
+    levels: &[[RefTexture; 6]],
+    d: [f64; 3],
+    around: [[f64; 3]; 4],
+) -> [f64; 3] {
+    let (f, _, _) = cube_face_st(d);
+    let size = f64::from(levels[0][0].width);
+    let st = around.map(|a| face_plane_st(f, a));
+    let deriv = [
+        [(st[1].0 - st[0].0) * size, (st[1].1 - st[0].1) * size],
+        [(st[3].0 - st[2].0) * size, (st[3].1 - st[2].1) * size],
+    ];
+    let lambda = super::mip::lambda(deriv, &super::RefLod::default());
+    let sel = super::mip::select(lambda, super::RefMip::Linear, levels.len() as u32);
+    let at = |k: u32| cube_sample_seamless(&levels[(k as usize).min(levels.len() - 1)], d);
+    if sel.magnify {
+        return at(0);
+    }
+    let a = at(sel.a);
+    if sel.b == sel.a || sel.frac == 0.0 {
+        return a;
+    }
+    let b = at(sel.b);
+    core::array::from_fn(|c| (1.0 - sel.frac) * a[c] + sel.frac * b[c])
+}
+
 /// Rasterizes `tris` into a `width x height` frame (depth test less, back faces culled;
 /// every vertex must have `w > 0`: no clipping), calling `shade` with the perspective-
 /// correct interpolation of the varyings (f64 of their raw bits). Returns RGB565 per pixel

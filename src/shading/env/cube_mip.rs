@@ -78,7 +78,22 @@ pub struct MipCubeMap<'a, S> {
     sampler: S,
 }
 
+/// A direction lookup with a level of detail: the mipmapped cube maps ([`MipCubeMap`],
+/// [`SeamlessMipCubeMap`](super::SeamlessMipCubeMap)) that [`ReflectPerPixelMip`] reads.
+pub trait EnvLookupLod: Copy + core::fmt::Debug {
+    /// `log2` of the side of level 0 of every face.
+    fn log2_size(&self) -> u32;
+    /// The colour (raw RGB565) in direction `dir` (any length) at level of detail
+    /// `lambda` (Q8.8, after any bias and clamp; `<= 0` magnifies level 0). Never panics.
+    fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16;
+}
+
 impl<'a, S: TexSampler> MipCubeMap<'a, S> {
+    /// The six chains, GL order.
+    pub fn chains(&self) -> &'a [MipTexture<'a>; 6] {
+        self.faces
+    }
+
     /// A mipmapped cube map over six chains (GL order), sampled with `sampler`.
     ///
     /// # Errors
@@ -111,11 +126,16 @@ impl<'a, S: TexSampler> MipCubeMap<'a, S> {
     pub fn size(&self) -> u32 {
         1 << self.log2_size
     }
+}
 
-    /// The colour in direction `dir` (any length) at level of detail `lambda` (Q8.8, after
-    /// any bias and clamp; `<= 0` magnifies level 0).
+impl<S: TexSampler> EnvLookupLod for MipCubeMap<'_, S> {
     #[inline(always)]
-    pub fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16 {
+    fn log2_size(&self) -> u32 {
+        u32::from(self.log2_size)
+    }
+
+    #[inline(always)]
+    fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16 {
         let c = face_coords(dir);
         let l = u32::from(self.log2_size);
         let tex = &self.faces[usize::from(c.face) % 6];
@@ -131,7 +151,7 @@ impl<'a, S: TexSampler> MipCubeMap<'a, S> {
 }
 
 impl<S: TexSampler> EnvLookup for MipCubeMap<'_, S> {
-    /// Level 0 (no derivatives here): [`MipCubeMap::lookup_lod`] with `lambda = 0`.
+    /// Level 0 (no derivatives here): [`EnvLookupLod::lookup_lod`] with `lambda = 0`.
     #[inline(always)]
     fn lookup(&self, dir: [i32; 3]) -> u16 {
         self.lookup_lod(dir, 0)
@@ -180,14 +200,15 @@ fn plane_coords(r: [i32; 3], face: u8, log2_size: u32) -> Option<(i64, i64)> {
 /// or any [`TexSampler`]). Varyings: `n`, `v` (as [`ReflectPerPixel`](super::ReflectPerPixel))
 /// and the two slots the hook fills; see the module docs.
 #[derive(Clone, Copy, Debug)]
-pub struct ReflectPerPixelMip<'a, S> {
-    /// The mipmapped cube map.
-    pub map: MipCubeMap<'a, S>,
+pub struct ReflectPerPixelMip<M> {
+    /// The mipmapped cube map ([`MipCubeMap`] or its [`seamless`](MipCubeMap::seamless)
+    /// form).
+    pub map: M,
     /// Bias, clamps (Q8.8) and where `lambda` is computed.
     pub lod: Lod,
 }
 
-impl<S: TexSampler> Shader for ReflectPerPixelMip<'_, S> {
+impl<M: EnvLookupLod> Shader for ReflectPerPixelMip<M> {
     type Varyings = [i32; 8];
     type Triangle = ();
     const TEXCOORDS: Option<(usize, usize)> = Some((6, 7));
@@ -214,7 +235,7 @@ impl<S: TexSampler> Shader for ReflectPerPixelMip<'_, S> {
         let mean: [i32; 3] =
             core::array::from_fn(|c| (r[0][c] >> 2) + (r[1][c] >> 2) + (r[2][c] >> 2));
         let face = face_coords(mean).face;
-        let l = u32::from(self.map.log2_size);
+        let l = self.map.log2_size();
         let p = r.map(|ri| plane_coords(ri, face, l));
         let centre = 1i64 << (15 + l);
         let (s0, t0) = p[0].unwrap_or((centre, centre));

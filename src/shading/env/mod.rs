@@ -4,7 +4,8 @@
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
 //!   major axis through a reciprocal table, nearest or bilinear within a face;
 //!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges; [`cube_mip`]:
-//!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD.
+//!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD
+//!   ([`SeamlessMipCubeMap`]: trilinear and seamless on every level).
 //! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
@@ -59,10 +60,10 @@ pub mod seamless;
 
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
-pub use cube_mip::{MipCubeMap, ReflectPerPixelMip};
+pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
-pub use seamless::SeamlessCubeMap;
+pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};
 pub use sphere::SphereMap;
 pub mod sky;
 pub mod sphere;

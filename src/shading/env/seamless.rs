@@ -47,8 +47,9 @@
 //! ```
 
 use super::cube::{CubeMap, EnvLookup};
+use super::cube_mip::{EnvLookupLod, MipCubeMap};
 use crate::texture::sample::{blend_q8, split_half};
-use crate::texture::{Sampler, Texture};
+use crate::texture::{lerp565, MipTexture, Sampler, TexSampler, Texture};
 
 /// A cube map filtered bilinearly across face edges (`TEXTURE_CUBE_MAP_SEAMLESS`). Made by
 /// [`CubeMap::seamless`]; copying it copies six references.
@@ -130,57 +131,145 @@ impl SeamlessCubeMap<'_> {
     pub fn size(&self) -> u32 {
         1 << self.log2_size
     }
+}
 
-    /// The raw texel at `(i, j)` of `face`, either index possibly one step outside the face
-    /// (read from the neighbouring face); `None` for a corner tap.
-    #[inline(always)]
-    fn tap(&self, face: usize, i: i32, j: i32) -> Option<u16> {
-        let n = 1i32 << self.log2_size;
-        let (ii, jj) = (i >= 0 && i < n, j >= 0 && j < n);
-        let (f, ti, tj) = match (ii, jj) {
-            (true, true) => (face, i as u32, j as u32),
-            (false, false) => return None,
-            _ => texel_of(tap_direction(face, i, j, n), n),
-        };
-        Some(self.faces[f % 6].texel_raw(ti, tj))
-    }
+/// The raw texel at `(i, j)` of `face` (faces of side `2^l` from `faces`), either index
+/// possibly one step outside the face (read from the neighbouring face); `None` for a
+/// corner tap.
+#[inline(always)]
+fn tap<'t>(
+    faces: &impl Fn(usize) -> &'t Texture<'t>,
+    l: u32,
+    face: usize,
+    i: i32,
+    j: i32,
+) -> Option<u16> {
+    let n = 1i32 << l;
+    let (ii, jj) = (i >= 0 && i < n, j >= 0 && j < n);
+    let (f, ti, tj) = match (ii, jj) {
+        (true, true) => (face, i as u32, j as u32),
+        (false, false) => return None,
+        _ => texel_of(tap_direction(face, i, j, n), n),
+    };
+    Some(faces(f % 6).texel_raw(ti, tj))
+}
+
+/// Seamless bilinear lookup at face coordinates `(face, s, t)` (Q16) of six faces of side
+/// `2^l` given by `faces`.
+#[inline(always)]
+fn seamless_bilinear<'t>(
+    faces: &impl Fn(usize) -> &'t Texture<'t>,
+    l: u32,
+    face: usize,
+    s: u32,
+    t: u32,
+) -> u16 {
+    // Q16 s, t <= 2^16 and size <= 2^12: fits i32.
+    let (i0, fu) = split_half((s << l) as i32);
+    let (j0, fv) = split_half((t << l) as i32);
+    let (a, b) = ((fu + 0x80) >> 8, (fv + 0x80) >> 8);
+    let n = 1i32 << l;
+    let taps = if i0 >= 0 && j0 >= 0 && i0 + 1 < n && j0 + 1 < n {
+        let tex = faces(face);
+        let (i, j) = (i0 as u32, j0 as u32);
+        [
+            tex.texel_raw(i, j),
+            tex.texel_raw(i + 1, j),
+            tex.texel_raw(i, j + 1),
+            tex.texel_raw(i + 1, j + 1),
+        ]
+    } else {
+        let t = [
+            tap(faces, l, face, i0, j0),
+            tap(faces, l, face, i0 + 1, j0),
+            tap(faces, l, face, i0, j0 + 1),
+            tap(faces, l, face, i0 + 1, j0 + 1),
+        ];
+        // At most one tap is a corner (the others are in the face or across one edge).
+        let get = |k: usize| t[k].unwrap_or(0);
+        core::array::from_fn(|k| match t[k] {
+            Some(c) => c,
+            None => average3(get((k + 1) % 4), get((k + 2) % 4), get((k + 3) % 4)),
+        })
+    };
+    blend_q8(taps, a, b)
 }
 
 impl EnvLookup for SeamlessCubeMap<'_> {
     #[inline(always)]
     fn lookup(&self, dir: [i32; 3]) -> u16 {
         let c = super::cube::face_coords(dir);
-        let l = u32::from(self.log2_size);
+        let faces = |f: usize| &self.faces[f % 6];
+        seamless_bilinear(
+            &faces,
+            u32::from(self.log2_size),
+            usize::from(c.face) % 6,
+            c.s,
+            c.t,
+        )
+    }
+}
+
+/// A mipmapped cube map filtered trilinearly with the seamless rule on every level (GL's
+/// `LINEAR_MIPMAP_LINEAR` with `TEXTURE_CUBE_MAP_SEAMLESS`): made by
+/// [`MipCubeMap::seamless`]. At coarse levels (a 4 x 4 face is a quarter of the face per
+/// texel) GL's clamped filter shows the cube's edges as lines; this does not.
+#[derive(Clone, Copy, Debug)]
+pub struct SeamlessMipCubeMap<'a> {
+    faces: &'a [MipTexture<'a>; 6],
+    log2_size: u8,
+}
+
+impl<'a, S: TexSampler> MipCubeMap<'a, S> {
+    /// The same chains, filtered trilinearly and seamlessly (whatever `S` is).
+    pub fn seamless(&self) -> SeamlessMipCubeMap<'a> {
+        SeamlessMipCubeMap {
+            faces: self.chains(),
+            log2_size: self.size().trailing_zeros() as u8,
+        }
+    }
+}
+
+impl EnvLookupLod for SeamlessMipCubeMap<'_> {
+    #[inline(always)]
+    fn log2_size(&self) -> u32 {
+        u32::from(self.log2_size)
+    }
+
+    #[inline(always)]
+    fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16 {
+        let c = super::cube::face_coords(dir);
         let face = usize::from(c.face) % 6;
-        // Q16 s, t <= 2^16 and size <= 2^12: fits i32.
-        let (i0, fu) = split_half((c.s << l) as i32);
-        let (j0, fv) = split_half((c.t << l) as i32);
-        let (a, b) = ((fu + 0x80) >> 8, (fv + 0x80) >> 8);
-        let n = 1i32 << l;
-        let tex = &self.faces[face];
-        let taps = if i0 >= 0 && j0 >= 0 && i0 + 1 < n && j0 + 1 < n {
-            let (i, j) = (i0 as u32, j0 as u32);
-            [
-                tex.texel_raw(i, j),
-                tex.texel_raw(i + 1, j),
-                tex.texel_raw(i, j + 1),
-                tex.texel_raw(i + 1, j + 1),
-            ]
-        } else {
-            let t = [
-                self.tap(face, i0, j0),
-                self.tap(face, i0 + 1, j0),
-                self.tap(face, i0, j0 + 1),
-                self.tap(face, i0 + 1, j0 + 1),
-            ];
-            // At most one tap is a corner (the others are in the face or across one edge).
-            let get = |k: usize| t[k].unwrap_or(0);
-            core::array::from_fn(|k| match t[k] {
-                Some(c) => c,
-                None => average3(get((k + 1) % 4), get((k + 2) % 4), get((k + 3) % 4)),
-            })
+        let at = |k: u32| {
+            let faces = |f: usize| self.faces[f % 6].level(k);
+            let l = u32::from(self.log2_size).saturating_sub(k);
+            seamless_bilinear(&faces, l, face, c.s, c.t)
         };
-        blend_q8(taps, a, b)
+        if lambda <= 0 {
+            return at(0);
+        }
+        // GL's LINEAR_MIPMAP_LINEAR: levels floor(lambda) and the next, blended by the
+        // fraction; the last level alone beyond it.
+        let last = self.faces[0].levels().saturating_sub(1);
+        let d1 = ((lambda >> 8) as u32).min(last);
+        let f = if d1 >= last {
+            0
+        } else {
+            (lambda & 0xFF) as u32
+        };
+        let a = at(d1);
+        if f == 0 {
+            return a;
+        }
+        lerp565(a, at(d1 + 1), f)
+    }
+}
+
+impl EnvLookup for SeamlessMipCubeMap<'_> {
+    /// Level 0: [`EnvLookupLod::lookup_lod`] with `lambda = 0`.
+    #[inline(always)]
+    fn lookup(&self, dir: [i32; 3]) -> u16 {
+        self.lookup_lod(dir, 0)
     }
 }
 

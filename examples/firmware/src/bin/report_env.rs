@@ -126,13 +126,15 @@ fn env_lit(buf: &mut EnvBuffers) -> bool {
     })
 }
 
-/// The sphere with 64-texel mipmapped faces, trilinear, LOD per pixel or per span.
+/// The sphere with 64-texel mipmapped faces, trilinear, LOD per pixel or per span, GL's
+/// clamped filter or seamless on every level.
 #[cfg(fixel_fw_report)]
 #[inline(never)]
 fn mipmapped(
     buf: &mut EnvBuffers,
     name: &str,
     granularity: fixel::texture::LodGranularity,
+    seamless: bool,
 ) -> bool {
     use fixel::shading::env::{MipCubeMap, ReflectPerPixelMip};
     use fixel::texture::Trilinear;
@@ -148,13 +150,29 @@ fn mipmapped(
     let Ok(map) = MipCubeMap::new(&faces, Trilinear::default()) else {
         return false;
     };
-    let shader = ReflectPerPixelMip {
-        map,
-        lod: Lod {
-            granularity,
-            ..Lod::default()
-        },
+    let lod = Lod {
+        granularity,
+        ..Lod::default()
     };
+    if seamless {
+        let shader = ReflectPerPixelMip {
+            map: map.seamless(),
+            lod,
+        };
+        return mode(name, |pause, resume| {
+            env::env_frame::<_, Exact, 8>(
+                buf,
+                shader,
+                &s.positions,
+                &s.normals,
+                &s.indices,
+                EnvVertices::per_pixel_mip,
+                pause,
+                resume,
+            )
+        });
+    }
+    let shader = ReflectPerPixelMip { map, lod };
     mode(name, |pause, resume| {
         env::env_frame::<_, Exact, 8>(
             buf,
@@ -204,8 +222,19 @@ fn run() -> bool {
         ok &= per_pixel(&mut buf, "pixel-seamless", cube.seamless());
         ok &= env_lit(&mut buf);
         use fixel::texture::LodGranularity;
-        ok &= mipmapped(&mut buf, "pixel-trilinear", LodGranularity::Pixel);
-        ok &= mipmapped(&mut buf, "pixel-trilinear-span", LodGranularity::Span);
+        ok &= mipmapped(&mut buf, "pixel-trilinear", LodGranularity::Pixel, false);
+        ok &= mipmapped(
+            &mut buf,
+            "pixel-trilinear-span",
+            LodGranularity::Span,
+            false,
+        );
+        ok &= mipmapped(
+            &mut buf,
+            "pixel-trilinear-seamless-span",
+            LodGranularity::Span,
+            true,
+        );
     }
     ok
 }
