@@ -10,7 +10,8 @@
 //!   a seam along every face edge) and the seamless filter (right, `CubeMap::seamless`);
 //! * bottom: the sphere far away in a 256-texel cube map, cropped and enlarged 3x
 //!   (nearest): level 0 (left: the skyline and the ground checker break into sparkle) and
-//!   trilinear mipmaps with GL's cube-map LOD (right, `MipCubeMap` + `ReflectPerPixelMip`).
+//!   trilinear mipmaps with GL's cube-map LOD, seamless on every level (right,
+//!   `MipCubeMap::seamless` + `ReflectPerPixelMip`).
 
 mod common;
 #[path = "common/sky.rs"]
@@ -135,7 +136,7 @@ fn main() -> Result<(), fixel::Error> {
     let level0 = frame(&cube256, ReflectPerPixel(cube256), &far6)?;
     place(&mut pic, &zoom3(&level0), 0, 1);
     let shader = ReflectPerPixelMip {
-        map: MipCubeMap::new(&mips, Trilinear::default())?,
+        map: MipCubeMap::new(&mips, Trilinear::default())?.seamless(),
         lod: Lod::default(),
     };
     let trilinear = frame(&cube256, shader, &far8)?;
