@@ -179,3 +179,35 @@ pub fn directions(n: usize) -> Vec<[i32; 3]> {
         })
         .collect()
 }
+
+/// Six plain face colours (GL order) for the edge and corner tests: every channel of each
+/// is 0 or near full, so blends of two or three faces are told apart.
+pub const PLAIN_FACES: [Rgb565; 6] = [
+    Rgb565::new(30, 0, 0),
+    Rgb565::new(0, 60, 0),
+    Rgb565::new(0, 0, 30),
+    Rgb565::new(30, 60, 0),
+    Rgb565::new(0, 60, 30),
+    Rgb565::new(30, 0, 30),
+];
+
+/// True when raw `got` is, per channel, within 2/3 LSB of the mean of the
+/// [`PLAIN_FACES`] colours of `faces` (a seamless blend of those faces).
+pub fn is_plain_blend(got: u16, faces: &[usize]) -> bool {
+    let ch = |v: u16| {
+        [
+            f64::from(v >> 11),
+            f64::from((v >> 5) & 63),
+            f64::from(v & 31),
+        ]
+    };
+    let g = ch(got);
+    (0..3).all(|k| {
+        let m = faces
+            .iter()
+            .map(|&f| ch(PLAIN_FACES[f].into_storage())[k])
+            .sum::<f64>()
+            / faces.len() as f64;
+        (g[k] - m).abs() <= 0.67
+    })
+}

@@ -391,54 +391,57 @@ fn main() {
         let reference = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
             cube_sample_trilinear(&rc, rr(&a), around.map(|b| rr(&b)))
         });
+        // One row: the frame, its time, the firmware's band checksum, the error.
+        macro_rules! mip_row {
+            ($name:expr, $label:expr, $shader:expr, $reference:expr) => {{
+                let (name, shader) = ($name, $shader);
+                let (img, ns) = run(shader, &tris, runs);
+                let want = band_checksum(shader, EnvVertices::per_pixel_mip);
+                let e = cmp(&img, $reference);
+                point(name, ns, &want, &e);
+                md += &format!(
+                    "| {name} ({}) | {ns:.1} | {} | {} | {} | - |\n",
+                    $label,
+                    mcu_cell(name, &want, "Cortex-M0+"),
+                    mcu_cell(name, &want, "Cortex-M4F"),
+                    fmt_err(&e)
+                );
+            }};
+        }
+        let map = MipCubeMap::new(&mips, Trilinear::default()).expect("map");
+        let lod = |granularity| Lod {
+            granularity,
+            ..Lod::default()
+        };
         for (name, granularity, what) in [
             ("pixel-trilinear", LodGranularity::Pixel, "pixel"),
             ("pixel-trilinear-span", LodGranularity::Span, "span"),
         ] {
-            let shader = ReflectPerPixelMip {
-                map: MipCubeMap::new(&mips, Trilinear::default()).expect("map"),
-                lod: Lod {
-                    granularity,
-                    ..Lod::default()
+            mip_row!(
+                name,
+                format!("7-level chains per face, LOD per {what}; reference: GL's cube LOD"),
+                ReflectPerPixelMip {
+                    map,
+                    lod: lod(granularity)
                 },
-            };
-            let (img, ns) = run(shader, &tris, runs);
-            let want = band_checksum(shader, EnvVertices::per_pixel_mip);
-            let e = cmp(&img, &reference);
-            point(name, ns, &want, &e);
-            md += &format!(
-                "| {name} (7-level chains per face, LOD per {what}; reference: GL's cube LOD) | {ns:.1} | {} | {} | {} | - |\n",
-                mcu_cell(name, &want, "Cortex-M0+"),
-                mcu_cell(name, &want, "Cortex-M4F"),
-                fmt_err(&e)
+                &reference
             );
         }
         // Seamless on every level, LOD per span, against the seamless reference.
         let levels: Vec<[RefTexture; 6]> = (0..rc[0].levels.len())
             .map(|k| core::array::from_fn(|f| rc[f].levels[k].clone()))
             .collect();
-        let reference = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
+        let seamless_ref = render_varyings_with_derivatives(&tris, W, H, |_, _, a, around| {
             cube_sample_trilinear_seamless(&levels, rr(&a), around.map(|b| rr(&b)))
         });
-        let name = "pixel-trilinear-seamless-span";
-        let shader = ReflectPerPixelMip {
-            map: MipCubeMap::new(&mips, Trilinear::default())
-                .expect("map")
-                .seamless(),
-            lod: Lod {
-                granularity: LodGranularity::Span,
-                ..Lod::default()
+        mip_row!(
+            "pixel-trilinear-seamless-span",
+            "the same, seamless on every level; reference: GL's seamless trilinear",
+            ReflectPerPixelMip {
+                map: map.seamless(),
+                lod: lod(LodGranularity::Span)
             },
-        };
-        let (img, ns) = run(shader, &tris, runs);
-        let want = band_checksum(shader, EnvVertices::per_pixel_mip);
-        let e = cmp(&img, &reference);
-        point(name, ns, &want, &e);
-        md += &format!(
-            "| {name} (the same, seamless on every level; reference: GL's seamless trilinear) | {ns:.1} | {} | {} | {} | - |\n",
-            mcu_cell(name, &want, "Cortex-M0+"),
-            mcu_cell(name, &want, "Cortex-M4F"),
-            fmt_err(&e)
+            &seamless_ref
         );
     }
 

@@ -138,7 +138,6 @@ fn mipmapped(
 ) -> bool {
     use fixel::shading::env::{MipCubeMap, ReflectPerPixelMip};
     use fixel::texture::Trilinear;
-    let s = core::hint::black_box(&data::SPHERE);
     let c = core::hint::black_box(&data::SKY64_MIPS);
     let chain = |i: usize| MipTexture::new(&c[i], 64, 64, 7);
     let (Ok(a), Ok(b), Ok(d), Ok(e), Ok(f), Ok(g)) =
@@ -155,24 +154,27 @@ fn mipmapped(
         ..Lod::default()
     };
     if seamless {
-        let shader = ReflectPerPixelMip {
-            map: map.seamless(),
-            lod,
-        };
-        return mode(name, |pause, resume| {
-            env::env_frame::<_, Exact, 8>(
-                buf,
-                shader,
-                &s.positions,
-                &s.normals,
-                &s.indices,
-                EnvVertices::per_pixel_mip,
-                pause,
-                resume,
-            )
-        });
+        mip_mode(
+            buf,
+            name,
+            ReflectPerPixelMip {
+                map: map.seamless(),
+                lod,
+            },
+        )
+    } else {
+        mip_mode(buf, name, ReflectPerPixelMip { map, lod })
     }
-    let shader = ReflectPerPixelMip { map, lod };
+}
+
+/// One frame of the sphere with a mipmapped cube-map shader.
+#[cfg(fixel_fw_report)]
+fn mip_mode<M: fixel::shading::env::EnvLookupLod>(
+    buf: &mut EnvBuffers,
+    name: &str,
+    shader: fixel::shading::env::ReflectPerPixelMip<M>,
+) -> bool {
+    let s = core::hint::black_box(&data::SPHERE);
     mode(name, |pause, resume| {
         env::env_frame::<_, Exact, 8>(
             buf,
