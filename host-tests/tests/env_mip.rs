@@ -459,3 +459,53 @@ fn lambda_matches_gl_lod() {
     assert!(n > 1000);
     assert!(mean <= 0.15 && p99 <= 0.6, "mean {mean} p99 {p99}");
 }
+
+/// A triangle whose three reflections point along +z, +x and +y (90 degrees apart: the
+/// projection onto one face plane fails for one of them) gets the coarsest level at
+/// every pixel (16-texel faces: 5 levels, lambda at least 4).
+#[test]
+fn reflections_a_face_apart_take_the_coarsest_level() {
+    let c = sky_chains(16);
+    let m = mips(&c, 16);
+    let map = MipCubeMap::new(&m, Trilinear::default()).unwrap();
+    let shader = LambdaOut(ReflectPerPixelMip {
+        map,
+        lod: Lod::default(),
+    });
+    let vp = Viewport::new(0, 0, 64, 64).unwrap();
+    let d = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::None).unwrap();
+    let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); 64 * 64], vec![0u16; 64 * 64]);
+    let mut frame = Frame::new(&mut color, 64, 64)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    let one = 1 << 16;
+    // v = (0, 0, 4); n = (0, 0, 1) reflects it to +z, (1, 0, 1) to +x, (0, 1, 1) to +y.
+    let v = |x: i32, y: i32, n: [i32; 3]| {
+        Vertex::new(
+            [x, y, 0, one].map(fixel::math::Fx::from_bits),
+            [n[0], n[1], n[2], 0, 0, 4 * one, 0, 0],
+        )
+    };
+    let tri = [
+        v(-one, -one, [0, 0, one]),
+        v(one, -one, [one, 0, one]),
+        v(0, one, [0, one, one]),
+    ];
+    let drawn = d.clip_triangles(&[tri], &mut frame).unwrap();
+    assert!(drawn > 500, "{drawn}");
+    let depth = frame.depth().unwrap().to_vec();
+    let lambdas: Vec<f64> = frame
+        .pixels()
+        .iter()
+        .zip(&depth)
+        .filter(|(_, &z)| z != fixel::surface::DEPTH_CLEAR)
+        .map(|(p, _)| f64::from(p.into_storage()) / 256.0 - 8.0)
+        .collect();
+    let min = lambdas.iter().copied().fold(f64::INFINITY, f64::min);
+    println!(
+        "reflections a face apart: lambda >= {min:.2} over {} px",
+        lambdas.len()
+    );
+    assert!(min >= 4.0, "lambda {min}");
+}

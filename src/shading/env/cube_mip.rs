@@ -18,8 +18,8 @@
 //! reflection of a curved surface is not. On the benchmark sphere (small triangles) it is
 //! within a fraction of a level of the reference's `lambda` (see `host-tests`). If the
 //! three reflections of a triangle span more than about 80° (`ma` of a vertex at most 1/8
-//! of its largest component, or behind the face plane), the projected pair is clamped to
-//! a spread of `2^13` texels: the coarsest level, which is what such a triangle needs.
+//! of its largest component, or behind the face plane), the triangle's pair spreads over
+//! `2^13` texels: the coarsest level, which is what such a triangle needs.
 //!
 //! # Formats
 //!
@@ -236,22 +236,14 @@ impl<M: EnvLookupLod> Shader for ReflectPerPixelMip<M> {
             core::array::from_fn(|c| (r[0][c] >> 2) + (r[1][c] >> 2) + (r[2][c] >> 2));
         let face = face_coords(mean).face;
         let l = self.map.log2_size();
-        let p = r.map(|ri| plane_coords(ri, face, l));
-        let centre = 1i64 << (15 + l);
-        let (s0, t0) = p[0].unwrap_or((centre, centre));
-        for (k, vert) in v.iter_mut().enumerate() {
-            // A vertex whose r leaves the face plane's useful range: spread the pair to the
-            // limit (the coarsest level), away from vertex 0.
-            let (s, t) = p[k].unwrap_or_else(|| {
-                let away = |c0: i64, k: usize| {
-                    if (c0 < centre) ^ (k == 2) {
-                        PAIR_LIMIT
-                    } else {
-                        -PAIR_LIMIT
-                    }
-                };
-                (away(s0, k), away(t0, k + 1))
-            });
+        // A vertex whose r leaves the face plane's useful range (the triangle's reflections
+        // more than about 80 degrees apart): the largest spread of the pair over the whole
+        // triangle, so the coarsest level.
+        let pairs = match r.map(|ri| plane_coords(ri, face, l)) {
+            [Some(a), Some(b), Some(c)] => [a, b, c],
+            _ => [(0, 0), (PAIR_LIMIT, 0), (0, PAIR_LIMIT)],
+        };
+        for (vert, (s, t)) in v.iter_mut().zip(pairs) {
             vert[6] = s as i32;
             vert[7] = t as i32;
         }

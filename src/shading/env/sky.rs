@@ -222,17 +222,16 @@ pub fn sky_spheremap(size: u32, out: &mut [Rgb565]) -> Result<(), Error> {
     }
     for (k, px) in out.iter_mut().enumerate() {
         let (i, j) = ((k as u32) % size, (k as u32) / size);
-        let sx = 2.0 * (i as f32 + 0.5) / size as f32 - 1.0;
-        let ty = 2.0 * (j as f32 + 0.5) / size as f32 - 1.0;
+        let mut sx = 2.0 * (i as f32 + 0.5) / size as f32 - 1.0;
+        let mut ty = 2.0 * (j as f32 + 0.5) / size as f32 - 1.0;
         let mut rho2 = sx * sx + ty * ty;
-        let (mut sx, mut ty) = (sx, ty);
         // Outside the disc: the colour just inside the rim on the same radius, so a
         // bilinear lookup at the rim blends neighbouring rim colours, not black.
         let inner = 1.0 - 0.5 / size as f32;
         if rho2 > inner * inner {
-            let k = inner / M::sqrt(rho2);
-            sx *= k;
-            ty *= k;
+            let scale = inner / M::sqrt(rho2);
+            sx *= scale;
+            ty *= scale;
             rho2 = inner * inner;
         }
         // rho = sin(θ/2): cos θ = 1 − 2 ρ², sin θ = 2 ρ sqrt(1 − ρ²); (rx, ry) along (sx, ty).
