@@ -420,12 +420,11 @@ impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, M
     }
 }
 
-/// GL's `*_MIPMAP_LINEAR` level pair for `lambda > 0` (Q8.8) and a chain of `levels`
-/// levels: the first level `floor(lambda)` (at most the last) and the weight of the next one
+/// GL's `*_MIPMAP_LINEAR` level pair for `lambda > 0` (Q8.8) and a chain whose last level
+/// is `last`: the first level `floor(lambda)` (at most `last`) and the weight of the next one
 /// (Q8, 0 at or beyond the last level).
 #[inline(always)]
-pub(crate) fn linear_levels(lambda: i32, levels: u32) -> (u32, u32) {
-    let last = levels.saturating_sub(1);
+pub(crate) fn linear_levels(lambda: i32, last: u32) -> (u32, u32) {
     let d1 = ((lambda >> 8) as u32).min(last);
     let f = if d1 >= last {
         0
@@ -448,8 +447,9 @@ fn mip_sample<Min: Sampler, Mag: Sampler, WU: WrapMode, WV: WrapMode>(
     if lambda <= 0 {
         return Mag::sample(t.base(), wu, wv, u, v);
     }
+    let last = t.levels().saturating_sub(1);
     if linear_between {
-        let (d1, f) = linear_levels(lambda, t.levels());
+        let (d1, f) = linear_levels(lambda, last);
         let a = sample_level::<Min, WU, WV>(t, d1, wu, wv, u, v);
         if f == 0 {
             return a;
@@ -462,7 +462,7 @@ fn mip_sample<Min: Sampler, Mag: Sampler, WU: WrapMode, WV: WrapMode>(
         let d = if lambda <= 128 {
             0
         } else {
-            (((lambda + 128 - 1) >> 8) as u32).min(t.levels().saturating_sub(1))
+            (((lambda + 128 - 1) >> 8) as u32).min(last)
         };
         sample_level::<Min, WU, WV>(t, d, wu, wv, u, v)
     }
