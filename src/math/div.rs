@@ -59,7 +59,7 @@ pub fn div_u64(n: u64, d: u64) -> u64 {
 /// two base-2^16 digits of long division on the normalized divisor, each estimated by a
 /// 32-bit division by the divisor's high half and corrected at most twice.
 #[inline]
-fn div_64_32(n: u64, d: u32) -> u32 {
+pub(crate) fn div_64_32(n: u64, d: u32) -> u32 {
     const B: u32 = 1 << 16;
     let s = d.leading_zeros();
     let v = d << s;

@@ -79,7 +79,7 @@ pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
     extent.saturating_mul(one - q) / (one + q)
 }
 
-/// One screen vertex as the set-up reads it: `x, y` in 1/256 pixel (unsnapped: see
+/// One screen vertex as the set-up reads it: `x, y` in 1/4096 pixel (unsnapped: see
 /// [`ScreenVertex::sub`](crate::geometry::ScreenVertex)), depth, clip `w`.
 pub(crate) type SetupVertex = (i32, i32, i32, i32);
 

@@ -6,14 +6,23 @@
 //!
 //! # Arithmetic and error budget
 //! * Inputs: attribute values `|a| < 2^31` (any fixed-point format: the plane does not care),
-//!   vertex positions in 1/256 pixel ([`ATTR_SUBPIXEL_BITS`], the unsnapped projections:
+//!   vertex positions in 1/4096 pixel ([`ATTR_SUBPIXEL_BITS`], the unsnapped projections:
 //!   attributes are not moved by the 1/16-pixel snapping of coverage) inside the guard band
-//!   (`|x|, |y| <= 2^20`), so vertex differences are `< 2^21`, the doubled area `< 2^43` and
-//!   the numerators `Δa·Δy` `< 2^54`.
-//! * Gradients are computed once per triangle with 8 extra fraction bits
-//!   (`(num << 16) / area2`; when that shift would overflow, as quotient and remainder) and
-//!   the reference value at a pixel centre is taken from that high-precision gradient, so it
-//!   is within one unit of the exact value wherever the reference lies.
+//!   (`|x|, |y| <= 2^24`), so vertex differences are `< 2^25`, the doubled area `< 2^51` and
+//!   the numerators `Δa·Δy` `< 2^58`.
+//! * Per triangle, the screen-space derivatives of two barycentric weights are computed once,
+//!   each the rounded quotient `Δy 2^K / area2` (a reciprocal of the area, no division
+//!   instruction per quotient) with `K` chosen so the largest uses 31 bits. A plane's
+//!   gradient, with 8 extra fraction bits, is then `Δa1 dl1 + Δa2 dl2`: two `i32` products
+//!   per axis. Its relative error is below 2^-30, orders of magnitude under what the
+//!   1/4096-pixel positions decide; slivers (weights changing by more than ~2^20 per pixel)
+//!   and attribute differences beyond `i32` take the exactly rounded quotient
+//!   `(Δa·Δy) 2^20 / area2` instead (when that shift would overflow, as quotient and
+//!   remainder).
+//! * The reference value at a pixel centre is taken from that high-precision gradient, so it
+//!   is within one unit of the plane's value wherever the reference lies (for the
+//!   barycentric path, plus the gradient's error times the distance, under a unit within a
+//!   pixel of vertex 0).
 //! * The reference pixel is vertex 0's pixel clamped into the *viewport* (never a band), so
 //!   a frame drawn in bands evaluates exactly the same integers as one drawn whole.
 //! * Per-pixel values use `i32` **wrapping** arithmetic on purpose: set-up is exact modulo
@@ -24,27 +33,204 @@
 //!   across the viewport.
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
+use crate::math::div::{div_64_32, mul_wide_signed};
 use crate::math::Divisor32;
 
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
 
-/// Shared, per-triangle part of plane set-up: vertex deltas and the reference pixel.
+/// Shared, per-triangle part of plane set-up: vertex deltas, the barycentric weights'
+/// derivatives and the reference pixel.
 #[derive(Clone, Copy, Debug)]
 pub struct PlaneSetup {
-    dx1: i64,
-    dy1: i64,
-    dx2: i64,
-    dy2: i64,
+    /// Vertices 1 and 2 minus vertex 0, 1/4096 pixel (`|.| < 2^25` in the guard band).
+    dx1: i32,
+    dy1: i32,
+    dx2: i32,
+    dy2: i32,
     area2: i64,
+    /// Offset of the reference pixel centre from vertex 0, 1/4096 pixel.
+    ref_dx: i32,
+    ref_dy: i32,
+    /// The screen-space derivatives of the barycentric weights of vertices 1 and 2,
+    /// `[dl1/dx, dl2/dx, dl1/dy, dl2/dy]` per pixel, times `2^(EXTRA + cshift)`, each within
+    /// three units of the exact ratio and below 2^31 in magnitude (the largest uses 30 or
+    /// 31 of the bits): a plane's gradient is then two `i32 x i32` products, no division.
+    bary: [i32; 4],
+    /// Fraction bits of `bary` beyond `EXTRA`, `1..=62`; `0` disables the barycentric path
+    /// (slivers whose weights change by more than ~2^20 per pixel), which sends every plane
+    /// down the exact division path.
+    cshift: u32,
+    /// `2^(EXTRA + cshift - 4)` capped at 2^31: attribute differences below it keep the
+    /// barycentric gradient within half a unit per pixel of the exact one (before both are
+    /// rounded); larger ones take the exact path.
+    bary_below: u32,
+    /// Reference pixel.
+    pub px_ref: i32,
+    /// Reference row.
+    pub py_ref: i32,
+}
+
+impl PlaneSetup {
+    /// Prepares plane set-up for the triangle `v` (1/4096-pixel units, [`ATTR_SUBPIXEL_BITS`],
+    /// guard band) whose doubled signed area is non-zero; the reference pixel is clamped into
+    /// `viewport`. Returns `None` for zero area.
+    pub fn new(v: [(i32, i32); 3], viewport: Rect) -> Option<Self> {
+        let dx1 = v[1].0.wrapping_sub(v[0].0);
+        let dy1 = v[1].1.wrapping_sub(v[0].1);
+        let dx2 = v[2].0.wrapping_sub(v[0].0);
+        let dy2 = v[2].1.wrapping_sub(v[0].1);
+        let area2 = mul_wide_signed(dx1, dy2).wrapping_sub(mul_wide_signed(dx2, dy1));
+        if area2 == 0 {
+            return None;
+        }
+        let px_ref =
+            (v[0].0 >> ATTR_SUBPIXEL_BITS).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0));
+        let py_ref =
+            (v[0].1 >> ATTR_SUBPIXEL_BITS).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0));
+        // The reference lies in the viewport (at most 2^11 pixels): its centre fits i32.
+        let centre = |p: i32| (p << ATTR_SUBPIXEL_BITS) + (1 << (ATTR_SUBPIXEL_BITS - 1));
+        let (bary, cshift) =
+            barycentric_derivatives([dy2, dy1.wrapping_neg(), dx2.wrapping_neg(), dx1], area2);
+        Some(PlaneSetup {
+            dx1,
+            dy1,
+            dx2,
+            dy2,
+            area2,
+            ref_dx: centre(px_ref).wrapping_sub(v[0].0),
+            ref_dy: centre(py_ref).wrapping_sub(v[0].1),
+            bary,
+            cshift,
+            bary_below: 1u32 << (EXTRA + cshift).saturating_sub(4).min(31),
+            px_ref,
+            py_ref,
+        })
+    }
+
+    /// Doubled signed area in 1/4096-pixel units squared (positive: clockwise on a y-down
+    /// screen).
+    pub fn area2(&self) -> i64 {
+        self.area2
+    }
+
+    /// The plane through the attribute values `a` at the three vertices.
+    ///
+    /// Its gradient is `(a1 - a0) dl1 + (a2 - a0) dl2` from the per-triangle barycentric
+    /// derivatives (two `i32 x i32` products per axis). Each derivative is within three
+    /// units of `2^(EXTRA + cshift)`, so the gradient is off by at most
+    /// `3 (|a1 - a0| + |a2 - a0|) 2^-(EXTRA + cshift)` units per pixel before its final
+    /// rounding: the differences are held below `2^(EXTRA + cshift - 4)` for this path, which
+    /// bounds that by half a unit (the rounded `dx`, `dy` are then within one unit of the
+    /// exact path's); on the benchmark meshes it is under 2^-8 unit. Slivers and larger
+    /// differences take the exactly rounded quotient ([`Self::plane_exact`]).
+    #[inline]
+    pub fn plane(&self, a: [i32; 3]) -> Plane {
+        let cs = self.cshift;
+        let (d1, o1) = a[1].overflowing_sub(a[0]);
+        let (d2, o2) = a[2].overflowing_sub(a[0]);
+        if cs != 0 && !(o1 | o2) && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
+            let c = &self.bary;
+            // Each product is below 2^62 in magnitude: the sums fit i64.
+            let gxw = mul_wide_signed(d1, c[0]).wrapping_add(mul_wide_signed(d2, c[1]));
+            let gyw = mul_wide_signed(d1, c[2]).wrapping_add(mul_wide_signed(d2, c[3]));
+            let round = 1i64 << (cs - 1);
+            let gx = gxw.wrapping_add(round) >> cs;
+            let gy = gyw.wrapping_add(round) >> cs;
+            return self.finish(a[0], gx, gy);
+        }
+        self.plane_exact(a)
+    }
+
+    /// [`Self::plane`] with the gradient as the exactly rounded quotient `n 2^SHIFT / area2`
+    /// (the path for slivers and attribute differences beyond the barycentric path's bound;
+    /// also the reference the tests hold that path to).
+    #[inline(never)]
+    pub fn plane_exact(&self, a: [i32; 3]) -> Plane {
+        let Some(div) = ExactDivisor::new(self.area2) else {
+            return Plane::default();
+        };
+        let da1 = i64::from(a[1]) - i64::from(a[0]);
+        let da2 = i64::from(a[2]) - i64::from(a[0]);
+        let (dx1, dy1, dx2, dy2) = (
+            i64::from(self.dx1),
+            i64::from(self.dy1),
+            i64::from(self.dx2),
+            i64::from(self.dy2),
+        );
+        // d a / d x and d a / d y in units per 1/4096 pixel, times area2.
+        let nx = mul(da1, dy2) - mul(da2, dy1);
+        let ny = mul(da2, dx1) - mul(da1, dx2);
+        // Per pixel (<< ATTR_SUBPIXEL_BITS) with EXTRA more fraction bits.
+        self.finish(a[0], div.gradient(nx), div.gradient(ny))
+    }
+
+    /// The plane from its gradient `gx, gy` (per pixel, `EXTRA` more fraction bits) and its
+    /// value `a0` at vertex 0.
+    #[inline(always)]
+    fn finish(&self, a0: i32, gx: i64, gy: i64) -> Plane {
+        // Value at the reference centre: a0 + (gx ref_dx + gy ref_dy) / 2^(EXTRA + ATTR_SUBPIXEL_BITS)
+        // (gx is per pixel, ref_dx in 1/4096 pixel).
+        // Wrapping is exact modulo 2^64, hence modulo 2^32 after the shift.
+        let off = mul(gx, i64::from(self.ref_dx)).wrapping_add(mul(gy, i64::from(self.ref_dy)));
+        let round = 1i64 << (EXTRA + ATTR_SUBPIXEL_BITS - 1);
+        let a_ref =
+            i64::from(a0).wrapping_add(off.wrapping_add(round) >> (EXTRA + ATTR_SUBPIXEL_BITS));
+        let half = 1i64 << (EXTRA - 1);
+        Plane {
+            at_ref: a_ref as i32,
+            dx: (gx.wrapping_add(half) >> EXTRA) as i32,
+            dy: (gy.wrapping_add(half) >> EXTRA) as i32,
+        }
+    }
+}
+
+/// `num 2^(SHIFT + cshift) / area2` for the four numerators (the barycentric weights'
+/// derivatives per pixel, see [`PlaneSetup::bary`]) with the largest `cshift` that keeps
+/// them below 2^31, from one 32-bit reciprocal of the area: `|area2|` normalized to
+/// `2^31 <= an < 2^32` (dropping bits below its top 32: relative error under 2^-31), `R =
+/// floor((2^63 - 1) / an)` (`2^31 <= R < 2^32`, relative error under 2^-31), then
+/// `|num| R / 2^(bn + 1)` rounded, where `2^bn > max |num|`: below 2^31, and within
+/// `0.5 + 2^31 (2^-31 + 2^-31)` < 3 units of the exact ratio. `cshift = 0` when no shift in
+/// `1..=62` fits (slivers; never for a triangle wider than 2^-21 pixel).
+fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
+    const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
+    let a = area2.unsigned_abs();
+    let ba = 64 - a.leading_zeros();
+    let an = if ba >= 32 {
+        (a >> (ba - 32)) as u32
+    } else {
+        (a << (32 - ba)) as u32
+    };
+    let num_max = nums.iter().fold(0u32, |m, n| m | n.unsigned_abs());
+    let bn = 32 - num_max.leading_zeros();
+    // num / area2 2^(SHIFT + cs) = |num| R 2^(SHIFT + cs - 63 - (ba - 32)), which is
+    // |num| R / 2^(bn + 1) for:
+    let cs = (63 + ba).wrapping_sub(32 + SHIFT + 1 + bn);
+    if an < 1 << 31 || !(1..=62).contains(&cs) {
+        return ([0; 4], 0);
+    }
+    let r = u64::from(div_64_32(u64::MAX >> 1, an));
+    let neg = area2 < 0;
+    let c = nums.map(|n| {
+        let q = ((u64::from(n.unsigned_abs()) * r + (1 << bn)) >> (bn + 1)) as i32;
+        if (n < 0) == neg {
+            q
+        } else {
+            q.wrapping_neg()
+        }
+    });
+    (c, cs)
+}
+
+/// The exact division by the doubled area behind [`PlaneSetup::plane_exact`].
+#[derive(Clone, Copy, Debug)]
+struct ExactDivisor {
     /// `area2 >> norm`, below 2^32 in magnitude: the gradients' divisor, so that their
     /// divisions take the 64-by-32-bit path (exact for `norm == 0`, relative error below
     /// 2^-31 otherwise: far under one unit of any gradient that fits `i32`).
     area_n: i64,
     norm: u32,
-    /// Offset of the reference pixel centre from vertex 0, 1/256 pixel.
-    ref_dx: i64,
-    ref_dy: i64,
     /// `|area_n|` as a reciprocal: every gradient divides by it.
     recip: Divisor32,
     /// `|area_n| / 2`, the rounding term of every gradient.
@@ -54,63 +240,26 @@ pub struct PlaneSetup {
     /// `norm > SHIFT`, which sends every gradient down the general path).
     k: u32,
     fast_below: u64,
-    /// Reference pixel.
-    pub px_ref: i32,
-    /// Reference row.
-    pub py_ref: i32,
 }
 
-impl PlaneSetup {
-    /// Prepares plane set-up for the triangle `v` (1/256-pixel units, [`ATTR_SUBPIXEL_BITS`],
-    /// guard band) whose doubled signed area is non-zero; the reference pixel is clamped into
-    /// `viewport`. Returns `None` for zero area.
-    pub fn new(v: [(i32, i32); 3], viewport: Rect) -> Option<Self> {
-        let (x0, y0) = (i64::from(v[0].0), i64::from(v[0].1));
-        let dx1 = i64::from(v[1].0) - x0;
-        let dy1 = i64::from(v[1].1) - y0;
-        let dx2 = i64::from(v[2].0) - x0;
-        let dy2 = i64::from(v[2].1) - y0;
-        let area2 = dx1 * dy2 - dx2 * dy1;
-        if area2 == 0 {
-            return None;
-        }
-        let px_ref =
-            (v[0].0 >> ATTR_SUBPIXEL_BITS).clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0));
-        let py_ref =
-            (v[0].1 >> ATTR_SUBPIXEL_BITS).clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0));
-        let one = 1i64 << ATTR_SUBPIXEL_BITS;
-        let half = one / 2;
+impl ExactDivisor {
+    /// `None` for zero area.
+    fn new(area2: i64) -> Option<Self> {
+        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         let norm = (64 - area2.unsigned_abs().leading_zeros()).saturating_sub(31);
         let area_n = area2 >> norm;
-        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         let k = SHIFT.saturating_sub(norm);
-        Some(PlaneSetup {
+        Some(ExactDivisor {
+            recip: Divisor32::new(area_n.unsigned_abs())?,
             half_d: area_n.unsigned_abs() / 2,
             k,
             fast_below: if norm > SHIFT { 0 } else { 1 << (62 - k) },
-            dx1,
-            dy1,
-            dx2,
-            dy2,
-            area2,
             area_n,
             norm,
-            ref_dx: i64::from(px_ref) * one + half - x0,
-            ref_dy: i64::from(py_ref) * one + half - y0,
-            recip: Divisor32::new(area_n.unsigned_abs())?,
-            px_ref,
-            py_ref,
         })
     }
 
-    /// Doubled signed area in 1/256-pixel units squared (positive: clockwise on a y-down
-    /// screen).
-    pub fn area2(&self) -> i64 {
-        self.area2
-    }
-
-    /// `n / area_n` rounded to nearest, ties away from zero (as [`div_round`]), through the
-    /// reciprocal when the area is small.
+    /// `n / area_n` rounded to nearest, ties away from zero, through the reciprocal.
     #[inline]
     fn div_round(&self, n: i64) -> i64 {
         let d = self.area_n.unsigned_abs();
@@ -157,31 +306,6 @@ impl PlaneSetup {
             return self.div_round(n << k);
         }
         long_div_round(n, self.area_n, k, |x| self.recip.div(x))
-    }
-
-    /// The plane through the attribute values `a` at the three vertices.
-    pub fn plane(&self, a: [i32; 3]) -> Plane {
-        let da1 = i64::from(a[1]) - i64::from(a[0]);
-        let da2 = i64::from(a[2]) - i64::from(a[0]);
-        // d a / d x and d a / d y in units per 1/256 pixel, times area2.
-        let nx = mul(da1, self.dy2) - mul(da2, self.dy1);
-        let ny = mul(da2, self.dx1) - mul(da1, self.dx2);
-        // Per pixel (<< ATTR_SUBPIXEL_BITS) with EXTRA more fraction bits.
-        let gx = self.gradient(nx);
-        let gy = self.gradient(ny);
-        // Value at the reference centre: a0 + (gx ref_dx + gy ref_dy) / 2^(EXTRA + ATTR_SUBPIXEL_BITS)
-        // (gx is per pixel, ref_dx in 1/256 pixel).
-        // Wrapping is exact modulo 2^64, hence modulo 2^32 after the shift.
-        let off = mul(gx, self.ref_dx).wrapping_add(mul(gy, self.ref_dy));
-        let round = 1i64 << (EXTRA + ATTR_SUBPIXEL_BITS - 1);
-        let a_ref =
-            i64::from(a[0]).wrapping_add(off.wrapping_add(round) >> (EXTRA + ATTR_SUBPIXEL_BITS));
-        let half = 1i64 << (EXTRA - 1);
-        Plane {
-            at_ref: a_ref as i32,
-            dx: (gx.wrapping_add(half) >> EXTRA) as i32,
-            dy: (gy.wrapping_add(half) >> EXTRA) as i32,
-        }
     }
 }
 
@@ -315,11 +439,67 @@ mod tests {
             let Some(ps) = PlaneSetup::new(v, vp) else {
                 continue;
             };
+            let div = ExactDivisor::new(ps.area2).unwrap();
             for _ in 0..8 {
                 let n = (next() as i64) >> (next() % 63);
-                assert_eq!(ps.gradient(n), ps.gradient_general(n), "{v:?} {n}");
+                assert_eq!(div.gradient(n), div.gradient_general(n), "{v:?} {n}");
             }
         }
+    }
+
+    /// The barycentric path agrees with the exactly rounded quotient: `dx`, `dy` within one
+    /// unit, the reference value within one unit plus the gradient's error over the
+    /// reference's distance from vertex 0.
+    #[test]
+    fn barycentric_planes_match_the_exact_quotient() {
+        let mut x = 0x51AF_D7ED_558C_CD27u64;
+        let vp = Rect::of_size(320, 240);
+        let (mut fast, mut worst) = (0u32, 0i64);
+        for _ in 0..40_000 {
+            let mut next = || {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                x
+            };
+            // Triangles from 1/16 pixel to the whole guard band, near and far from the
+            // viewport; attributes from a few units to the whole i32 range.
+            let scale = 6 + (next() % 19) as u32;
+            let base = ((next() % 400) as i32 - 40) << ATTR_SUBPIXEL_BITS;
+            let mut c = |b: i32| b + (((next() as i64 >> 40) as i32) >> (32 - scale));
+            let v = [(c(base), c(base)), (c(base), c(base)), (c(base), c(base))];
+            let bits = 2 + (next() % 30) as u32;
+            let mut a = || ((next() >> 32) as i32) >> (32 - bits);
+            let attr = [a(), a(), a()];
+            let Some(ps) = PlaneSetup::new(v, vp) else {
+                continue;
+            };
+            let (p, e) = (ps.plane(attr), ps.plane_exact(attr));
+            let d_max = (attr[1].wrapping_sub(attr[0]).unsigned_abs())
+                .max(attr[2].wrapping_sub(attr[0]).unsigned_abs());
+            if ps.cshift != 0 && d_max < ps.bary_below {
+                fast += 1;
+            }
+            assert!((p.dx - e.dx).abs() <= 1, "{v:?} {attr:?}: {p:?} vs {e:?}");
+            assert!((p.dy - e.dy).abs() <= 1, "{v:?} {attr:?}: {p:?} vs {e:?}");
+            // Gradient error (units/pixel, before rounding) times the distance in pixels.
+            let spread = (i64::from(attr[1]) - i64::from(attr[0])).abs()
+                + (i64::from(attr[2]) - i64::from(attr[0])).abs();
+            let err_px = spread as f64 / 2f64.powi((EXTRA + ps.cshift + 1) as i32) + 1.0 / 512.0;
+            let err_px = err_px.min(0.5 + 1.0 / 512.0);
+            let dist = (ps.ref_dx.unsigned_abs() + ps.ref_dy.unsigned_abs()) as f64
+                / f64::from(1 << ATTR_SUBPIXEL_BITS);
+            let d = i64::from(p.at_ref.wrapping_sub(e.at_ref)).abs();
+            assert!(
+                d as f64 <= 1.0 + err_px * dist,
+                "{v:?} {attr:?}: {p:?} vs {e:?}"
+            );
+            if dist <= 1.5 {
+                worst = worst.max(d);
+            }
+        }
+        assert!(fast > 20_000, "barycentric path taken {fast} times");
+        assert!(worst <= 1, "reference value off by {worst} near vertex 0");
     }
 
     #[test]
