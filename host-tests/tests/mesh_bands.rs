@@ -21,7 +21,7 @@ use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, Projection, Shading};
 use fixel::prelude::Cull;
 use fixel::scene::{
-    draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh,
+    draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
 };
 use fixel::surface::Binned;
 use fixel::surface::{BandRange, BandRenderer, Frame};
@@ -130,6 +130,10 @@ proptest! {
         let (ma, mb) = (meshes.0.mesh(), meshes.1.mesh());
         let (model_a, model_b) = (model(turn), model(turn.wrapping_mul(3)));
         let camera = demo::camera(20);
+        let (xf_a, xf_b) = (
+            MeshTransform::new(&model_a, &camera),
+            MeshTransform::new(&model_b, &camera),
+        );
         let light = DirectionalLight::default();
         let light = lit.then_some(&light);
         let clear = raw(0x1234);
@@ -149,8 +153,8 @@ proptest! {
         let mut depth = vec![0u16; w * h];
         let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
         f.clear(clear);
-        let px_walk = draw_mesh_walked(&d0, &ma, &model_a, &camera, light, &mut cache, &mut f).unwrap()
-            + draw_mesh_walked(&d1, &mb, &model_b, &camera, light, &mut cache, &mut f).unwrap();
+        let px_walk = draw_mesh_walked(&d0, &ma, &xf_a, light, &mut cache, &mut f).unwrap()
+            + draw_mesh_walked(&d1, &mb, &xf_b, light, &mut cache, &mut f).unwrap();
         let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
         prop_assert_eq!(px_walk, px_ref);
         prop_assert!(walked == expected, "walker differs from draw_mesh");
@@ -173,8 +177,8 @@ proptest! {
                 &mut ranges,
                 clear,
                 |sink| {
-                    let next = mesh_to_sink(&d0, 0, &ma, &model_a, &camera, light, &mut cache, 0, sink);
-                    mesh_to_sink(&d1, 1, &mb, &model_b, &camera, light, &mut cache, next, sink);
+                    let next = mesh_to_sink(&d0, 0, &ma, &xf_a, light, &mut cache, 0, sink);
+                    mesh_to_sink(&d1, 1, &mb, &xf_b, light, &mut cache, next, sink);
                 },
                 |b| {
                     let start = b.first_row() as usize * w;

@@ -16,6 +16,7 @@
 
 use super::vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS};
 use super::viewport::{Cull, Viewport};
+use crate::math::div::mul_wide_signed;
 
 /// Smallest clip-space `w` that reaches the rasterizer: 2^-8 (I16F16 bits 256). Keeps
 /// `1/w` bounded for any input, including a low-level caller's w-near-zero vertices.
@@ -220,11 +221,27 @@ fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
 /// Whether a projected triangle survives culling: non-zero area and, per `cull`, the
 /// wanted winding (sub-pixel coordinates, exact `i64` area).
 pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
-    let area2 = (i64::from(t[1].x) - i64::from(t[0].x)) * (i64::from(t[2].y) - i64::from(t[0].y))
-        - (i64::from(t[2].x) - i64::from(t[0].x)) * (i64::from(t[1].y) - i64::from(t[0].y));
+    // Inside the guard band the differences fit `i32` and the area is two `i32 x i32`
+    // products (no 64-bit library multiply on Cortex-M0+); any other input is decided
+    // exactly in `i128`.
+    let d = |a: i32, b: i32| a.checked_sub(b);
+    let sign = match (
+        d(t[1].x, t[0].x),
+        d(t[2].y, t[0].y),
+        d(t[2].x, t[0].x),
+        d(t[1].y, t[0].y),
+    ) {
+        (Some(ax), Some(by), Some(bx), Some(ay)) => {
+            mul_wide_signed(ax, by).cmp(&mul_wide_signed(bx, ay))
+        }
+        _ => {
+            let w = |a: i32, b: i32| i128::from(a) - i128::from(b);
+            (w(t[1].x, t[0].x) * w(t[2].y, t[0].y)).cmp(&(w(t[2].x, t[0].x) * w(t[1].y, t[0].y)))
+        }
+    };
     // y points down on screen, so counter-clockwise in NDC (front) has negative area.
-    let front = area2 < 0;
-    area2 != 0
+    let front = sign == core::cmp::Ordering::Less;
+    sign != core::cmp::Ordering::Equal
         && match cull {
             Cull::None => true,
             Cull::Back => front,

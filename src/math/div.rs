@@ -55,11 +55,59 @@ pub fn div_u64(n: u64, d: u64) -> u64 {
     n / d
 }
 
-/// `n / d` for `2^16 <= d < 2^32` and `n < d * 2^32` (so the quotient fits `u32`), exactly:
-/// two base-2^16 digits of long division on the normalized divisor, each estimated by a
-/// 32-bit division by the divisor's high half and corrected at most twice.
+/// `n / d` for `2^16 <= d < 2^32` and `n < d * 2^32` (so the quotient fits `u32`), exactly.
+///
+/// With a divide instruction: two base-2^16 digits of long division on the normalized
+/// divisor, each estimated by a 32-bit division by the divisor's high half and corrected at
+/// most twice. On ARMv6-M, where each of those divisions is a ~120-instruction library
+/// call: [`div_64_32_newton`].
 #[inline]
 pub(crate) fn div_64_32(n: u64, d: u32) -> u32 {
+    if HW_DIVIDE {
+        div_64_32_digits(n, d)
+    } else {
+        div_64_32_newton(n, d)
+    }
+}
+
+/// [`div_64_32`] without a division: the normalized divisor `v` (`2^31 <= v < 2^32`), a
+/// reciprocal `y <= 2^63 / v` from the 8-bit seed table and two Newton-Raphson steps in
+/// 32 x 32-bit products (Newton's iteration approaches `1/v` from below, so `y` never
+/// exceeds it: relative error ~2^-30), the quotient estimate `n y / 2^63 <= n / d`, then
+/// the exact remainder correction (a few steps up). Same result as the digit form (tested).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline]
+fn div_64_32_newton(n: u64, d: u32) -> u32 {
+    use super::recip::SEED;
+    use super::wide::{clz32, shl};
+    let s = clz32(d);
+    let v = d << s;
+    // n < d 2^32, so n << s < v 2^32 <= 2^64: no bits are lost.
+    let n = shl(n as i64, s) as u64;
+    let mut y = u32::from(SEED[((v >> 23) & 0xFF) as usize]) << 16;
+    for _ in 0..2 {
+        // v y ~ 2^63 (both < 2^32); 2^64 - v y ~ 2^63 (2 - v y / 2^63).
+        let t = mul_wide(v, y).wrapping_neg();
+        y = (mul_wide(y, (t >> 32) as u32) >> 31) as u32;
+    }
+    let (u1, u0) = ((n >> 32) as u32, n as u32);
+    // u1 < v and y <= 2^63 / v: u1 y < 2^63, no overflow.
+    let mut q = ((mul_wide(u1, y) + (mul_wide(u0, y) >> 32)) >> 31) as u32;
+    let mut r = n.wrapping_sub(mul_wide(q, v));
+    // q <= n / v: r is the true non-negative remainder of q; step up while it holds v.
+    while r >= u64::from(v) {
+        q = q.wrapping_add(1);
+        r -= u64::from(v);
+    }
+    q
+}
+
+/// The long-division form of [`div_64_32`].
+#[inline]
+fn div_64_32_digits(n: u64, d: u32) -> u32 {
     const B: u32 = 1 << 16;
     let s = d.leading_zeros();
     let v = d << s;
@@ -302,6 +350,47 @@ mod tests {
         }
         assert!(Divisor32::new(0).is_none() && Divisor32::new(1 << 32).is_none());
         assert_eq!(Divisor32::new(1).unwrap().div(u64::MAX), u64::MAX);
+    }
+
+    #[test]
+    fn the_newton_form_equals_the_plain_division() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let check = |n: u64, d: u32| {
+            if d >> 16 != 0 && n >> 32 < u64::from(d) {
+                assert_eq!(
+                    u64::from(div_64_32_newton(n, d)),
+                    n / u64::from(d),
+                    "{n} / {d}"
+                );
+            }
+        };
+        for d in [
+            1u32 << 16,
+            (1 << 16) + 1,
+            1 << 31,
+            (1 << 31) + 1,
+            u32::MAX,
+            u32::MAX - 1,
+        ] {
+            for n in [
+                0,
+                1,
+                u64::from(d) - 1,
+                u64::from(d),
+                (u64::from(d) << 32) - 1,
+            ] {
+                check(n, d);
+            }
+        }
+        for _ in 0..400_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let d = ((x >> 32) as u32) >> (x % 16);
+            let n = (x.rotate_left(23)) % (u64::from(d.max(1)) << 32);
+            check(n, d);
+            check((u64::from(d) << 32).wrapping_sub(1 + (x & 0xFF)), d);
+        }
     }
 
     #[test]

@@ -39,6 +39,7 @@ pub(crate) mod recip;
 pub(crate) mod trig;
 pub(crate) mod unit;
 pub(crate) mod vec;
+pub(crate) mod wide;
 
 /// The geometry scalar: I16F16 fixed point (±32768, resolution 2^-16).
 ///

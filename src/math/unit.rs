@@ -64,27 +64,6 @@ fn rsqrt_q16(s: u32) -> u32 {
     (r + (1 << 15)) as u32
 }
 
-/// `leading_zeros` of a non-zero `a`: the instruction where there is one; on ARMv6-M
-/// (Cortex-M0+, no `CLZ`) a five-step binary search instead of the `__clzsi2` call.
-#[inline(always)]
-fn leading_zeros(a: u32) -> u32 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
-        let (mut a, mut n) = (a, 0);
-        for s in [16u32, 8, 4, 2, 1] {
-            if a >> (32 - s) == 0 {
-                a <<= s;
-                n += s;
-            }
-        }
-        n
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
-        a.leading_zeros()
-    }
-}
-
 /// `v / |v|` in Q14 (`16384` = 1.0); the zero vector stays zero. Any component magnitude
 /// below `2^31` is accepted (`i32::MIN` is treated as `-i32::MAX`). Never panics.
 #[inline(always)]
@@ -95,7 +74,7 @@ pub fn unit_q14(v: [i32; 3]) -> [i32; 3] {
         return [0; 3];
     }
     // The OR has the largest component's top bit: shift it into [2^14, 2^15), rounding.
-    let sh = leading_zeros(a) as i32 - 17;
+    let sh = super::wide::clz32(a) as i32 - 17;
     let v = if sh >= 0 {
         v.map(|c| c << sh)
     } else {

@@ -7,7 +7,7 @@
 //! uses links exactly one copy.
 
 use super::interp::lambda_at;
-use super::setup::setup;
+use super::setup::{centroid, setup};
 use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
@@ -123,23 +123,16 @@ where
         ProjKind::Dynamic => params.kind,
         k => k,
     };
-    let Some(setup) = setup(
-        tri.map(|v| {
-            let (x, y) = v.attr_position();
-            (x, y, v.z, v.w)
-        }),
-        &vary,
-        vp,
-        kind,
-        D::TEST,
-        S::TEXCOORDS,
-        params.budget,
-    ) else {
+    let pos = tri.map(|v| {
+        let (x, y) = v.attr_position();
+        (x, y, v.z, v.w)
+    });
+    let Some(setup) = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget) else {
         return 0;
     };
     let tri_lambda = match S::TEXCOORDS {
         Some((a, b)) if S::LOD && shader.lod_granularity() == LodGranularity::Triangle => {
-            let (cx, cy) = setup.centroid;
+            let (cx, cy) = centroid(&pos, vp);
             lambda_at(&setup, cx, cy, a, b)
         }
         _ => 0,

@@ -36,8 +36,6 @@ pub(crate) struct TriSetup<V> {
     pub dx: V,
     /// Change per row down.
     pub dy: V,
-    /// The pixel nearest the centroid (where per-triangle level of detail is taken).
-    pub centroid: (i32, i32),
     /// True when the planes are affine (varyings) rather than perspective (varyings times
     /// `q`, and `q`): always for [`ProjKind::Affine`], per triangle for [`ProjKind::Adaptive`].
     pub affine: bool,
@@ -83,6 +81,20 @@ pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
 /// [`ScreenVertex::sub`](crate::geometry::ScreenVertex)), depth, clip `w`.
 pub(crate) type SetupVertex = (i32, i32, i32, i32);
 
+/// The pixel nearest the centroid of `pos`, clamped into `viewport` (where per-triangle
+/// level of detail is taken; computed only by the shaders that use it).
+pub(crate) fn centroid(pos: &[SetupVertex; 3], viewport: Rect) -> (i32, i32) {
+    // Coordinates lie in the guard band (|x|, |y| <= 2^24), so the sums fit i32 (a 64-bit
+    // division by a constant is still a library call on 32-bit cores).
+    let sum = |k: fn(&SetupVertex) -> i32| pos.iter().map(k).fold(0i32, i32::wrapping_add);
+    let cx = sum(|p| p.0) / (3 << ATTR_SUBPIXEL_BITS);
+    let cy = sum(|p| p.1) / (3 << ATTR_SUBPIXEL_BITS);
+    (
+        cx.clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
+        cy.clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
+    )
+}
+
 /// Builds the set-up, or `None` for a zero-area triangle. `texcoords` is the shader's
 /// [`Shader::TEXCOORDS`](crate::shading::Shader::TEXCOORDS) pair, `adaptive_budget` the
 /// adaptive projection's budget in I16F16 texel units.
@@ -107,15 +119,6 @@ pub(crate) fn setup<V: Varyings>(
         ],
         viewport,
     )?;
-    // Coordinates lie in the guard band (|x|, |y| <= 2^20), so the sums fit i32 (a 64-bit
-    // division by a constant is still a library call on 32-bit cores).
-    let sum = |k: fn(&SetupVertex) -> i32| pos.iter().map(k).fold(0i32, i32::wrapping_add);
-    let cx = sum(|p| p.0) / (3 << ATTR_SUBPIXEL_BITS);
-    let cy = sum(|p| p.1) / (3 << ATTR_SUBPIXEL_BITS);
-    let centroid = (
-        cx.clamp(viewport.x0, (viewport.x1 - 1).max(viewport.x0)),
-        cy.clamp(viewport.y0, (viewport.y1 - 1).max(viewport.y0)),
-    );
     let mut s = TriSetup {
         px_ref: ps.px_ref,
         py_ref: ps.py_ref,
@@ -124,7 +127,6 @@ pub(crate) fn setup<V: Varyings>(
         at_ref: V::zero(),
         dx: V::zero(),
         dy: V::zero(),
-        centroid,
         affine: true,
     };
     if depth {

@@ -13,6 +13,7 @@
 //! remainder fits `i32`; the one `i64` division is at [`EdgeWalker::new`].
 
 use super::SUBPIXEL_ONE;
+use crate::math::div::mul_wide_signed;
 use crate::math::div_floor_i64;
 
 /// Walks one edge row by row; see the module docs for the arithmetic.
@@ -60,17 +61,20 @@ impl EdgeWalker {
     /// Starts the walk at pixel row `py` for the edge `top -> bottom` (sub-pixel units,
     /// `top.1 < bottom.1`, both inside the guard band).
     pub fn new(top: (i32, i32), bottom: (i32, i32), py: i32) -> Self {
-        let (x0, y0) = (i64::from(top.0), i64::from(top.1));
-        let dx = i64::from(bottom.0) - x0;
-        let dy = i64::from(bottom.1) - y0;
+        // Inside the guard band every difference and product operand fits `i32`; the two
+        // products are `i32 x i32 -> i64` (no 64-bit library multiply on Cortex-M0+).
+        let (x0, y0) = top;
+        let dx = bottom.0.wrapping_sub(x0);
+        let dy = bottom.1.wrapping_sub(y0);
         debug_assert!(dy > 0, "edges are walked top to bottom");
-        let one = i64::from(SUBPIXEL_ONE);
+        let one = SUBPIXEL_ONE;
         let half = one / 2;
-        let den = one * dy.max(1);
-        let yc = i64::from(py) * one + half;
-        let n = (x0 - half) * dy + (yc - y0) * dx;
+        let den = i64::from(one) * i64::from(dy.max(1));
+        let yc = py.wrapping_mul(one).wrapping_add(half);
+        let n = mul_wide_signed(x0.wrapping_sub(half), dy)
+            .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx));
         let (x, rem) = ceil_div_rem(n, den);
-        let (step, step_rem) = ceil_div_rem(one * dx, den);
+        let (step, step_rem) = ceil_div_rem(i64::from(one) * i64::from(dx), den);
         EdgeWalker {
             x: x as i32,
             rem: rem as i32,

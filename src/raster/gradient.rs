@@ -33,7 +33,8 @@
 //!   across the viewport.
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
-use crate::math::div::{div_64_32, mul_wide_signed};
+use crate::math::div::{div_64_32, mul_wide, mul_wide_signed};
+use crate::math::wide;
 use crate::math::Divisor32;
 
 /// Extra fraction bits of the set-up gradient.
@@ -65,6 +66,8 @@ pub struct PlaneSetup {
     /// barycentric gradient within half a unit per pixel of the exact one (before both are
     /// rounded); larger ones take the exact path.
     bary_below: u32,
+    /// `2^(cshift - 1)`, the rounding term of the barycentric gradients.
+    bary_round: i64,
     /// Reference pixel.
     pub px_ref: i32,
     /// Reference row.
@@ -103,6 +106,7 @@ impl PlaneSetup {
             bary,
             cshift,
             bary_below: 1u32 << (EXTRA + cshift).saturating_sub(4).min(31),
+            bary_round: wide::shl(1, cshift.wrapping_sub(1)),
             px_ref,
             py_ref,
         })
@@ -134,9 +138,9 @@ impl PlaneSetup {
             // Each product is below 2^62 in magnitude: the sums fit i64.
             let gxw = mul_wide_signed(d1, c[0]).wrapping_add(mul_wide_signed(d2, c[1]));
             let gyw = mul_wide_signed(d1, c[2]).wrapping_add(mul_wide_signed(d2, c[3]));
-            let round = 1i64 << (cs - 1);
-            let gx = gxw.wrapping_add(round) >> cs;
-            let gy = gyw.wrapping_add(round) >> cs;
+            let round = self.bary_round;
+            let gx = wide::sar(gxw.wrapping_add(round), cs);
+            let gy = wide::sar(gyw.wrapping_add(round), cs);
             return self.finish(a[0], gx, gy);
         }
         self.plane_exact(a)
@@ -196,24 +200,24 @@ impl PlaneSetup {
 fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
     const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
     let a = area2.unsigned_abs();
-    let ba = 64 - a.leading_zeros();
+    let ba = 64 - wide::clz64(a);
     let an = if ba >= 32 {
-        (a >> (ba - 32)) as u32
+        wide::shr(a, ba - 32) as u32
     } else {
-        (a << (32 - ba)) as u32
+        (a as u32).wrapping_shl(32 - ba)
     };
     let num_max = nums.iter().fold(0u32, |m, n| m | n.unsigned_abs());
-    let bn = 32 - num_max.leading_zeros();
+    let bn = 32 - wide::clz32(num_max);
     // num / area2 2^(SHIFT + cs) = |num| R 2^(SHIFT + cs - 63 - (ba - 32)), which is
     // |num| R / 2^(bn + 1) for:
     let cs = (63 + ba).wrapping_sub(32 + SHIFT + 1 + bn);
     if an < 1 << 31 || !(1..=62).contains(&cs) {
         return ([0; 4], 0);
     }
-    let r = u64::from(div_64_32(u64::MAX >> 1, an));
+    let r = div_64_32(u64::MAX >> 1, an);
     let neg = area2 < 0;
     let c = nums.map(|n| {
-        let q = ((u64::from(n.unsigned_abs()) * r + (1 << bn)) >> (bn + 1)) as i32;
+        let q = wide::shr(mul_wide(n.unsigned_abs(), r).wrapping_add(1 << bn), bn + 1) as i32;
         if (n < 0) == neg {
             q
         } else {

@@ -43,7 +43,9 @@ pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
 pub use tangent::{tangents, Tangent};
-pub use walk::{draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, TriangleOut};
+pub use walk::{
+    draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, MeshTransform, TriangleOut,
+};
 mod depth_sort;
 mod jitter;
 pub use depth_sort::sort_back_to_front;

@@ -128,10 +128,35 @@ pub trait TriangleOut {
     fn fresh(&self) -> bool {
         true
     }
+    /// Whether triangle `id` is known to pass the cull test (a band pass after the binning
+    /// pass pushed it, on the same screen positions): the walker then skips the test.
+    fn kept(&self, _id: usize) -> bool {
+        false
+    }
     /// Whether pushed triangles need lighting (else their colour may stay white).
     fn attributes(&self) -> bool;
     /// One screen triangle of triangle `id`.
     fn triangle(&mut self, id: usize, tri: &ScreenTriangle);
+}
+
+/// A mesh's model-view and model-view-projection matrices (two 4x4 products: about 2,500
+/// instructions on Cortex-M0+). Build it once per mesh and frame and hand it to every band
+/// pass of [`mesh_to_sink`], rather than multiplying the matrices again in each band.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshTransform {
+    model_view: Mat4,
+    mvp: Mat4,
+}
+
+impl MeshTransform {
+    /// `camera.view * model` and `camera.projection * camera.view * model`.
+    pub fn new(model: &Mat4, camera: &Camera) -> Self {
+        let model_view = camera.view.mul(model);
+        MeshTransform {
+            mvp: camera.projection.mul(&model_view),
+            model_view,
+        }
+    }
 }
 
 /// The matrices and options of one mesh draw.
@@ -152,15 +177,13 @@ struct Ctx<'m, 'l> {
 pub fn walk_mesh<C: TargetColor>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
-    model: &Mat4,
-    camera: &Camera,
+    transform: &MeshTransform,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     first_id: usize,
     out: &mut impl TriangleOut,
 ) -> usize {
-    let model_view = camera.view.mul(model);
-    let mvp = camera.projection.mul(&model_view);
+    let MeshTransform { model_view, mvp } = *transform;
     let coloured = matches!(
         draw.mode().shading,
         Shading::Modulate | Shading::ModulateIntensity | Shading::Gouraud
@@ -234,7 +257,7 @@ pub fn walk_mesh<C: TargetColor>(
             continue;
         }
         let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
-        if !keeps(&tri, cull) {
+        if !out.kept(id) && !keeps(&tri, cull) {
             continue;
         }
         if full {
@@ -328,14 +351,14 @@ fn clipped<C: TargetColor>(
 /// Sends a mesh's triangles to a band renderer's sink (see
 /// [`BandRenderer::render_spans`](crate::surface::BandRenderer::render_spans)): triangles
 /// the band does not need are skipped before their vertices are transformed. `draw` must be
-/// `draws[draw_index]` of the renderer. Returns the next free triangle id.
+/// `draws[draw_index]` of the renderer; `transform` is built once per frame, outside the
+/// band closure. Returns the next free triangle id.
 #[allow(clippy::too_many_arguments)]
 pub fn mesh_to_sink<C: TargetColor>(
     draw: &Draw<'_, C>,
     draw_index: u8,
     mesh: &Mesh<'_>,
-    model: &Mat4,
-    camera: &Camera,
+    transform: &MeshTransform,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     first_id: usize,
@@ -355,6 +378,9 @@ pub fn mesh_to_sink<C: TargetColor>(
         fn fresh(&self) -> bool {
             self.sink.fresh()
         }
+        fn kept(&self, id: usize) -> bool {
+            self.sink.binned(id)
+        }
         fn attributes(&self) -> bool {
             self.sink.attributes()
         }
@@ -366,7 +392,7 @@ pub fn mesh_to_sink<C: TargetColor>(
         sink,
         draw: draw_index,
     };
-    walk_mesh(draw, mesh, model, camera, light, cache, first_id, &mut out)
+    walk_mesh(draw, mesh, transform, light, cache, first_id, &mut out)
 }
 
 /// Draws `mesh` into `target` through the vertex cache (`cache`: one entry per vertex for
@@ -375,8 +401,7 @@ pub fn mesh_to_sink<C: TargetColor>(
 pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
-    model: &Mat4,
-    camera: &Camera,
+    transform: &MeshTransform,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     target: &mut T,
@@ -404,6 +429,6 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
         target,
         pixels: 0,
     };
-    walk_mesh(draw, mesh, model, camera, light, cache, 0, &mut out);
+    walk_mesh(draw, mesh, transform, light, cache, 0, &mut out);
     Ok(out.pixels)
 }

@@ -17,6 +17,7 @@
 //! case `extreme_minification_thousands_of_repeats` checks the border still matches).
 
 use super::Varyings;
+use crate::math::wide;
 use crate::texture::{Lod, MipTexture, TexSampler, Texture, Wrap, WrapMode};
 use crate::Error;
 
@@ -122,16 +123,29 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             V::N
         );
         let get = |v: &V, k: usize| v.as_slice().get(k).copied().unwrap_or(0);
-        let mut tu = texel_coords(
+        let (u, v) = (
             vary.each_ref().map(|v| get(v, pair.0)),
-            self.base.log2_width(),
-            self.wu.mode(),
-        );
-        let mut tv = texel_coords(
             vary.each_ref().map(|v| get(v, pair.1)),
-            self.base.log2_height(),
-            self.wv.mode(),
         );
+        // The common case in 32-bit arithmetic (the same integers; the 64-bit path costs
+        // library shifts on Cortex-M0+, once per triangle and band).
+        if let (Some(tu), Some(tv)) = (
+            texel_coords_small(u, self.base.log2_width(), self.wu.mode()),
+            texel_coords_small(v, self.base.log2_height(), self.wv.mode()),
+        ) {
+            for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
+                let s = v.as_mut_slice();
+                if let Some(x) = s.get_mut(pair.0) {
+                    *x = a;
+                }
+                if let Some(x) = s.get_mut(pair.1) {
+                    *x = b;
+                }
+            }
+            return TexTriangle { shift: 0 };
+        }
+        let mut tu = texel_coords(u, self.base.log2_width(), self.wu.mode());
+        let mut tv = texel_coords(v, self.base.log2_height(), self.wv.mode());
         const LIM: i64 = 1 << 30;
         for (t, w) in [(&mut tu, self.wu.mode()), (&mut tv, self.wv.mode())] {
             if !periodic(w) {
@@ -146,14 +160,14 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             .map(|x| x.unsigned_abs())
             .max()
             .unwrap_or(0);
-        let shift = (64 - max.leading_zeros()).saturating_sub(30);
+        let shift = (64 - wide::clz64(max)).saturating_sub(30);
         for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
             let s = v.as_mut_slice();
             if let Some(x) = s.get_mut(pair.0) {
-                *x = (a >> shift) as i32;
+                *x = wide::sar(a, shift) as i32;
             }
             if let Some(x) = s.get_mut(pair.1) {
-                *x = (b >> shift) as i32;
+                *x = wide::sar(b, shift) as i32;
             }
         }
         TexTriangle { shift: shift as u8 }
@@ -198,16 +212,68 @@ fn periodic(w: Wrap) -> bool {
     matches!(w, Wrap::Repeat | Wrap::MirroredRepeat)
 }
 
+/// [`texel_coords`] when every coordinate is below 2^29 texel units and the rebased ones
+/// below 2^30 (so no clamp or shift applies): the same integers in `i32`; `None` otherwise.
+#[inline(always)]
+fn texel_coords_small(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> Option<[i32; 3]> {
+    let lim = 1i32 << 29u32.saturating_sub(log2_size);
+    if uv.iter().any(|&x| x >= lim || x <= -lim) {
+        return None;
+    }
+    // |x| < 2^(29 - log2_size): the shifted values are below 2^29 in magnitude.
+    let mut t = uv.map(|x| x << log2_size.min(29));
+    if periodic(wrap) {
+        let period_log2 = 16 + log2_size + u32::from(wrap == Wrap::MirroredRepeat);
+        if period_log2 > 29 {
+            return None;
+        }
+        let min = t[0].min(t[1]).min(t[2]);
+        // min - 2^29 < base <= min, and x - base < 2^30 + 2^29: no overflow.
+        let base = (min >> period_log2) << period_log2;
+        t = t.map(|x| x - base);
+    }
+    t.iter().all(|x| x.unsigned_abs() < 1 << 30).then_some(t)
+}
+
 /// Texel coordinates (I16F16 bits) of the three vertices on one axis, rebased.
 fn texel_coords(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> [i64; 3] {
-    let mut t = uv.map(|x| i64::from(x) << log2_size);
+    let mut t = uv.map(|x| wide::shl(i64::from(x), log2_size));
     if periodic(wrap) {
         let period_log2 = 16 + log2_size + u32::from(wrap == Wrap::MirroredRepeat);
         let min = t[0].min(t[1]).min(t[2]);
-        let base = (min >> period_log2) << period_log2;
+        let base = wide::shl(wide::sar(min, period_log2), period_log2);
         for x in &mut t {
             *x -= base;
         }
     }
     t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The 32-bit path gives the 64-bit path's integers whenever it applies.
+    #[test]
+    fn small_texel_coords_equal_the_wide_ones() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut taken = 0;
+        for i in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let bits = 1 + (x % 32) as u32;
+            let c = |k: u32| ((x.rotate_left(k * 21) as u32 as i32) >> (32 - bits)).wrapping_add(i);
+            let uv = [c(1), c(2), c(3)];
+            let l = (x >> 40) as u32 % 13;
+            let wrap =
+                [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToEdge][(x >> 50) as usize % 3];
+            if let Some(t) = texel_coords_small(uv, l, wrap) {
+                taken += 1;
+                let wide = texel_coords(uv, l, wrap);
+                assert_eq!(t.map(i64::from), wide, "{uv:?} << {l} {wrap:?}");
+            }
+        }
+        assert!(taken > 50_000, "{taken}");
+    }
 }

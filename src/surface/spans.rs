@@ -184,6 +184,17 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
         }
     }
 
+    /// True in a band pass for a triangle the binning pass pushed (it has a band range): it
+    /// passed the cull test then, on the same screen positions, so the geometry may skip
+    /// the test now.
+    #[inline]
+    pub fn binned(&self, id: usize) -> bool {
+        match &self.pass {
+            Pass::Bin { .. } => false,
+            Pass::Band { ranges, .. } => ranges.get(id).is_some_and(|r| !r.is_empty()),
+        }
+    }
+
     /// Whether the screen triangles pushed now need their attributes (texture coordinates
     /// and lighting): `false` in the binning pass once the bins are full, where only their
     /// rows count, so the geometry may skip per-vertex lighting.

@@ -9,7 +9,9 @@ use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
 use fixel::pipeline::{DepthLess, ModulateIntensity, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
-use fixel::scene::{draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh};
+use fixel::scene::{
+    draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
+};
 use fixel::surface::BandRange;
 use fixel::surface::{BandStats, Binned};
 use fixel::texture::{Bilinear, Nearest, Repeat};
@@ -201,7 +203,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    let camera = demo::camera(far);
+    let transform = MeshTransform::new(model, &demo::camera(far));
     let light = DirectionalLight::default();
     let light = if lit { Some(&light) } else { None };
     let mut sum = Fnv1a::default();
@@ -210,8 +212,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
         Target::Whole(w) => {
             let mut frame = Frame::new(&mut w.color, W, H)?.with_depth(&mut w.depth)?;
             frame.clear(Rgb565::new(0, 0, 0));
-            let pixels =
-                draw_mesh_walked(draw, mesh, model, &camera, light, &mut w.cache, &mut frame)?;
+            let pixels = draw_mesh_walked(draw, mesh, &transform, light, &mut w.cache, &mut frame)?;
             pause();
             sum.pixels(frame.pixels());
             resume();
@@ -233,7 +234,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
         &mut buf.ranges,
         Rgb565::new(0, 0, 0),
         |sink| {
-            mesh_to_sink(draw, 0, mesh, model, &camera, light, cache, 0, sink);
+            mesh_to_sink(draw, 0, mesh, &transform, light, cache, 0, sink);
         },
         |band| {
             pause();

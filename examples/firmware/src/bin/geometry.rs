@@ -22,7 +22,9 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo::{self, MeshData};
 use fixel::geometry::{clip_and_project, keeps, prepare, ClipVertex, ScreenTriangle, ScreenVertex};
 use fixel::prelude::*;
-use fixel::scene::{vertex_intensity, walk_mesh, CachedVertex, DirectionalLight, TriangleOut};
+use fixel::scene::{
+    vertex_intensity, walk_mesh, CachedVertex, DirectionalLight, MeshTransform, TriangleOut,
+};
 use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln, report_begin, scenes};
 
 const MAXV: usize = demo::FINE_SPHERE_VERTICES;
@@ -174,8 +176,7 @@ fn stages<const V: usize, const T: usize>(
         walk_mesh(
             &draw,
             &mesh,
-            model,
-            &camera,
+            &MeshTransform::new(model, &camera),
             Some(&light),
             &mut s.cache,
             0,

@@ -1,0 +1,169 @@
+//! 64-bit shifts and leading-zero counts that stay inline on every core.
+//!
+//! On ARMv6-M (Cortex-M0/M0+) a variable shift of an `i64` or `u64` compiles to a library
+//! call (`__aeabi_llsl`, `__aeabi_llsr`, `__aeabi_lasr`: a call, a return and a dozen
+//! instructions) and `leading_zeros` to `__clzsi2` (no `CLZ` instruction). The per-triangle
+//! set-up does a few dozen of each, once per triangle and band. These functions compute the
+//! same bits from 32-bit halves there (a branch and three or four 32-bit shifts) and are the
+//! plain operators everywhere else, where the compiler already emits short inline sequences.
+//!
+//! Every function takes a shift below 64 (larger shifts are reduced modulo 64, as
+//! `wrapping_shl` does) and never panics.
+
+/// True on ARMv6-M, where the 32-bit-half forms are used.
+const SPLIT: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+
+/// `x << s` (wrapping, `s` modulo 64).
+#[inline(always)]
+pub(crate) fn shl(x: i64, s: u32) -> i64 {
+    if SPLIT {
+        split::shl(x, s)
+    } else {
+        x.wrapping_shl(s)
+    }
+}
+
+/// `x >> s`, arithmetic (`s` modulo 64).
+#[inline(always)]
+pub(crate) fn sar(x: i64, s: u32) -> i64 {
+    if SPLIT {
+        split::sar(x, s)
+    } else {
+        x.wrapping_shr(s)
+    }
+}
+
+/// `x >> s`, logical (`s` modulo 64).
+#[inline(always)]
+pub(crate) fn shr(x: u64, s: u32) -> u64 {
+    if SPLIT {
+        split::shr(x, s)
+    } else {
+        x.wrapping_shr(s)
+    }
+}
+
+/// `a.leading_zeros()`: the instruction where there is one; on ARMv6-M a five-step binary
+/// search instead of the `__clzsi2` call.
+#[inline(always)]
+pub(crate) fn clz32(a: u32) -> u32 {
+    if SPLIT {
+        split::clz32(a)
+    } else {
+        a.leading_zeros()
+    }
+}
+
+/// `a.leading_zeros()` for a `u64`.
+#[inline(always)]
+pub(crate) fn clz64(a: u64) -> u32 {
+    let hi = (a >> 32) as u32;
+    if hi != 0 {
+        clz32(hi)
+    } else {
+        32 + clz32(a as u32)
+    }
+}
+
+/// The 32-bit-half forms (compiled everywhere, so the host tests them).
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+mod split {
+    #[inline(always)]
+    pub fn shl(x: i64, s: u32) -> i64 {
+        let s = s & 63;
+        let (hi, lo) = ((x >> 32) as u32, x as u32);
+        let (hi, lo) = if s == 0 {
+            (hi, lo)
+        } else if s < 32 {
+            ((hi << s) | (lo >> (32 - s)), lo << s)
+        } else {
+            (lo << (s - 32), 0)
+        };
+        ((u64::from(hi) << 32) | u64::from(lo)) as i64
+    }
+
+    #[inline(always)]
+    pub fn sar(x: i64, s: u32) -> i64 {
+        let s = s & 63;
+        let (hi, lo) = ((x >> 32) as i32, x as u32);
+        let (hi, lo) = if s == 0 {
+            (hi, lo)
+        } else if s < 32 {
+            (hi >> s, (lo >> s) | ((hi as u32) << (32 - s)))
+        } else {
+            (hi >> 31, (hi >> (s - 32)) as u32)
+        };
+        (i64::from(hi) << 32) | i64::from(lo)
+    }
+
+    #[inline(always)]
+    pub fn shr(x: u64, s: u32) -> u64 {
+        let s = s & 63;
+        let (hi, lo) = ((x >> 32) as u32, x as u32);
+        let (hi, lo) = if s == 0 {
+            (hi, lo)
+        } else if s < 32 {
+            (hi >> s, (lo >> s) | (hi << (32 - s)))
+        } else {
+            (0, hi >> (s - 32))
+        };
+        (u64::from(hi) << 32) | u64::from(lo)
+    }
+
+    #[inline(always)]
+    pub fn clz32(a: u32) -> u32 {
+        if a == 0 {
+            return 32;
+        }
+        let (mut a, mut n) = (a, 0);
+        for s in [16u32, 8, 4, 2, 1] {
+            if a >> (32 - s) == 0 {
+                a <<= s;
+                n += s;
+            }
+        }
+        n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_forms_match_the_operators() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = x >> (x % 64);
+            for s in [
+                0,
+                1,
+                5,
+                31,
+                32,
+                33,
+                47,
+                63,
+                (x >> 58) as u32,
+                64 + (x >> 59) as u32,
+            ] {
+                for w in [v, !v] {
+                    assert_eq!(split::shl(w as i64, s), (w as i64).wrapping_shl(s));
+                    assert_eq!(split::sar(w as i64, s), (w as i64).wrapping_shr(s));
+                    assert_eq!(split::shr(w, s), w.wrapping_shr(s));
+                    assert_eq!(shl(w as i64, s), (w as i64).wrapping_shl(s));
+                }
+            }
+            assert_eq!(clz64(v), v.leading_zeros());
+            assert_eq!(split::clz32(v as u32), (v as u32).leading_zeros());
+        }
+        assert_eq!(clz64(0), 64);
+        assert_eq!(split::clz32(0), 32);
+    }
+}
