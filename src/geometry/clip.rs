@@ -17,6 +17,7 @@
 use super::vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS};
 use super::viewport::{Cull, Viewport};
 use crate::math::div::mul_wide_signed;
+use crate::math::div_u64;
 
 /// Smallest clip-space `w` that reaches the rasterizer: 2^-8 (I16F16 bits 256). Keeps
 /// `1/w` bounded for any input, including a low-level caller's w-near-zero vertices.
@@ -93,7 +94,10 @@ fn intersect<const N: usize>(
         num >>= 1;
         den >>= 1;
     }
-    let t = (num << 30) / den.max(1); // Q30 in [0, 1]
+    // Q30 in [0, 1]: 0 <= num <= den < 2^32 (the inside end's distance over the edge's),
+    // so the unsigned 32-bit paths of `div_u64` give the same quotient as `i64` `/` without
+    // linking the 64-bit library division.
+    let t = div_u64((num.max(0) << 30) as u64, den.max(1) as u64) as i64;
     let mut out = *inside;
     for k in 0..4 {
         out.p[k] = lerp_q30(inside.p[k], outside.p[k], t);
@@ -101,7 +105,7 @@ fn intersect<const N: usize>(
     let (w_in, w_out, w_t) = (inside.p[3], outside.p[3], out.p[3]);
     let t = if noperspective && w_in > 0 && w_out > 0 && w_t > 0 {
         // t w_out < 2^61; the quotient is in [0, 2^30] up to rounding.
-        ((t * i64::from(w_out)) / i64::from(w_t)).clamp(0, 1 << 30)
+        (div_u64((t * i64::from(w_out)) as u64, w_t as u64).min(1 << 30)) as i64
     } else {
         t
     };

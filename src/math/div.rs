@@ -52,7 +52,29 @@ pub fn div_u64(n: u64, d: u64) -> u64 {
     if d >> 32 == 0 && n >> 32 < d {
         return u64::from(div_64_32(n, d as u32));
     }
-    n / d
+    div_wide(n, d)
+}
+
+/// [`div_u64`]'s rare cases (a divisor of 2^32 or more, or a quotient of 2^32 or more), out
+/// of line and without the 64-bit library division (which links ~1 KB of library code on
+/// 32-bit cores): restoring binary long division, one quotient bit per step from the
+/// divisor's first fitting shift (at most 64 steps, a few instructions each).
+#[inline(never)]
+fn div_wide(n: u64, d: u64) -> u64 {
+    // The quotient has at most `clz(d) - clz(n) + 1` bits.
+    let s = d.leading_zeros().saturating_sub(n.leading_zeros());
+    let (mut r, mut q) = (n, 0u64);
+    let mut dd = d << s;
+    let mut bit = 1u64 << s;
+    while bit != 0 {
+        if r >= dd {
+            r -= dd;
+            q |= bit;
+        }
+        dd >>= 1;
+        bit >>= 1;
+    }
+    q
 }
 
 /// `n / d` for `2^16 <= d < 2^32` and `n < d * 2^32` (so the quotient fits `u32`), exactly.
@@ -448,6 +470,10 @@ mod tests {
             65537,
             1 << 31,
             u32::MAX as u64,
+            1 << 32,
+            (1 << 32) + 1,
+            (1 << 63) + 12345,
+            u64::MAX,
         ];
         let ns = [
             0u64,

@@ -34,8 +34,8 @@
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
 use crate::math::div::{div_64_32, mul_wide, mul_wide_signed};
+use crate::math::div_u64;
 use crate::math::wide;
-use crate::math::Divisor32;
 
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
@@ -227,47 +227,30 @@ fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
     (c, cs)
 }
 
-/// The exact division by the doubled area behind [`PlaneSetup::plane_exact`].
+/// The exact division by the doubled area behind [`PlaneSetup::plane_exact`]: the rare
+/// path (slivers, large attribute differences), so it is written for flash, not speed
+/// ([`div_u64`] for every quotient).
 #[derive(Clone, Copy, Debug)]
 struct ExactDivisor {
-    /// `area2 >> norm`, below 2^32 in magnitude: the gradients' divisor, so that their
-    /// divisions take the 64-by-32-bit path (exact for `norm == 0`, relative error below
-    /// 2^-31 otherwise: far under one unit of any gradient that fits `i32`).
+    /// `area2 >> norm`, below 2^32 in magnitude: the gradients' divisor (exact for
+    /// `norm == 0`, relative error below 2^-31 otherwise: far under one unit of any
+    /// gradient that fits `i32`).
     area_n: i64,
     norm: u32,
-    /// `|area_n|` as a reciprocal: every gradient divides by it.
-    recip: Divisor32,
-    /// `|area_n| / 2`, the rounding term of every gradient.
-    half_d: u64,
-    /// The common gradient path (`norm <= SHIFT`): the numerator's shift `SHIFT - norm`,
-    /// and the magnitude below which the shifted numerator fits `i64` (`0` when
-    /// `norm > SHIFT`, which sends every gradient down the general path).
-    k: u32,
-    fast_below: u64,
 }
 
 impl ExactDivisor {
     /// `None` for zero area.
     fn new(area2: i64) -> Option<Self> {
-        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         let norm = (64 - area2.unsigned_abs().leading_zeros()).saturating_sub(31);
         let area_n = area2 >> norm;
-        let k = SHIFT.saturating_sub(norm);
-        Some(ExactDivisor {
-            recip: Divisor32::new(area_n.unsigned_abs())?,
-            half_d: area_n.unsigned_abs() / 2,
-            k,
-            fast_below: if norm > SHIFT { 0 } else { 1 << (62 - k) },
-            area_n,
-            norm,
-        })
+        (area_n != 0).then_some(ExactDivisor { area_n, norm })
     }
 
-    /// `n / area_n` rounded to nearest, ties away from zero, through the reciprocal.
-    #[inline]
+    /// `n / area_n` rounded to nearest, ties away from zero.
     fn div_round(&self, n: i64) -> i64 {
         let d = self.area_n.unsigned_abs();
-        let q = self.recip.div(n.unsigned_abs().wrapping_add(d / 2)) as i64;
+        let q = div_u64(n.unsigned_abs().wrapping_add(d / 2), d) as i64;
         if (n < 0) == (self.area_n < 0) {
             q
         } else {
@@ -276,30 +259,10 @@ impl ExactDivisor {
     }
 
     /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
-    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`: one division by a divisor below 2^32 when
-    /// the shifted numerator fits `i64` (the common case), else a long division; for huge
-    /// triangles (`norm > SHIFT`) the numerator is shifted right instead. Wraps modulo 2^64
-    /// where the result does not fit.
-    #[inline(always)]
+    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`: one division when the shifted numerator
+    /// fits `i64`, else a long division; for huge triangles (`norm > SHIFT`) the numerator
+    /// is shifted right instead. Wraps modulo 2^64 where the result does not fit.
     fn gradient(&self, n: i64) -> i64 {
-        // The common case, with the shift, its bound and the rounding term precomputed
-        // per triangle: the same arithmetic as `div_round(n << k)` in the general path.
-        let m = n.unsigned_abs();
-        if m < self.fast_below {
-            let q = self.recip.div((m << self.k).wrapping_add(self.half_d)) as i64;
-            if (n < 0) == (self.area_n < 0) {
-                q
-            } else {
-                q.wrapping_neg()
-            }
-        } else {
-            self.gradient_general(n)
-        }
-    }
-
-    /// [`Self::gradient`] for any numerator (out of line: huge triangles and numerators).
-    #[inline(never)]
-    fn gradient_general(&self, n: i64) -> i64 {
         const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         if self.norm > SHIFT {
             let k = (self.norm - SHIFT).min(62);
@@ -309,7 +272,8 @@ impl ExactDivisor {
         if n.unsigned_abs() < 1 << (62 - k) {
             return self.div_round(n << k);
         }
-        long_div_round(n, self.area_n, k, |x| self.recip.div(x))
+        let d = self.area_n.unsigned_abs();
+        long_div_round(n, self.area_n, k, |x| div_u64(x, d))
     }
 }
 
@@ -419,17 +383,13 @@ mod tests {
         a[0] as f64 + l1 * (a[1] as f64 - a[0] as f64) + l2 * (a[2] as f64 - a[0] as f64)
     }
 
-    /// The per-triangle fast path of `gradient` is the general path's arithmetic with its
-    /// shift and rounding precomputed: the same integers for every numerator.
+    /// The exact path's gradient is `n 2^(SHIFT - norm) / area_n` rounded to nearest, ties
+    /// away from zero, as `i128` arithmetic gives it.
     #[test]
-    fn fast_gradient_equals_general_path() {
+    fn exact_gradient_is_the_rounded_quotient() {
+        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let vp = Rect {
-            x0: 0,
-            y0: 0,
-            x1: 320,
-            y1: 240,
-        };
+        let vp = Rect::of_size(320, 240);
         for _ in 0..20_000 {
             let mut next = || {
                 x ^= x << 13;
@@ -437,7 +397,7 @@ mod tests {
                 x ^= x << 17;
                 x
             };
-            let scale = 8 + (next() % 13) as u32;
+            let scale = 8 + (next() % 17) as u32;
             let mut c = || ((next() as i64 >> 40) as i32) >> (32 - scale);
             let v = [(c(), c()), (c(), c()), (c(), c())];
             let Some(ps) = PlaneSetup::new(v, vp) else {
@@ -446,7 +406,20 @@ mod tests {
             let div = ExactDivisor::new(ps.area2).unwrap();
             for _ in 0..8 {
                 let n = (next() as i64) >> (next() % 63);
-                assert_eq!(div.gradient(n), div.gradient_general(n), "{v:?} {n}");
+                let (nn, d) = if div.norm > SHIFT {
+                    let k = (div.norm - SHIFT).min(62);
+                    (
+                        i128::from((n >> k) + ((n >> (k - 1)) & 1)),
+                        i128::from(div.area_n),
+                    )
+                } else {
+                    (i128::from(n) << (SHIFT - div.norm), i128::from(div.area_n))
+                };
+                let q = nn / d;
+                let r = nn - q * d;
+                let away = if (nn < 0) == (d < 0) { 1 } else { -1 };
+                let want = if 2 * r.abs() >= d.abs() { q + away } else { q };
+                assert_eq!(div.gradient(n), want as i64, "{v:?} {n}");
             }
         }
     }

@@ -111,6 +111,10 @@ pub(super) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error>
 }
 
 /// One vertex to clip space, lit if there is a light and a normal. `None` on overflow.
+///
+/// Inlined so that a caller whose light is a constant `None` links no lighting (no normal
+/// transform, no `normalize`): the two cases are separate functions.
+#[inline(always)]
 pub(super) fn vertex(
     mesh: &Mesh<'_>,
     i: u16,
@@ -118,18 +122,35 @@ pub(super) fn vertex(
     mvp: &Mat4,
     light: Option<&DirectionalLight>,
 ) -> Option<ClipVertex> {
-    let i = usize::from(i);
+    match light {
+        None => vertex_unlit(mesh, usize::from(i), mvp),
+        Some(l) => vertex_lit(mesh, usize::from(i), model_view, mvp, l),
+    }
+}
+
+/// [`vertex`] without a light: white.
+fn vertex_unlit(mesh: &Mesh<'_>, i: usize, mvp: &Mat4) -> Option<ClipVertex> {
     let p = mvp.transform_point(*mesh.positions.get(i)?)?;
     let uv = *mesh.uvs.get(i)?;
-    let intensity = match light {
-        Some(l) => vertex_intensity(mesh, i, model_view, l)?,
-        None => COLOR_ONE,
-    };
     Some(ClipVertex {
         position: [p.x, p.y, p.z, p.w],
         uv,
-        color: [intensity; 3],
+        color: [COLOR_ONE; 3],
     })
+}
+
+/// [`vertex`] lit by `light`.
+#[inline(never)]
+fn vertex_lit(
+    mesh: &Mesh<'_>,
+    i: usize,
+    model_view: &Mat4,
+    mvp: &Mat4,
+    light: &DirectionalLight,
+) -> Option<ClipVertex> {
+    let mut v = vertex_unlit(mesh, i, mvp)?;
+    v.color = [vertex_intensity(mesh, i, model_view, light)?; 3];
+    Some(v)
 }
 
 /// Per-vertex Gouraud intensity of vertex `i` (Q8, `0..=256`) under `light`, its normal

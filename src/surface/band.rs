@@ -33,16 +33,22 @@ pub struct Binned {
     pub(super) rows: (i16, i16),
 }
 
+/// A pixel row as the bins store it (saturated to `i16`).
+fn clamp_row(r: i32) -> i16 {
+    r.clamp(i16::MIN.into(), i16::MAX.into()) as i16
+}
+
 impl Binned {
-    /// `tri` of draw `draw`, with its conservative pixel-row range.
-    pub(super) fn new(draw: u8, tri: &ScreenTriangle) -> Self {
+    /// Stores `tri` of draw `draw`, with its conservative pixel-row range, in place. Vertex
+    /// by vertex on purpose: building a `Binned` and assigning it made the compiler copy the
+    /// triangle with `memmove`, 1.5 KB of flash linked for this copy alone.
+    pub(super) fn store(&mut self, draw: u8, tri: &ScreenTriangle) {
         let (r0, r1) = rows_of(tri);
-        let c = |r: i32| r.clamp(i16::MIN.into(), i16::MAX.into()) as i16;
-        Binned {
-            tri: *tri,
-            draw,
-            rows: (c(r0), c(r1)),
+        for (d, s) in self.tri.iter_mut().zip(tri) {
+            *d = *s;
         }
+        self.draw = draw;
+        self.rows = (clamp_row(r0), clamp_row(r1));
     }
 
     /// Whether the triangle may cover a row of `first..=last`.
@@ -186,7 +192,7 @@ impl<'s, C: TargetColor> TriangleSink<'s, '_, '_, C> {
             } => {
                 note_bad_draw(bad_draw, draw, *draws);
                 if let Some(slot) = bins.get_mut(*len) {
-                    *slot = Binned::new(draw, tri);
+                    slot.store(draw, tri);
                     *len += 1;
                 } else {
                     *overflow = true;

@@ -225,7 +225,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 if !*bins_full {
                     match bins.get_mut(*len) {
                         Some(slot) => {
-                            *slot = Binned::new(draw, tri);
+                            slot.store(draw, tri);
                             *len += 1;
                         }
                         None => {

@@ -44,20 +44,16 @@ static UVS: [[Fx; 2]; 3] = [
 /// Its one triangle.
 pub static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
 
-/// Draws the triangle with `draw` in bands (depth band only when `depth`), lit when `lit`;
-/// returns (checksum, pixels).
-fn frame(draw: &Draw<'_, Rgb565>, lit: bool, depth: bool) -> Option<(u32, u32)> {
+/// Draws the triangle with `draw` in bands (depth band only when `depth`), lit when `LIT`;
+/// returns (checksum, pixels). The light is a constant inside the geometry closure, as a
+/// firmware writes it: an unlit firmware passes `None` and links no lighting.
+fn frame<const LIT: bool>(draw: &Draw<'_, Rgb565>, depth: bool) -> Option<(u32, u32)> {
     let mut color = [Rgb565::new(0, 0, 0); BAND];
     let mut zbuf = [0u16; BAND];
     let mut bins = [Binned::default(); 4];
     let mesh = Mesh::new(&POSITIONS, Some(&NORMALS), &UVS, &INDICES).ok()?;
     let camera = demo::camera(20);
-    let light = if lit {
-        Some(DirectionalLight::default())
-    } else {
-        None
-    };
-    let light = light.as_ref();
+    let sun = DirectionalLight::default();
     let mut bands = BandRenderer::new(&mut color, W, ROWS, H).ok()?;
     if depth {
         bands = bands.with_depth(&mut zbuf).ok()?;
@@ -69,6 +65,7 @@ fn frame(draw: &Draw<'_, Rgb565>, lit: bool, depth: bool) -> Option<(u32, u32)> 
             &mut bins,
             Rgb565::new(0, 0, 0),
             |sink| {
+                let light = if LIT { Some(&sun) } else { None };
                 mesh_triangles(&mesh, &Mat4::IDENTITY, &camera, light, |t| {
                     draw.project(t, &mut |s| sink.push(0, s))
                 })
@@ -92,8 +89,9 @@ fn print(r: Option<(u32, u32)>) -> bool {
     }
 }
 
-/// One draw with stages `M` (types: only that span loop is linked).
-pub fn typed<M>(lit: bool, depth: bool) -> bool
+/// One draw with stages `M` (types: only that span loop is linked), lit when `LIT`, into a
+/// depth band when `DEPTH`.
+pub fn typed<M, const LIT: bool, const DEPTH: bool>() -> bool
 where
     M: Stages + 'static,
 {
@@ -103,10 +101,11 @@ where
     let Ok(draw) = Draw::new::<M>(Some(core::hint::black_box(data::T8)), vp, Cull::Back) else {
         return false;
     };
-    print(frame(&draw, lit, depth))
+    print(frame::<LIT>(&draw, DEPTH))
 }
 
-/// One draw whose mode is chosen at run time: every span loop is linked ("everything").
+/// One draw whose mode is chosen at run time: every span loop is linked ("everything"),
+/// and lighting too.
 pub fn dynamic(mode: DrawMode, lit: bool) -> bool {
     let Ok(vp) = Viewport::new(0, 0, W, H) else {
         return false;
@@ -115,7 +114,11 @@ pub fn dynamic(mode: DrawMode, lit: bool) -> bool {
     let Ok(draw) = Draw::dynamic(mode, Some(core::hint::black_box(data::T8)), vp) else {
         return false;
     };
-    print(frame(&draw, core::hint::black_box(lit), true))
+    print(if core::hint::black_box(lit) {
+        frame::<true>(&draw, true)
+    } else {
+        frame::<false>(&draw, true)
+    })
 }
 
 /// The harness alone: the same buffers, checksum and output, no fixel.

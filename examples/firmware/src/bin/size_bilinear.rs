@@ -9,7 +9,7 @@ use fixel::texture::{Bilinear, Nearest, Repeat};
 use fixel_firmware::size;
 
 fn run() -> bool {
-    size::typed::<Pipeline<Exact, Bilinear, Repeat, Repeat, Replace, NoDepth>>(false, false)
+    size::typed::<Pipeline<Exact, Bilinear, Repeat, Repeat, Replace, NoDepth>, false, false>()
 }
 
 fixel_firmware::entry!(run);
