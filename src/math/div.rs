@@ -57,10 +57,19 @@ pub fn div_u64(n: u64, d: u64) -> u64 {
 
 /// [`div_u64`]'s rare cases (a divisor of 2^32 or more, or a quotient of 2^32 or more), out
 /// of line and without the 64-bit library division (which links ~1 KB of library code on
-/// 32-bit cores): restoring binary long division, one quotient bit per step from the
-/// divisor's first fitting shift (at most 64 steps, a few instructions each).
+/// 32-bit cores): for a divisor below 2^32 two word-sized steps; otherwise restoring binary
+/// long division, one quotient bit per step from the divisor's first fitting shift (at most
+/// 33 steps, a few instructions each).
 #[inline(never)]
 fn div_wide(n: u64, d: u64) -> u64 {
+    if d >> 32 == 0 {
+        // A divisor below 2^32 (and a quotient of 2^32 or more): the high word by a 32-bit
+        // division, the low word by `div_u64`'s 64-by-32 path (its quotient fits 32 bits).
+        let (hi, d32) = ((n >> 32) as u32, d as u32);
+        let (qh, rh) = (hi / d32, hi % d32);
+        let lo = div_u64((u64::from(rh) << 32) | (n & 0xFFFF_FFFF), d);
+        return (u64::from(qh) << 32) | lo;
+    }
     // The quotient has at most `clz(d) - clz(n) + 1` bits.
     let s = d.leading_zeros().saturating_sub(n.leading_zeros());
     let (mut r, mut q) = (n, 0u64);

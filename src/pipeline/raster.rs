@@ -57,7 +57,7 @@ impl RasterParams {
 
 struct Writer<'t, S: Shader, P, D, C> {
     ctx: SpanCtx<S>,
-    scratch: Scratch<S::Varyings>,
+    scratch: Option<Scratch<S::Varyings>>,
     /// The target's depth floor, read once per triangle: a triangle writes each pixel at
     /// most once, so its own writes never matter to its later spans. Lowered once, after.
     bound: DepthBound,
@@ -149,7 +149,7 @@ where
     };
     let mut w = Writer::<S, P, D, C> {
         ctx,
-        scratch: Scratch::new(),
+        scratch: None,
         bound: DepthBound {
             floor: target.depth_floor(),
             lowest: u16::MAX,
