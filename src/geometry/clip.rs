@@ -222,24 +222,15 @@ fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
 }
 
 /// Whether a projected triangle survives culling: non-zero area and, per `cull`, the
-/// wanted winding (sub-pixel coordinates, exact `i64` area).
+/// wanted winding (sub-pixel coordinates; the `i64` area is exact for any coordinates that
+/// differ by less than 2^31, far beyond the guard band).
 pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
-    // Inside the guard band the differences fit `i32` and the two products `i64` (measured:
-    // on Cortex-M0+ the library multiply beats the 16-bit split here); any other input is
-    // decided exactly in `i128`.
+    // Wrapping only where coordinates differ by 2^31 or more (never a panic).
     let d = |a: i32, b: i32| i64::from(a) - i64::from(b);
-    let (ax, by, bx, ay) = (
-        d(t[1].x, t[0].x),
-        d(t[2].y, t[0].y),
-        d(t[2].x, t[0].x),
-        d(t[1].y, t[0].y),
-    );
-    let fits = |v: i64| i32::try_from(v).is_ok();
-    let sign = if fits(ax) && fits(by) && fits(bx) && fits(ay) {
-        (ax * by).cmp(&(bx * ay))
-    } else {
-        (i128::from(ax) * i128::from(by)).cmp(&(i128::from(bx) * i128::from(ay)))
-    };
+    let area2 = d(t[1].x, t[0].x)
+        .wrapping_mul(d(t[2].y, t[0].y))
+        .wrapping_sub(d(t[2].x, t[0].x).wrapping_mul(d(t[1].y, t[0].y)));
+    let sign = area2.cmp(&0);
     // y points down on screen, so counter-clockwise in NDC (front) has negative area.
     let front = sign == core::cmp::Ordering::Less;
     sign != core::cmp::Ordering::Equal
