@@ -188,8 +188,57 @@
 //!
 //! Meshes with more screen triangles than bins (the 2,208-triangle sphere) go through
 //! [`BandRenderer::render_spans`](crate::surface::BandRenderer::render_spans), which keeps
-//! 2 bytes per triangle instead. `examples/firmware` has complete firmwares for Cortex-M0+,
-//! Cortex-M4F and RV32IMC, and `examples/display` the same wired to an ST7789.
+//! 2 bytes per triangle instead: one binning pass records the bands each triangle meets, then
+//! each band re-projects only those triangles through a small cache of projected vertices.
+//! Build the [`MeshTransform`](crate::scene::MeshTransform) once per frame, outside the band
+//! closure (it multiplies the matrices), and pass the light as a constant `None` when the
+//! draw is unlit (then no lighting code is linked):
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::pipeline::{DepthLess, ModulateIntensity, SubdividedBy};
+//! use fixel::scene::{mesh_to_sink, CachedVertex, DirectionalLight, MeshTransform};
+//! use fixel::surface::BandRange;
+//! use fixel::texture::{Bilinear, Repeat};
+//!
+//! type Lit = Pipeline<SubdividedBy<64>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+//! let mut texels = [Rgb565::BLACK; 64 * 64];
+//! fixel::demo::checker_texture(64, 64, &mut texels)?;
+//! let draw = Draw::new::<Lit>(Some(Texture::new(&texels, 64, 64)?), Viewport::new(0, 0, 320, 240)?, Cull::Back)?;
+//! let sphere = fixel::demo::sphere(); // 2,208 triangles
+//! let mesh = sphere.mesh()?;
+//! let light = DirectionalLight::default();
+//!
+//! // 8 rows of colour and depth, 2 bytes per triangle, 128 cached vertices: 23 KB in all.
+//! let (mut color, mut depth) = ([Rgb565::BLACK; 320 * 8], [0u16; 320 * 8]);
+//! let mut ranges = [BandRange::EMPTY; fixel::demo::SPHERE_TRIANGLES];
+//! let mut cache = [CachedVertex::EMPTY; 128];
+//! let mut bands = BandRenderer::new(&mut color, 320, 8, 240)?.with_depth(&mut depth)?;
+//! let transform = MeshTransform::new(&fixel::demo::sphere_model(0), &fixel::demo::camera(20));
+//! let mut lit_pixels = 0;
+//! let stats = bands
+//!     .render_spans(
+//!         &[&draw],
+//!         &mut [], // no bins: the ranges carry the frame
+//!         &mut ranges,
+//!         Rgb565::BLACK,
+//!         |sink| {
+//!             mesh_to_sink(&draw, 0, &mesh, &transform, Some(&light), &mut cache, 0, sink);
+//!         },
+//!         |band| {
+//!             lit_pixels += band.pixels().iter().filter(|&&c| c != Rgb565::BLACK).count();
+//!             Ok::<(), ()>(()) // send the band to the display here
+//!         },
+//!     )
+//!     .map_err(|_| fixel::Error::BadMode("example"))?;
+//! assert_eq!(stats.bands, 30);
+//! assert!(!stats.rewalked); // every triangle had a range
+//! assert!(lit_pixels > 20_000);
+//! # Ok::<(), fixel::Error>(())
+//! ```
+//!
+//! `examples/firmware` has complete firmwares for Cortex-M0+, Cortex-M4F and RV32IMC, and
+//! `examples/display` the same wired to an ST7789.
 //!
 //! # 6. What goes wrong, and what you get
 //!
