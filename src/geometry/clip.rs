@@ -230,10 +230,9 @@ pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
     let area2 = d(t[1].x, t[0].x)
         .wrapping_mul(d(t[2].y, t[0].y))
         .wrapping_sub(d(t[2].x, t[0].x).wrapping_mul(d(t[1].y, t[0].y)));
-    let sign = area2.cmp(&0);
     // y points down on screen, so counter-clockwise in NDC (front) has negative area.
-    let front = sign == core::cmp::Ordering::Less;
-    sign != core::cmp::Ordering::Equal
+    let front = area2 < 0;
+    area2 != 0
         && match cull {
             Cull::None => true,
             Cull::Back => front,

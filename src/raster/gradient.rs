@@ -40,6 +40,10 @@ use crate::math::wide;
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
 
+/// Fraction bits of a gradient per pixel as set up: the positions' sub-pixel bits (the area
+/// is in their units squared) plus [`EXTRA`].
+const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
+
 /// Shared, per-triangle part of plane set-up: vertex deltas, the barycentric weights'
 /// derivatives and the reference pixel.
 #[derive(Clone, Copy, Debug)]
@@ -177,9 +181,8 @@ impl PlaneSetup {
         // (gx is per pixel, ref_dx in 1/4096 pixel).
         // Wrapping is exact modulo 2^64, hence modulo 2^32 after the shift.
         let off = mul(gx, i64::from(self.ref_dx)).wrapping_add(mul(gy, i64::from(self.ref_dy)));
-        let round = 1i64 << (EXTRA + ATTR_SUBPIXEL_BITS - 1);
-        let a_ref =
-            i64::from(a0).wrapping_add(off.wrapping_add(round) >> (EXTRA + ATTR_SUBPIXEL_BITS));
+        let round = 1i64 << (SHIFT - 1);
+        let a_ref = i64::from(a0).wrapping_add(off.wrapping_add(round) >> SHIFT);
         let half = 1i64 << (EXTRA - 1);
         Plane {
             at_ref: a_ref as i32,
@@ -198,7 +201,6 @@ impl PlaneSetup {
 /// `0.5 + 2^31 (2^-31 + 2^-31)` < 3 units of the exact ratio. `cshift = 0` when no shift in
 /// `1..=62` fits (slivers; never for a triangle wider than 2^-21 pixel).
 fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
-    const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
     let a = area2.unsigned_abs();
     let ba = 64 - wide::clz64(a);
     let an = if ba >= 32 {
@@ -263,7 +265,6 @@ impl ExactDivisor {
     /// fits `i64`, else a long division; for huge triangles (`norm > SHIFT`) the numerator
     /// is shifted right instead. Wraps modulo 2^64 where the result does not fit.
     fn gradient(&self, n: i64) -> i64 {
-        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         if self.norm > SHIFT {
             let k = (self.norm - SHIFT).min(62);
             return self.div_round((n >> k) + ((n >> (k - 1)) & 1));
@@ -387,7 +388,6 @@ mod tests {
     /// away from zero, as `i128` arithmetic gives it.
     #[test]
     fn exact_gradient_is_the_rounded_quotient() {
-        const SHIFT: u32 = ATTR_SUBPIXEL_BITS + EXTRA;
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         let vp = Rect::of_size(320, 240);
         for _ in 0..20_000 {

@@ -133,15 +133,7 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             texel_coords_small(u, self.base.log2_width(), self.wu.mode()),
             texel_coords_small(v, self.base.log2_height(), self.wv.mode()),
         ) {
-            for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
-                let s = v.as_mut_slice();
-                if let Some(x) = s.get_mut(pair.0) {
-                    *x = a;
-                }
-                if let Some(x) = s.get_mut(pair.1) {
-                    *x = b;
-                }
-            }
+            write_pair(vary, pair, tu, tv);
             return TexTriangle { shift: 0 };
         }
         let mut tu = texel_coords(u, self.base.log2_width(), self.wu.mode());
@@ -161,15 +153,8 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             .max()
             .unwrap_or(0);
         let shift = (64 - wide::clz64(max)).saturating_sub(30);
-        for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
-            let s = v.as_mut_slice();
-            if let Some(x) = s.get_mut(pair.0) {
-                *x = wide::sar(a, shift) as i32;
-            }
-            if let Some(x) = s.get_mut(pair.1) {
-                *x = wide::sar(b, shift) as i32;
-            }
-        }
+        let narrow = |t: [i64; 3]| t.map(|a| wide::sar(a, shift) as i32);
+        write_pair(vary, pair, narrow(tu), narrow(tv));
         TexTriangle { shift: shift as u8 }
     }
 
@@ -204,6 +189,21 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         } else {
             self.sampler
                 .sample_base_scaled(&self.base, self.wu, self.wv, u, v, i)
+        }
+    }
+}
+
+/// Writes the three vertices' texel coordinates `tu`, `tv` into varyings `pair` (indices
+/// past the varyings are skipped).
+#[inline(always)]
+fn write_pair<V: Varyings>(vary: &mut [V; 3], pair: (usize, usize), tu: [i32; 3], tv: [i32; 3]) {
+    for (v, (a, b)) in vary.iter_mut().zip(tu.into_iter().zip(tv)) {
+        let s = v.as_mut_slice();
+        if let Some(x) = s.get_mut(pair.0) {
+            *x = a;
+        }
+        if let Some(x) = s.get_mut(pair.1) {
+            *x = b;
         }
     }
 }
