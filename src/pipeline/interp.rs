@@ -332,6 +332,49 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
         }
     }
 
+    /// The only piece of a span of `len` pixels starting at `(x, y)` that is one segment
+    /// (`len` in `1..=2^log2_n` when subdivided): the piece [`start`](Self::start) then
+    /// [`piece`](Self::piece) give, bit for bit, without the iterator's state. `lambda` is
+    /// the level of detail at the first pixel when `spec.lod`, else 0.
+    #[inline(always)]
+    pub fn only_piece(s: &TriSetup<V>, x: i32, y: i32, len: u32, spec: FillSpec) -> Piece<V> {
+        let (a, b) = spec.pair;
+        let (mut start, mut slope, lambda) = if SUBDIVIDED {
+            let h = Hyper::at(s, x, y);
+            let lambda = if spec.lod {
+                hyper_lambda(s, &h, a, b)
+            } else {
+                0
+            };
+            let first = h.resolve();
+            // As `segment`: the last segment ends on the span's last pixel.
+            let reach = if len > 1 { len - 1 } else { 1 };
+            let mut next = h;
+            next.add_scaled(&Hyper::dx(s), reach as i32);
+            let end = next.resolve();
+            let inv = INV_SMALL[reach.min(63) as usize];
+            let mut slope = end;
+            for i in 0..V::N {
+                let diff = end.as_slice()[i].wrapping_sub(first.as_slice()[i]);
+                slope.as_mut_slice()[i] = scale_q16(diff, inv);
+            }
+            (first, slope, lambda)
+        } else {
+            let lambda = if spec.lod { affine_lambda(s, a, b) } else { 0 };
+            (s.at(x, y), s.dx, lambda)
+        };
+        if spec.shift != 0 {
+            unshift(&mut start, spec.pair, spec.shift);
+            unshift(&mut slope, spec.pair, spec.shift);
+        }
+        Piece {
+            start,
+            slope,
+            len: len as usize,
+            lambda,
+        }
+    }
+
     /// Level of detail (Q8.8, before bias) of `pair` at the next pixel.
     #[inline(always)]
     pub fn lambda(&self, s: &TriSetup<V>, (a, b): (usize, usize)) -> i32 {

@@ -411,6 +411,65 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
     written
 }
 
+/// A span that is one linear piece (affine, or subdivided and at most `2^log2_n` pixels)
+/// and one chunk: the depth mask, then the piece shaded, with none of the chunk and piece
+/// bookkeeping of [`run_linear`] (whose pixels it gives, bit for bit). Most spans of a
+/// finely tessellated mesh are a few pixels long: this path is what they cost.
+#[inline(always)]
+fn run_short<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
+    ctx: &SpanCtx<S>,
+    bound: &mut DepthBound,
+    x: i32,
+    y: i32,
+    out: &mut [C],
+    zrow: &mut [u16],
+) -> u32 {
+    let s = &ctx.setup;
+    let n = out.len();
+    if Z && zrow.len() < n {
+        return 0;
+    }
+    // The level of detail at the span's first pixel serves the span and its one piece.
+    let at_start = S::LOD && ctx.shader.lod_granularity() != LodGranularity::Triangle;
+    let spec = FillSpec {
+        pair: S::TEXCOORDS.unwrap_or((0, 1)),
+        lod: at_start,
+        shift: ctx.coord_shift,
+    };
+    let p = Linear::<S::Varyings, SUB>::only_piece(s, x, y, n as u32, spec);
+    let dz = s.z.dx;
+    let z = s.plane_at(&s.z, x, y);
+    let mask = chunk_mask::<S, Z>(z, dz, zrow, n, bound);
+    if mask == 0 {
+        return 0;
+    }
+    let pos = Pos {
+        x,
+        y,
+        z,
+        dz,
+        lambda: if at_start { p.lambda } else { ctx.tri_lambda },
+        per_pixel: false,
+    };
+    // The shading loop counts what it writes: for a shader that never discards that is
+    // every pixel of the mask (no population count per span).
+    let shade = if Z && S::DISCARDS && !S::BLENDS {
+        shade_linear::<S, C, true>
+    } else {
+        shade_linear::<S, C, false>
+    };
+    shade(
+        &ctx.shader,
+        ctx.triangle,
+        &p.start,
+        &p.slope,
+        out,
+        zrow,
+        mask,
+        pos,
+    )
+}
+
 /// The level of detail handed to the shader: `(fixed value, per pixel or piece?)`.
 #[inline(always)]
 fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i32, bool) {
@@ -545,6 +604,17 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         ProjKind::Adaptive => ctx.setup.affine,
         _ => false,
     };
+    // One chunk that is one linear piece: the short path.
+    let one_piece =
+        affine || (kind == ProjKind::Subdivided && out.len() <= 1 << ctx.log2_n.clamp(1, 6));
+    if !S::SMALL && one_piece && out.len() <= CHUNK {
+        return match (affine, zrow) {
+            (true, Some(z)) => run_short::<S, C, false, true>(ctx, bound, x0, y, out, z),
+            (true, None) => run_short::<S, C, false, false>(ctx, bound, x0, y, out, &mut []),
+            (false, Some(z)) => run_short::<S, C, true, true>(ctx, bound, x0, y, out, z),
+            (false, None) => run_short::<S, C, true, false>(ctx, bound, x0, y, out, &mut []),
+        };
+    }
     match (kind, affine, zrow) {
         (_, true, Some(z)) if S::SMALL => {
             run::<S, C, L<S, false>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
