@@ -225,11 +225,18 @@ fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
 /// wanted winding (sub-pixel coordinates; the `i64` area is exact for any coordinates that
 /// differ by less than 2^31, far beyond the guard band).
 pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
+    keeps_xy([(t[0].x, t[0].y), (t[1].x, t[1].y), (t[2].x, t[2].y)], cull)
+}
+
+/// [`keeps`] from the three vertices' sub-pixel positions alone (a walker can cull before
+/// it builds the screen vertices).
+#[inline]
+pub fn keeps_xy(t: [(i32, i32); 3], cull: Cull) -> bool {
     // Wrapping only where coordinates differ by 2^31 or more (never a panic).
     let d = |a: i32, b: i32| i64::from(a) - i64::from(b);
-    let area2 = d(t[1].x, t[0].x)
-        .wrapping_mul(d(t[2].y, t[0].y))
-        .wrapping_sub(d(t[2].x, t[0].x).wrapping_mul(d(t[1].y, t[0].y)));
+    let area2 = d(t[1].0, t[0].0)
+        .wrapping_mul(d(t[2].1, t[0].1))
+        .wrapping_sub(d(t[2].0, t[0].0).wrapping_mul(d(t[1].1, t[0].1)));
     // y points down on screen, so counter-clockwise in NDC (front) has negative area.
     let front = area2 < 0;
     area2 != 0

@@ -605,8 +605,8 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         _ => false,
     };
     // One chunk that is one linear piece: the short path.
-    let one_piece =
-        affine || (kind == ProjKind::Subdivided && out.len() <= 1 << ctx.log2_n.clamp(1, 6));
+    let one_piece = affine
+        || (kind == ProjKind::Subdivided && long && out.len() <= 1 << ctx.log2_n.clamp(1, 6));
     if !S::SMALL && one_piece && out.len() <= CHUNK {
         return match (affine, zrow) {
             (true, Some(z)) => run_short::<S, C, false, true>(ctx, bound, x0, y, out, z),

@@ -27,7 +27,7 @@
 //! band draws).
 
 use crate::color::TargetColor;
-use crate::geometry::clip::{complete_depth, keeps, prepare, prepare_without_depth};
+use crate::geometry::clip::{complete_depth, keeps_xy, prepare, prepare_without_depth};
 use crate::geometry::{ScreenTriangle, ScreenVertex, COLOR_ONE};
 use crate::math::Mat4;
 use crate::pipeline::{Draw, Shading};
@@ -98,6 +98,12 @@ impl CachedVertex {
             [u, v],
             (r >> 16) as u16,
         );
+    }
+
+    /// The sub-pixel position of [`CachedVertex::screen`].
+    #[inline(always)]
+    fn xy(&self) -> (i32, i32) {
+        (self.x >> (SUB_BITS + 1), self.y >> (SUB_BITS + 1))
     }
 
     fn screen(&self) -> ScreenVertex {
@@ -256,10 +262,11 @@ pub fn walk_mesh<C: TargetColor>(
             clipped(draw, &ctx, idx, lit, id, out);
             continue;
         }
-        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
-        if !out.kept(id) && !keeps(&tri, cull) {
+        // Cull from the cached positions: a culled triangle builds no screen vertices.
+        if !out.kept(id) && !keeps_xy([v[0].xy(), v[1].xy(), v[2].xy()], cull) {
             continue;
         }
+        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
         if full {
             // Kept: complete what binning left out (depth), then light.
             let mut failed = false;
@@ -332,7 +339,11 @@ fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     }
 }
 
-/// A triangle that crosses a clip plane: the full clipper on fresh vertices.
+/// A triangle that crosses a clip plane: the full clipper on fresh vertices. Out of line:
+/// its polygon buffers (over a kilobyte of stack) would otherwise sit in the walker's
+/// frame, where on Cortex-M0+ every store beyond 1 KB of the stack pointer costs four
+/// instructions instead of one.
+#[inline(never)]
 fn clipped<C: TargetColor>(
     draw: &Draw<'_, C>,
     ctx: &Ctx<'_, '_>,

@@ -116,7 +116,7 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
         bins_full: bool,
         ranges: &'s mut [BandRange],
         ranges_short: bool,
-        rows: u32,
+        rows: FrameDivisor,
         height: u32,
         triangles: u32,
         draws: usize,
@@ -139,7 +139,38 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
 #[derive(Debug)]
 struct Windows {
     ids: [(usize, usize); WINDOWS],
-    group: u32,
+    group: FrameDivisor,
+}
+
+/// `x / d` for a divisor fixed for the frame (rows per band, bands per window group): a
+/// shift when it is a power of two, as it usually is. The binning pass divides twice per
+/// triangle for each, and on Cortex-M0+ a 32-bit division is a library call of about 100
+/// instructions.
+#[derive(Clone, Copy, Debug)]
+struct FrameDivisor {
+    d: u32,
+    shift: u32,
+    pow2: bool,
+}
+
+impl FrameDivisor {
+    fn new(d: u32) -> Self {
+        let d = d.max(1);
+        FrameDivisor {
+            d,
+            shift: d.trailing_zeros(),
+            pow2: d.is_power_of_two(),
+        }
+    }
+
+    #[inline(always)]
+    fn div(self, x: u32) -> u32 {
+        if self.pow2 {
+            x >> self.shift
+        } else {
+            x / self.d
+        }
+    }
 }
 
 const WINDOWS: usize = 64;
@@ -147,7 +178,7 @@ const WINDOWS: usize = 64;
 impl Windows {
     fn window(&self, band: u32) -> (usize, usize) {
         self.ids
-            .get((band / self.group) as usize)
+            .get(self.group.div(band) as usize)
             .copied()
             .unwrap_or((0, usize::MAX))
     }
@@ -240,14 +271,14 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 if r1 <= r0 || r1 <= 0 || r0 > last_row {
                     return; // no row of the frame
                 }
-                let band = |r: i32| r.clamp(0, last_row) as u32 / *rows;
+                let band = |r: i32| rows.div(r.clamp(0, last_row) as u32);
                 let (b0, b1) = (band(r0), band(r1 - 1));
                 let sat = |b: u32| b.min(LAST_BAND) as u8;
                 match ranges.get_mut(id) {
                     Some(r) => r.include(sat(b0), sat(b1)),
                     None => *ranges_short = true,
                 }
-                for g in b0 / windows.group..=b1 / windows.group {
+                for g in windows.group.div(b0)..=windows.group.div(b1) {
                     if let Some(w) = windows.ids.get_mut(g as usize) {
                         *w = (w.0.min(id), w.1.max(id));
                     }
@@ -297,7 +328,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         let rows = self.rows.max(1);
         let mut windows = Windows {
             ids: [(usize::MAX, 0); WINDOWS],
-            group: self.height.div_ceil(rows).div_ceil(WINDOWS as u32).max(1),
+            group: FrameDivisor::new(self.height.div_ceil(rows).div_ceil(WINDOWS as u32)),
         };
         let mut sink = MeshSink {
             pass: Pass::Bin {
@@ -307,7 +338,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 bins_full: false,
                 ranges,
                 ranges_short: false,
-                rows,
+                rows: FrameDivisor::new(rows),
                 height: self.height,
                 triangles: 0,
                 draws: draws.len(),
