@@ -12,9 +12,9 @@
 //! Ranges: coordinates within the guard band (`|x|, |y| <= 2^16`), so `D <= 2^21` and the
 //! remainder fits `i32`; the one `i64` division is at [`EdgeWalker::new`].
 
-use super::SUBPIXEL_ONE;
+use super::{SUBPIXEL_BITS, SUBPIXEL_ONE};
 use crate::math::div::mul_wide_signed;
-use crate::math::div_floor_i64;
+use crate::math::{div_floor_i64, HW_DIVIDE};
 
 /// Walks one edge row by row; see the module docs for the arithmetic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,6 +57,54 @@ fn ceil_div_rem(n: i64, d: i64) -> (i64, i64) {
     }
 }
 
+/// `ceil(N / D)` and its remainder for a first row whose centre is less than one pixel
+/// below the top vertex (`0 <= t = yc - y0 < 16`, the common case: every edge starts
+/// there unless a band or the viewport cuts it), from the step's quotient instead of a
+/// second division: with `dx = q dy + r` (`0 <= r < dy`), `N = dy ((x0 - 8) + t q) + t r`,
+/// and `t r / dy < 16` takes four compare-and-subtract steps. Exact, the same pair as
+/// [`ceil_div_rem`]; `None` outside its range (the caller divides). For cores without a
+/// divide instruction, where each division is a library call of about 100 instructions.
+#[inline(always)]
+fn start_near_top(x0: i32, dy: i32, t: i32, step: i32, step_rem: i32) -> Option<(i64, i64)> {
+    const ONE: i32 = SUBPIXEL_ONE;
+    if !(0..ONE).contains(&t) || dy <= 0 || dy >= 1 << 26 {
+        return None;
+    }
+    // floor(dx / dy) and dx - q dy, from ceil(16 dx / 16 dy) and its remainder (a multiple
+    // of 16).
+    let (q, r) = if step_rem == 0 {
+        (step, 0)
+    } else {
+        (step.wrapping_sub(1), dy - (step_rem >> SUBPIXEL_BITS))
+    };
+    // t r < 16 dy < 2^30; its quotient by dy is below 16.
+    let mut b = t * r;
+    let mut qb = 0;
+    for k in (0..SUBPIXEL_BITS).rev() {
+        let d = dy << k;
+        if b >= d {
+            b -= d;
+            qb |= 1 << k;
+        }
+    }
+    // |t q| < 2^30 (no 64-bit product to check it on Cortex-M0+).
+    if q.unsigned_abs() >= 1 << 26 {
+        return None;
+    }
+    let c = x0
+        .checked_sub(ONE / 2)?
+        .checked_add(t * q)?
+        .checked_add(qb)?;
+    // N = dy c + b = 16 dy (c >> 4) + (dy (c & 15) + b), the last term in 0..16 dy.
+    let rem = dy * (c & (ONE - 1)) + b;
+    let k = i64::from(c >> SUBPIXEL_BITS);
+    Some(if rem == 0 {
+        (k, 0)
+    } else {
+        (k + 1, i64::from(ONE * dy - rem))
+    })
+}
+
 impl EdgeWalker {
     /// Starts the walk at pixel row `py` for the edge `top -> bottom` (sub-pixel units,
     /// `top.1 < bottom.1`, both inside the guard band).
@@ -71,10 +119,21 @@ impl EdgeWalker {
         let half = one / 2;
         let den = i64::from(one) * i64::from(dy.max(1));
         let yc = py.wrapping_mul(one).wrapping_add(half);
-        let n = mul_wide_signed(x0.wrapping_sub(half), dy)
-            .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx));
-        let (x, rem) = ceil_div_rem(n, den);
         let (step, step_rem) = ceil_div_rem(i64::from(one) * i64::from(dx), den);
+        let t = yc.wrapping_sub(y0);
+        let near_top = if HW_DIVIDE {
+            None
+        } else {
+            start_near_top(x0, dy, t, step as i32, step_rem as i32)
+        };
+        let (x, rem) = match near_top {
+            Some(start) => start,
+            None => {
+                let n = mul_wide_signed(x0.wrapping_sub(half), dy)
+                    .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx));
+                ceil_div_rem(n, den)
+            }
+        };
         EdgeWalker {
             x: x as i32,
             rem: rem as i32,
@@ -118,6 +177,36 @@ mod tests {
             q += 1;
         }
         q as i32
+    }
+
+    /// The division-free start equals the divided one wherever it answers.
+    #[test]
+    fn start_near_top_matches_division() {
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut answered = 0;
+        for i in 0..400_000 {
+            let r = next();
+            let span = [1 << 6, 1 << 12, 1 << 17, 1 << 22][i % 4];
+            let x0 = (r % (2 * span)) as i32 - span as i32;
+            let dy = 1 + ((r >> 24) % span) as i32;
+            let dx = ((r >> 40) % (2 * span)) as i32 - span as i32;
+            let t = ((r >> 60) & 15) as i32;
+            let one = SUBPIXEL_ONE;
+            let den = i64::from(one) * i64::from(dy);
+            let n = i64::from(x0 - one / 2) * i64::from(dy) + i64::from(t) * i64::from(dx);
+            let (step, step_rem) = ceil_div_rem(i64::from(one) * i64::from(dx), den);
+            if let Some(got) = start_near_top(x0, dy, t, step as i32, step_rem as i32) {
+                assert_eq!(got, ceil_div_rem(n, den), "x0 {x0} dy {dy} dx {dx} t {t}");
+                answered += 1;
+            }
+        }
+        assert!(answered > 300_000, "{answered}");
     }
 
     #[test]
