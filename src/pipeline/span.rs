@@ -11,6 +11,11 @@
 //! 3. shading (not inlined, so it gets its own registers): the shader for each visible
 //!    pixel, and the store.
 //!
+//! A span that is one chunk and one linear piece (affine, or subdivided with `N >= 16` and
+//! at most `N` pixels: the spans of finely tessellated meshes, a few pixels long) skips the
+//! chunk and piece bookkeeping: its piece comes from its two ends, then the depth mask and
+//! one shading call (`run_short`, the same pixels as the general loop).
+//!
 //! Nothing is decided per pixel that was known per draw: the projection picks the
 //! interpolator type, the shader is a type whose `shade` is inlined, and depth is a const
 //! generic chosen once per span (a depth-testing draw into a target without a depth buffer
