@@ -475,6 +475,27 @@ fn run_short<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
     )
 }
 
+/// Whether [`span`] may take [`run_short`]: always, except in this module's tests, which
+/// draw the same triangles through both paths and compare.
+#[cfg(not(test))]
+#[inline(always)]
+fn short_path_on() -> bool {
+    true
+}
+
+#[cfg(test)]
+extern crate std;
+
+#[cfg(test)]
+std::thread_local! {
+    static SHORT_PATH: core::cell::Cell<bool> = const { core::cell::Cell::new(true) };
+}
+
+#[cfg(test)]
+fn short_path_on() -> bool {
+    SHORT_PATH.with(|c| c.get())
+}
+
 /// The level of detail handed to the shader: `(fixed value, per pixel or piece?)`.
 #[inline(always)]
 fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i32, bool) {
@@ -612,7 +633,7 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     // One chunk that is one linear piece: the short path.
     let one_piece = affine
         || (kind == ProjKind::Subdivided && long && out.len() <= 1 << ctx.log2_n.clamp(1, 6));
-    if !S::SMALL && one_piece && out.len() <= CHUNK {
+    if !S::SMALL && one_piece && out.len() <= CHUNK && short_path_on() {
         return match (affine, zrow) {
             (true, Some(z)) => run_short::<S, C, false, true>(ctx, bound, x0, y, out, z),
             (true, None) => run_short::<S, C, false, false>(ctx, bound, x0, y, out, &mut []),
@@ -651,5 +672,97 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         (_, _, None) => {
             run::<S, C, E<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::SHORT_PATH;
+    use crate::geometry::{ClipVertex, Cull, Viewport};
+    use crate::math::Fx;
+    use crate::pipeline::{
+        Affine, DepthLess, Draw, ModulateIntensity, Pipeline, Replace, Stages, SubdividedBy,
+    };
+    use crate::surface::Frame;
+    use crate::texture::{Bilinear, Nearest, Repeat, Texture};
+    use embedded_graphics_core::pixelcolor::raw::RawU16;
+    use embedded_graphics_core::pixelcolor::Rgb565;
+    use std::vec::Vec;
+
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        /// Uniform in `lo..hi` (I16F16 bits).
+        fn fx(&mut self, lo: f64, hi: f64) -> Fx {
+            let t = (self.next() >> 11) as f64 / (1u64 << 53) as f64;
+            Fx::from_num(lo + t * (hi - lo))
+        }
+    }
+
+    /// Random triangles, small (spans of a few pixels) and large (spans past one chunk),
+    /// in front of the camera at varying depth, drawn with `M` twice: with and without the
+    /// short-span path. Colour and depth must be the same bits, and so must the counts.
+    fn same_pixels<M: Stages + 'static>() {
+        let texels: Vec<Rgb565> = (0..64 * 32u32)
+            .map(|i| Rgb565::from(RawU16::new((i.wrapping_mul(0x9E37) >> 3) as u16)))
+            .collect();
+        let tex = Texture::new(&texels, 64, 32).unwrap();
+        let (w, h) = (96u32, 72u32);
+        let vp = Viewport::new(0, 0, w, h).unwrap();
+        let draw = Draw::new::<M>(Some(tex), vp, Cull::None).unwrap();
+        let mut rng = Rng(0x5DEE_CE66_D1CE_4E5B);
+        let mut drawn = 0u32;
+        for round in 0..300 {
+            let size = if round % 3 == 0 { 1.6 } else { 0.12 };
+            let (cx, cy) = (
+                rng.fx(-0.9, 0.9).to_num::<f64>(),
+                rng.fx(-0.9, 0.9).to_num::<f64>(),
+            );
+            let tri: [ClipVertex; 3] = core::array::from_fn(|_| {
+                let wv = rng.fx(1.0, 6.0);
+                let x =
+                    Fx::from_num((cx + rng.fx(-size, size).to_num::<f64>()) * wv.to_num::<f64>());
+                let y =
+                    Fx::from_num((cy + rng.fx(-size, size).to_num::<f64>()) * wv.to_num::<f64>());
+                let z = Fx::from_num(rng.fx(-0.9, 0.9).to_num::<f64>() * wv.to_num::<f64>());
+                let mut v = ClipVertex::new([x, y, z, wv], [rng.fx(-2.0, 3.0), rng.fx(-2.0, 3.0)]);
+                let c = (rng.next() % 257) as u16;
+                v.color = [c; 3];
+                v
+            });
+            let frames: Vec<(Vec<Rgb565>, Vec<u16>, u32)> = [true, false]
+                .into_iter()
+                .map(|short| {
+                    SHORT_PATH.with(|c| c.set(short));
+                    let mut color = std::vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+                    let mut depth = std::vec![0xFFFF_u16; (w * h) as usize];
+                    let mut f = Frame::new(&mut color, w, h)
+                        .unwrap()
+                        .with_depth(&mut depth)
+                        .unwrap();
+                    let n = draw.clip_triangles(&[tri], &mut f).unwrap();
+                    (color, depth, n)
+                })
+                .collect();
+            SHORT_PATH.with(|c| c.set(true));
+            assert!(frames[0] == frames[1], "round {round}: {tri:?}");
+            drawn += frames[0].2;
+        }
+        assert!(drawn > 20_000, "only {drawn} pixels drawn");
+    }
+
+    #[test]
+    fn short_spans_draw_what_the_general_loop_draws() {
+        same_pixels::<
+            Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>,
+        >();
+        same_pixels::<Pipeline<SubdividedBy<4>, Nearest, Repeat, Repeat, Replace, DepthLess>>();
+        same_pixels::<Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>>();
     }
 }
