@@ -174,6 +174,8 @@ pub mod raster;
 pub mod scene;
 pub mod shading;
 pub mod surface;
+#[cfg(test)]
+mod test_rng;
 pub mod texture;
 
 pub use error::Error;

@@ -205,16 +205,7 @@ mod tests {
     extern crate std;
     use super::*;
 
-    /// Small deterministic generator for test inputs.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-    }
+    use crate::test_rng::Rng;
 
     /// Relative error of `m / 2^e` against `1 / x`, in units of 2^-32, computed exactly.
     fn rel_err_units(x: u32, m: u32, e: u32) -> f64 {

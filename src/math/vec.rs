@@ -321,18 +321,11 @@ mod tests {
         x.to_num::<f64>()
     }
 
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        /// Uniform in [-1, 1).
-        fn unit(&mut self) -> f64 {
-            (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-        }
+    use crate::test_rng::Rng;
+
+    /// Uniform in [-1, 1).
+    fn unit(rng: &mut Rng) -> f64 {
+        2.0 * rng.unit01() - 1.0
     }
 
     #[test]
@@ -377,8 +370,8 @@ mod tests {
         let mut rng = Rng(0x5eed);
         for _ in 0..50_000 {
             let s = 2f64.powi((rng.next() % 14) as i32);
-            let a = Vec3::from_num(rng.unit() * s, rng.unit() * s, rng.unit() * s);
-            let b = Vec3::from_num(rng.unit() * s, rng.unit() * s, rng.unit() * s);
+            let a = Vec3::from_num(unit(&mut rng) * s, unit(&mut rng) * s, unit(&mut rng) * s);
+            let b = Vec3::from_num(unit(&mut rng) * s, unit(&mut rng) * s, unit(&mut rng) * s);
             let (ax, ay, az, bx, by, bz) = (f(a.x), f(a.y), f(a.z), f(b.x), f(b.y), f(b.z));
             let c = a.cross(b);
             let ulp = 2f64.powi(-16);
@@ -416,7 +409,7 @@ mod tests {
                 _ => (k % 23) - 8,
             };
             let l = 2f64.powi(e);
-            let v = Vec3::from_num(rng.unit() * l, rng.unit() * l, rng.unit() * l);
+            let v = Vec3::from_num(unit(&mut rng) * l, unit(&mut rng) * l, unit(&mut rng) * l);
             let (x, y, z) = (f(v.x), f(v.y), f(v.z));
             let len = (x * x + y * y + z * z).sqrt();
             match v.normalize() {

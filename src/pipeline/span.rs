@@ -690,19 +690,11 @@ mod tests {
     use embedded_graphics_core::pixelcolor::Rgb565;
     use std::vec::Vec;
 
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        /// Uniform in `lo..hi` (I16F16 bits).
-        fn fx(&mut self, lo: f64, hi: f64) -> Fx {
-            let t = (self.next() >> 11) as f64 / (1u64 << 53) as f64;
-            Fx::from_num(lo + t * (hi - lo))
-        }
+    use crate::test_rng::Rng;
+
+    /// Uniform in `lo..hi` (I16F16).
+    fn fx(rng: &mut Rng, lo: f64, hi: f64) -> Fx {
+        Fx::from_num(lo + rng.unit01() * (hi - lo))
     }
 
     /// Random triangles, small (spans of a few pixels) and large (spans past one chunk),
@@ -721,17 +713,22 @@ mod tests {
         for round in 0..300 {
             let size = if round % 3 == 0 { 1.6 } else { 0.12 };
             let (cx, cy) = (
-                rng.fx(-0.9, 0.9).to_num::<f64>(),
-                rng.fx(-0.9, 0.9).to_num::<f64>(),
+                fx(&mut rng, -0.9, 0.9).to_num::<f64>(),
+                fx(&mut rng, -0.9, 0.9).to_num::<f64>(),
             );
             let tri: [ClipVertex; 3] = core::array::from_fn(|_| {
-                let wv = rng.fx(1.0, 6.0);
-                let x =
-                    Fx::from_num((cx + rng.fx(-size, size).to_num::<f64>()) * wv.to_num::<f64>());
-                let y =
-                    Fx::from_num((cy + rng.fx(-size, size).to_num::<f64>()) * wv.to_num::<f64>());
-                let z = Fx::from_num(rng.fx(-0.9, 0.9).to_num::<f64>() * wv.to_num::<f64>());
-                let mut v = ClipVertex::new([x, y, z, wv], [rng.fx(-2.0, 3.0), rng.fx(-2.0, 3.0)]);
+                let wv = fx(&mut rng, 1.0, 6.0);
+                let x = Fx::from_num(
+                    (cx + fx(&mut rng, -size, size).to_num::<f64>()) * wv.to_num::<f64>(),
+                );
+                let y = Fx::from_num(
+                    (cy + fx(&mut rng, -size, size).to_num::<f64>()) * wv.to_num::<f64>(),
+                );
+                let z = Fx::from_num(fx(&mut rng, -0.9, 0.9).to_num::<f64>() * wv.to_num::<f64>());
+                let mut v = ClipVertex::new(
+                    [x, y, z, wv],
+                    [fx(&mut rng, -2.0, 3.0), fx(&mut rng, -2.0, 3.0)],
+                );
                 let c = (rng.next() % 257) as u16;
                 v.color = [c; 3];
                 v
