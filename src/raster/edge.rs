@@ -182,16 +182,10 @@ mod tests {
     /// The division-free start equals the divided one wherever it answers.
     #[test]
     fn start_near_top_matches_division() {
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut rng = crate::test_rng::Rng(0x9E37_79B9_7F4A_7C15);
         let mut answered = 0;
         for i in 0..400_000 {
-            let r = next();
+            let r = rng.next();
             let span = [1 << 6, 1 << 12, 1 << 17, 1 << 22][i % 4];
             let x0 = (r % (2 * span)) as i32 - span as i32;
             let dy = 1 + ((r >> 24) % span) as i32;
