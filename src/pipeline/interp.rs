@@ -13,7 +13,6 @@
 
 use super::recip::{mul_q16, recip_q30};
 use super::setup::TriSetup;
-#[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
 use crate::math::div::mul_wide_signed;
 use crate::shading::Varyings;
 use crate::texture::mip::lambda_q8;
@@ -206,18 +205,40 @@ static INV_SMALL: [u32; 64] = {
     t
 };
 
-/// `diff * inv / 2^16` (floor) for `inv < 2^17`: on ARMv6-M a 32 x 32-bit product instead of
-/// the `__aeabi_lmul` call of an `i64` product; elsewhere the `i64` product (which measured
-/// cheaper on Cortex-M4F than the signed 32-bit form).
+/// `diff * inv / 2^16` (floor) for `inv < 2^17`: on ARMv6-M two 32-bit products (see
+/// [`scale_q16_split`]) instead of the `__aeabi_lmul` call of an `i64` product; elsewhere the
+/// `i64` product (which measured cheaper on Cortex-M4F than the signed 32-bit form).
 #[inline(always)]
 fn scale_q16(diff: i32, inv: u32) -> i32 {
     #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
     {
-        (mul_wide_signed(diff, inv as i32) >> 16) as i32
+        scale_q16_split(diff, inv)
     }
     #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
     {
         ((i64::from(diff) * i64::from(inv)) >> 16) as i32
+    }
+}
+
+/// [`scale_q16`] from two 32-bit products, exactly: with `diff = dh 2^16 + dl`
+/// (`0 <= dl < 2^16`), `floor(diff inv / 2^16) = dh inv + floor(dl inv / 2^16)`, and for
+/// `inv <= 2^15` (every segment of two or more pixels) both products fit 32 bits; a longer
+/// reach's `inv = 2^16` (one pixel) is `diff` itself. Compiled everywhere so every target
+/// tests it.
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn scale_q16_split(diff: i32, inv: u32) -> i32 {
+    if inv <= 1 << 15 {
+        let (dh, dl) = (diff >> 16, (diff & 0xFFFF) as u32);
+        dh.wrapping_mul(inv as i32)
+            .wrapping_add(((dl * inv) >> 16) as i32)
+    } else if inv == 1 << 16 {
+        diff
+    } else {
+        (mul_wide_signed(diff, inv as i32) >> 16) as i32
     }
 }
 
@@ -467,4 +488,27 @@ impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
 #[inline(always)]
 pub(crate) fn step<V: Varyings>(v: &mut V, d: &V) {
     add(v, d);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{scale_q16_split, INV_SMALL};
+    use crate::test_rng::Rng;
+
+    /// The two-product form equals the 64-bit product for every segment length and for
+    /// differences over the whole `i32` range.
+    #[test]
+    fn scale_split_matches_wide_product() {
+        let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+        let wide = |d: i32, inv: u32| ((i64::from(d) * i64::from(inv)) >> 16) as i32;
+        for &inv in &INV_SMALL[1..] {
+            for d in [0, 1, -1, 0xFFFF, -0x10000, i32::MAX, i32::MIN, 0x7FFF_0000] {
+                assert_eq!(scale_q16_split(d, inv), wide(d, inv), "d {d} inv {inv}");
+            }
+            for _ in 0..20_000 {
+                let d = rng.next() as i32 >> (rng.next() % 24);
+                assert_eq!(scale_q16_split(d, inv), wide(d, inv), "d {d} inv {inv}");
+            }
+        }
+    }
 }
