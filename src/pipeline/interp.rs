@@ -194,6 +194,27 @@ impl<V: Varyings> Fill<V> for ExactInterp<V> {
     }
 }
 
+/// The change per pixel from `from` to `to`, per varying: `per` applied to `to - from`
+/// (wrapping).
+#[inline(always)]
+fn chord_slope<V: Varyings>(from: &V, to: &V, per: impl Fn(i32) -> i32) -> V {
+    let mut slope = *to;
+    for i in 0..V::N {
+        slope.as_mut_slice()[i] = per(to.as_slice()[i].wrapping_sub(from.as_slice()[i]));
+    }
+    slope
+}
+
+/// Undoes the coordinate shift on a linear piece's start and slope:
+/// `(a + i d) << k = (a << k) + i (d << k)` modulo 2^32, so once per piece.
+#[inline(always)]
+fn unshift_piece<V: Varyings>(start: &mut V, slope: &mut V, spec: FillSpec) {
+    if spec.shift != 0 {
+        unshift(start, spec.pair, spec.shift);
+        unshift(slope, spec.pair, spec.shift);
+    }
+}
+
 /// `ceil(2^16 / n)` for `n` in `1..64`: slopes of short segments without a divide.
 static INV_SMALL: [u32; 64] = {
     let mut t = [0u32; 64];
@@ -303,22 +324,17 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
         self.next.add_scaled(&self.d, reach as i32);
         let end = self.next.resolve();
         let k = reach.min(63);
-        let mut slope = end;
-        for i in 0..V::N {
-            let diff = end.as_slice()[i].wrapping_sub(self.exact.as_slice()[i]);
-            slope.as_mut_slice()[i] = if reach == 1 << self.log2_n {
+        let whole = reach == 1 << self.log2_n;
+        let slope = chord_slope(&self.exact, &end, |diff| {
+            if whole {
                 diff >> self.log2_n
             } else {
                 scale_q16(diff, INV_SMALL[k as usize])
-            };
-        }
+            }
+        });
         self.cur = self.exact;
         self.slope = slope;
-        if spec.shift != 0 {
-            // (a + i d) << k = (a << k) + i (d << k) modulo 2^32: once per segment.
-            unshift(&mut self.cur, spec.pair, spec.shift);
-            unshift(&mut self.slope, spec.pair, spec.shift);
-        }
+        unshift_piece(&mut self.cur, &mut self.slope, spec);
         self.exact = end;
         self.in_seg = seg;
         self.left -= seg;
@@ -390,20 +406,13 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
             next.add_scaled(&Hyper::dx(s), reach as i32);
             let end = next.resolve();
             let inv = INV_SMALL[reach.min(63) as usize];
-            let mut slope = end;
-            for i in 0..V::N {
-                let diff = end.as_slice()[i].wrapping_sub(first.as_slice()[i]);
-                slope.as_mut_slice()[i] = scale_q16_short(diff, inv);
-            }
+            let slope = chord_slope(&first, &end, |diff| scale_q16_short(diff, inv));
             (first, slope, lambda)
         } else {
             let lambda = if spec.lod { affine_lambda(s, a, b) } else { 0 };
             (s.at(x, y), s.dx, lambda)
         };
-        if spec.shift != 0 {
-            unshift(&mut start, spec.pair, spec.shift);
-            unshift(&mut slope, spec.pair, spec.shift);
-        }
+        unshift_piece(&mut start, &mut slope, spec);
         Piece {
             start,
             slope,
@@ -429,10 +438,7 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
             // The affine span's only segment: undo the coordinate shift once, and take its
             // (constant) level of detail.
             self.shifted = true;
-            if spec.shift != 0 {
-                unshift(&mut self.cur, spec.pair, spec.shift);
-                unshift(&mut self.slope, spec.pair, spec.shift);
-            }
+            unshift_piece(&mut self.cur, &mut self.slope, spec);
             if spec.lod {
                 self.seg_lambda = affine_lambda(s, spec.pair.0, spec.pair.1);
             }

@@ -132,20 +132,23 @@ impl EdgeWalker {
         let half = one / 2;
         let den = i64::from(one) * i64::from(dy.max(1));
         let yc = py.wrapping_mul(one).wrapping_add(half);
-        let (step, step_rem) = ceil_div_rem(i64::from(one) * i64::from(dx), den);
-        let t = yc.wrapping_sub(y0);
-        let near_top = if HW_DIVIDE {
-            None
-        } else {
-            start_near_top(x0, dy, t, step as i32, step_rem as i32)
+        let n = || {
+            mul_wide_signed(x0.wrapping_sub(half), dy)
+                .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx))
         };
-        let (x, rem) = match near_top {
-            Some(start) => start,
-            None => {
-                let n = mul_wide_signed(x0.wrapping_sub(half), dy)
-                    .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx));
-                ceil_div_rem(n, den)
-            }
+        // With a divide instruction, the two divisions in the order that measured cheapest on
+        // x86 and Cortex-M4F; without, the step first, whose quotient gives the start.
+        let ((x, rem), (step, step_rem)) = if HW_DIVIDE {
+            let start = ceil_div_rem(n(), den);
+            (start, ceil_div_rem(i64::from(one) * i64::from(dx), den))
+        } else {
+            let (step, step_rem) = ceil_div_rem(i64::from(one) * i64::from(dx), den);
+            let t = yc.wrapping_sub(y0);
+            let start = match start_near_top(x0, dy, t, step as i32, step_rem as i32) {
+                Some(start) => start,
+                None => ceil_div_rem(n(), den),
+            };
+            (start, (step, step_rem))
         };
         EdgeWalker {
             x: x as i32,

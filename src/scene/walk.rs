@@ -109,9 +109,10 @@ impl CachedVertex {
     fn screen(&self) -> ScreenVertex {
         let c = i32::from(self.color.min(COLOR_ONE)) << 16;
         let sub = |p: i32| ((p & ((2 << SUB_BITS) - 1)) - (1 << (SUB_BITS - 1))) as i16;
+        let (x, y) = self.xy();
         ScreenVertex {
-            x: self.x >> (SUB_BITS + 1),
-            y: self.y >> (SUB_BITS + 1),
+            x,
+            y,
             sub: [sub(self.x), sub(self.y)],
             z: self.z,
             w: self.w,
