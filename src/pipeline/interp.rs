@@ -400,8 +400,22 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
                 0
             };
             let first = h.resolve();
+            if len <= 1 {
+                // One pixel: its value is all the span needs (the slope is never stepped
+                // into a pixel), so no second reciprocal. About one span in five of a finely
+                // tessellated mesh.
+                let mut start = first;
+                let mut slope = V::zero();
+                unshift_piece(&mut start, &mut slope, spec);
+                return Piece {
+                    start,
+                    slope,
+                    len: len as usize,
+                    lambda,
+                };
+            }
             // As `segment`: the last segment ends on the span's last pixel.
-            let reach = if len > 1 { len - 1 } else { 1 };
+            let reach = len - 1;
             let mut next = h;
             next.add_scaled(&Hyper::dx(s), reach as i32);
             let end = next.resolve();
