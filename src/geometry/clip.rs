@@ -234,9 +234,12 @@ pub fn keeps<const N: usize>(t: &ScreenTriangle<N>, cull: Cull) -> bool {
 pub fn keeps_xy(t: [(i32, i32); 3], cull: Cull) -> bool {
     // Wrapping only where coordinates differ by 2^31 or more (never a panic).
     let d = |a: i32, b: i32| i64::from(a) - i64::from(b);
-    let area2 = d(t[1].0, t[0].0)
-        .wrapping_mul(d(t[2].1, t[0].1))
-        .wrapping_sub(d(t[2].0, t[0].0).wrapping_mul(d(t[1].1, t[0].1)));
+    let area2 = crate::math::wide::det2(
+        d(t[1].0, t[0].0),
+        d(t[2].0, t[0].0),
+        d(t[1].1, t[0].1),
+        d(t[2].1, t[0].1),
+    );
     // y points down on screen, so counter-clockwise in NDC (front) has negative area.
     let front = area2 < 0;
     area2 != 0

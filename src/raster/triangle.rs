@@ -77,8 +77,13 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
     }
     let [top, mid, bot] = p;
     // Side of the middle vertex relative to the long edge; zero means collinear.
-    let cross = (i64::from(mid.0) - i64::from(top.0)) * (i64::from(bot.1) - i64::from(top.1))
-        - (i64::from(mid.1) - i64::from(top.1)) * (i64::from(bot.0) - i64::from(top.0));
+    let d = |a: i32, b: i32| i64::from(a) - i64::from(b);
+    let cross = crate::math::wide::det2(
+        d(mid.0, top.0),
+        d(mid.1, top.1),
+        d(bot.0, top.0),
+        d(bot.1, top.1),
+    );
     if cross == 0 {
         return;
     }
