@@ -131,7 +131,9 @@ impl Viewport {
         let axis = |n: i64, c: i64| -> (i32, i16) {
             let num = 2 * n + w;
             let s = div_floor_i64(num, 2 * w);
-            let r = num - s * 2 * w; // 0 <= r < 2w
+            // 0 <= r < 2w < 2^32: exact modulo 2^32, so one 32-bit product (an
+            // `__aeabi_lmul` call on Cortex-M0+ as an `i64` product).
+            let r = i64::from((num as u32).wrapping_sub((s as u32).wrapping_mul(2 * w as u32)));
             let off = if HW_DIVIDE || w >= 1 << 30 {
                 div_floor_i64(((r - w) << R) + w, 2 * w)
             } else {
