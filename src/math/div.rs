@@ -25,7 +25,11 @@ pub const HW_DIVIDE: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic
 
 /// `n / d` rounded towards zero, exactly; `d` must not be zero (then `0` is returned, never
 /// a panic).
-#[inline]
+///
+/// Out of line: every caller calls it anyway, and an `#[inline]` function gets a copy in
+/// each crate that instantiates a generic caller (a firmware linked two identical ~490-byte
+/// copies).
+#[inline(never)]
 pub fn div_u64(n: u64, d: u64) -> u64 {
     if d == 0 {
         return 0;
