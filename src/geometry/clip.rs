@@ -164,22 +164,26 @@ pub fn clip_and_project_varyings<const N: usize>(
     let mut n = 3;
     poly[..3].copy_from_slice(&a);
     let any = codes[0] | codes[1] | codes[2];
-    if any != 0 {
-        let mut next = [empty; MAX_POLY];
+    // Clipping alternates between two polygon buffers by swapping references (copying the
+    // clipped polygon back each plane linked a variable-length `memcpy`, ~900 bytes).
+    let mut spare;
+    let fin: &[Attr<N>] = if any != 0 {
+        spare = [empty; MAX_POLY];
+        let (mut src, mut dst) = (&mut poly, &mut spare);
         for plane in 0..PLANES {
             if any & (1 << plane) == 0 {
                 continue;
             }
             let mut m = 0;
             for i in 0..n {
-                let (cur, nxt) = (&poly[i], &poly[(i + 1) % n]);
+                let (cur, nxt) = (&src[i], &src[(i + 1) % n]);
                 let (dc, dn) = (dist(plane, cur, guard), dist(plane, nxt, guard));
                 if dc >= 0 && m < MAX_POLY {
-                    next[m] = *cur;
+                    dst[m] = *cur;
                     m += 1;
                 }
                 if (dc >= 0) != (dn >= 0) && m < MAX_POLY {
-                    next[m] = if dc >= 0 {
+                    dst[m] = if dc >= 0 {
                         intersect(cur, nxt, dc, dn, noperspective)
                     } else {
                         intersect(nxt, cur, dn, dc, noperspective)
@@ -191,11 +195,14 @@ pub fn clip_and_project_varyings<const N: usize>(
             if n < 3 {
                 return;
             }
-            poly[..n].copy_from_slice(&next[..n]);
+            core::mem::swap(&mut src, &mut dst);
         }
-    }
+        &src[..n]
+    } else {
+        &poly[..n]
+    };
     let mut screen = [ScreenVertex::<N>::default(); MAX_POLY];
-    for (s, a) in screen.iter_mut().zip(&poly[..n]) {
+    for (s, a) in screen.iter_mut().zip(fin) {
         *s = project_attr(a, vp);
     }
     for i in 1..n - 1 {
