@@ -196,16 +196,10 @@ impl Mat4 {
     /// The product `self · o` (applies `o` first), each entry an exact sum rounded once,
     /// saturating at the `Fx` range.
     pub fn mul(&self, o: &Mat4) -> Mat4 {
-        let (a, b) = (&self.m, &o.m);
         let mut m = [[O; 4]; 4];
         for (i, row) in m.iter_mut().enumerate() {
             for (j, e) in row.iter_mut().enumerate() {
-                *e = saturate(sum_q32([
-                    prod(a[i][0], b[0][j]),
-                    prod(a[i][1], b[1][j]),
-                    prod(a[i][2], b[2][j]),
-                    prod(a[i][3], b[3][j]),
-                ]));
+                *e = product_entry(&self.m[i], &o.m, j);
             }
         }
         Mat4 { m }
@@ -265,6 +259,19 @@ impl Mul for Mat4 {
     fn mul(self, rhs: Mat4) -> Mat4 {
         Mat4::mul(&self, &rhs)
     }
+}
+
+/// Entry `j` of `row · b` (one row of [`Mat4::mul`]). Out of line: a product runs once
+/// per frame or object, and the sixteen unrolled entries cost about 600 bytes of flash.
+#[inline(never)]
+fn product_entry(row: &[Fx; 4], b: &[[Fx; 4]; 4], j: usize) -> Fx {
+    let col = |k: usize| b[k].get(j).copied().unwrap_or(O);
+    saturate(sum_q32([
+        prod(row[0], col(0)),
+        prod(row[1], col(1)),
+        prod(row[2], col(2)),
+        prod(row[3], col(3)),
+    ]))
 }
 
 // Without this impl, `a.mul(&b)` on a by-value `a` would resolve to `Mul<Mat4>::mul`
