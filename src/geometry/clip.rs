@@ -203,7 +203,10 @@ pub fn clip_and_project_varyings<const N: usize>(
     };
     let mut screen = [ScreenVertex::<N>::default(); MAX_POLY];
     for (s, a) in screen.iter_mut().zip(fin) {
-        *s = project_attr(a, vp);
+        // Through a local copy: `fin` points into either polygon buffer, and a copy straight
+        // from it made LLVM link `memmove` (1.6 KB) for wide vertices.
+        let a = *a;
+        *s = project_attr(&a, vp);
     }
     for i in 1..n - 1 {
         let t = [screen[0], screen[i], screen[i + 1]];
