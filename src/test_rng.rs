@@ -1,5 +1,10 @@
 //! The deterministic generator the crate's unit tests draw their inputs from (xorshift64:
-//! fast, reproducible, no dependency). Test builds only.
+//! fast, reproducible, no dependency), and the edge values of the 16-bit-split arithmetic
+//! they all try. Test builds only.
+
+/// Values at and just past the `i16` range and zero, where a split into 16-bit halves
+/// changes form.
+pub(crate) const I16_EDGES: [i64; 7] = [0, 1, -1, 32767, -32768, 32768, -32769];
 
 /// Xorshift64 state; any non-zero seed.
 pub(crate) struct Rng(pub u64);

@@ -162,21 +162,15 @@ mod tests {
 
     #[test]
     fn small_determinant_matches_the_wide_one() {
-        let edge = [
-            0i64,
-            1,
-            -1,
-            32767,
-            -32768,
-            32768,
-            -32769,
-            1 << 20,
-            -(1 << 31),
-        ];
-        for &a in &edge {
-            for &b in &edge {
-                for &c in &edge {
-                    for &d in &edge {
+        let edge = || {
+            crate::test_rng::I16_EDGES
+                .into_iter()
+                .chain([1 << 20, -(1 << 31)])
+        };
+        for a in edge() {
+            for b in edge() {
+                for c in edge() {
+                    for d in edge() {
                         let wide = a.wrapping_mul(d).wrapping_sub(b.wrapping_mul(c));
                         if let Some(v) = split::det2_small(a, b, c, d) {
                             assert_eq!(v, wide, "{a} {b} {c} {d}");

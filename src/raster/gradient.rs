@@ -595,19 +595,12 @@ mod tests {
 
     #[test]
     fn split_multiply_is_exact() {
-        let vals = [
-            0i64,
-            1,
-            -1,
-            32767,
-            -32768,
-            32768,
-            -32769,
-            i32::MAX as i64,
-            i32::MIN as i64,
-        ];
-        for &a in vals.iter().chain(&[1 << 40, -(1 << 33) + 7]) {
-            for &b in &vals {
+        let vals = || {
+            let ends = [i64::from(i32::MAX), i64::from(i32::MIN)];
+            crate::test_rng::I16_EDGES.into_iter().chain(ends)
+        };
+        for a in vals().chain([1 << 40, -(1 << 33) + 7]) {
+            for b in vals() {
                 assert_eq!(mul_split(a, b), a.wrapping_mul(b), "{a} * {b}");
             }
         }
