@@ -403,7 +403,8 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
             if len <= 1 {
                 // One pixel: its value is all the span needs (the slope is never stepped
                 // into a pixel), so no second reciprocal. About one span in five of a finely
-                // tessellated mesh.
+                // tessellated mesh. (A return of its own: folded into the slope below as a
+                // branch, the M4F sphere measured 1.4 instructions per pixel more.)
                 let mut start = first;
                 let mut slope = V::zero();
                 unshift_piece(&mut start, &mut slope, spec);

@@ -140,8 +140,8 @@ impl PlaneSetup {
         if cs != 0 && !(o1 | o2) && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
             let c = &self.bary;
             // Each product is below 2^62 in magnitude: the sums fit i64.
-            let gxw = dot2(d1, d2, c[0], c[1]);
-            let gyw = dot2(d1, d2, c[2], c[3]);
+            let gxw = wide::dot2(d1, d2, c[0], c[1]);
+            let gyw = wide::dot2(d1, d2, c[2], c[3]);
             let round = self.bary_round;
             let gx = wide::sar(gxw.wrapping_add(round), cs);
             let gy = wide::sar(gyw.wrapping_add(round), cs);
@@ -304,44 +304,6 @@ fn long_div_round(n: i64, d: i64, shift: u32, div_u64: impl Fn(u64) -> u64) -> i
     } else {
         q.wrapping_neg()
     }
-}
-
-/// `a1 b1 + a2 b2` exactly (each product below 2^62 in magnitude, as the barycentric
-/// gradients' are). On ARMv6-M, where a signed 32 x 32 -> 64-bit product is four 16-bit
-/// products plus a magnitude and a sign fix-up each, the sum is taken from signed 16-bit
-/// halves directly (`a = ah 2^16 + al`, `ah` signed, `al` in `0..2^16`): eight products,
-/// no magnitudes, the partial sums carried in `i64` (about half the instructions).
-#[inline(always)]
-fn dot2(a1: i32, a2: i32, b1: i32, b2: i32) -> i64 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
-        dot2_split(a1, a2, b1, b2)
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
-        mul_wide_signed(a1, b1).wrapping_add(mul_wide_signed(a2, b2))
-    }
-}
-
-/// The 16-bit-halves form of [`dot2`] (compiled everywhere so every target tests it).
-#[cfg_attr(
-    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-    allow(dead_code)
-)]
-#[inline(always)]
-fn dot2_split(a1: i32, a2: i32, b1: i32, b2: i32) -> i64 {
-    let hi = |x: i32| x >> 16; // -2^15..2^15
-    let lo = |x: i32| x & 0xFFFF; // 0..2^16
-                                  // |hi hi| <= 2^30; |hi lo| < 2^31; lo lo < 2^32 (as u32).
-    let hh = i64::from(hi(a1) * hi(b1)) + i64::from(hi(a2) * hi(b2));
-    let mid = i64::from(hi(a1) * lo(b1))
-        + i64::from(lo(a1) * hi(b1))
-        + i64::from(hi(a2) * lo(b2))
-        + i64::from(lo(a2) * hi(b2));
-    let ll = u64::from((lo(a1) as u32).wrapping_mul(lo(b1) as u32))
-        + u64::from((lo(a2) as u32).wrapping_mul(lo(b2) as u32));
-    // Modulo 2^64 (the exact sum fits i64): hh 2^32 + mid 2^16 + ll.
-    (hh << 32).wrapping_add(mid << 16).wrapping_add(ll as i64)
 }
 
 /// `a * b` (wrapping), exactly. On ARMv6-M, where a 64-bit product is a library call
@@ -546,50 +508,6 @@ mod tests {
                     "{n} << {shift} / {d} (~{wide})"
                 );
             }
-        }
-    }
-
-    #[test]
-    fn split_dot_product_is_exact() {
-        let vals = [
-            0i32,
-            1,
-            -1,
-            65535,
-            65536,
-            -65536,
-            32767,
-            -32768,
-            i32::MAX,
-            i32::MIN + 1,
-            0x7FFF_0000,
-            -0x7FFF_FFFF,
-        ];
-        let want = |a1: i32, a2: i32, b1: i32, b2: i32| {
-            i64::from(a1) * i64::from(b1) + i64::from(a2) * i64::from(b2)
-        };
-        for &a1 in &vals {
-            for &a2 in &vals {
-                for &b1 in &vals {
-                    for &b2 in &vals {
-                        assert_eq!(dot2_split(a1, a2, b1, b2), want(a1, a2, b1, b2));
-                    }
-                }
-            }
-        }
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        for _ in 0..200_000 {
-            let mut next = || {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
-                ((x >> 16) as i32) >> (x % 17)
-            };
-            let (a1, a2, b1, b2) = (next(), next(), next(), next());
-            if [a1, a2, b1, b2].contains(&i32::MIN) {
-                continue;
-            }
-            assert_eq!(dot2_split(a1, a2, b1, b2), want(a1, a2, b1, b2));
         }
     }
 
