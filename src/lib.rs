@@ -45,7 +45,7 @@
 //! | fixed-point math | [`math`] | `I16F16` ([`math::Fx`]) vectors and 4x4 matrices; angles in 1/65536 turn; table sin/cos; division-free reciprocal |
 //! | geometry | [`geometry`] | clip space `I16F16`; clipping in `i64`; screen coordinates with 4 sub-pixel bits; depth `0..=65535` with 14 fraction bits |
 //! | raster | [`raster`] | exact integer edge DDA (top-left rule) emitting spans to a sink; plane equations with wrapping `i32` stepping |
-//! | pipeline | [`pipeline`] | per-triangle set-up of a plane per varying (`i32` bits in the shader's formats, times `q = w_min / w` (Q30) for perspective); spans in 32-pixel chunks: depth mask, varyings, shader; affine, subdivided, exact or adaptive (per triangle) interpolation |
+//! | pipeline | [`pipeline`] | per-triangle set-up of a plane per varying (`i32` bits in the shader's formats, times `q = w_min / w` (Q30) for perspective); spans in 32-pixel chunks: depth mask, varyings, shader; affine, subdivided (chords), quadratic (parabolas by forward differences), exact or adaptive (per triangle) interpolation |
 //! | texture | [`texture`] | power-of-two RGB565 textures; GL wrap modes; nearest and 8-bit-weight bilinear; mip chains with Heckbert's LOD in Q8.8 and GL's mipmapped filters |
 //! | shading | [`shading`] | the [`shading::Shader`] trait (varyings `[i32; N]`, `N <= 8`; RGB565 out or discard); [`shading::TexBinding`] (a texture, filter and wraps as a shader uses them); the built-in shaders; per-pixel lighting ([`shading::lighting`]: unit vectors in Q14 renormalised through a `1/sqrt` table, Q8 coefficients, specular power by table) and bump / normal mapping ([`shading::bump`]: tangent-space normals in Q12) |
 //! | colour | [`color`] | RGB565 inside; targets in RGB565, RGB888 or Gray8 |

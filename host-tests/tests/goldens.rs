@@ -151,6 +151,8 @@ fn projections() {
         ("subdivided-8", Projection::Subdivided { log2_n: 3 }),
         ("subdivided-16", Projection::Subdivided { log2_n: 4 }),
         ("subdivided-32", Projection::Subdivided { log2_n: 5 }),
+        ("quadratic-16", Projection::Quadratic { log2_n: 4 }),
+        ("quadratic-32", Projection::Quadratic { log2_n: 5 }),
         ("affine", Projection::Affine),
     ] {
         let mode = DrawMode {

@@ -596,6 +596,7 @@ fn coordinates_at_the_fixed_point_limits() {
         Projection::Affine,
         Projection::Exact,
         Projection::Subdivided { log2_n: 3 },
+        Projection::Quadratic { log2_n: 4 },
     ] {
         for (shading, t) in [(Shading::Modulate, Some(&tex)), (Shading::Gouraud, None)] {
             let mode = DrawMode {
@@ -1028,6 +1029,7 @@ fn degenerate_triangles_draw_nothing_in_any_mode() {
         Projection::Affine,
         Projection::Exact,
         Projection::Subdivided { log2_n: 4 },
+        Projection::Quadratic { log2_n: 5 },
     ] {
         for filter in [Filter::Nearest, Filter::Bilinear] {
             for (shading, t) in [

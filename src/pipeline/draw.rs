@@ -52,7 +52,7 @@ fn check(mode: &DrawMode, texture: &Option<MipTexture<'_>>) -> Result<(), Error>
     if mode.shading.textured() && texture.is_none() {
         return Err(Error::BadMode("textured shading needs a texture"));
     }
-    if let Projection::Subdivided { log2_n } = mode.projection {
+    if let Projection::Subdivided { log2_n } | Projection::Quadratic { log2_n } = mode.projection {
         if !(1..=6).contains(&log2_n) {
             return Err(Error::BadMode(
                 "subdivision log2_n must be in 1..=6 (N = 2..64)",
@@ -95,6 +95,9 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             ProjKind::Affine => Projection::Affine,
             ProjKind::Exact => Projection::Exact,
             ProjKind::Subdivided => Projection::Subdivided {
+                log2_n: <M::P as ProjectionStage>::LOG2_N,
+            },
+            ProjKind::Quadratic => Projection::Quadratic {
                 log2_n: <M::P as ProjectionStage>::LOG2_N,
             },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
@@ -161,16 +164,43 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         self
     }
 
-    /// With a different subdivision length for [`Projection::Subdivided`] (`log2_n` in
-    /// `1..=6`).
+    /// With a different segment length for [`Projection::Subdivided`] and
+    /// [`Projection::Quadratic`] (`log2_n` in `1..=6`; other projections ignore it).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use fixel::geometry::{Cull, Viewport};
+    /// use fixel::pipeline::*;
+    /// use fixel::texture::{Bilinear, Repeat, Texture};
+    /// use fixel::Error;
+    /// static TEXELS: [Rgb565; 16] = [Rgb565::new(31, 0, 0); 16];
+    /// let tex = Texture::new(&TEXELS, 4, 4)?;
+    /// let vp = Viewport::new(0, 0, 320, 240)?;
+    /// // The benchmark cube's mode: a parabola through exact values every 32 pixels.
+    /// type Cube = Pipeline<Quadratic, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+    /// let draw = Draw::<Rgb565>::new::<Cube>(Some(tex), vp, Cull::Back)?.with_subdivision(5)?;
+    /// assert_eq!(draw.mode().projection, Projection::Quadratic { log2_n: 5 });
+    /// // 128-pixel segments are refused.
+    /// assert!(matches!(draw.with_subdivision(7), Err(Error::BadMode(_))));
+    /// # Ok::<(), Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::BadMode`] unless `log2_n` is in `1..=6`.
     pub fn with_subdivision(mut self, log2_n: u8) -> Result<Self, Error> {
         if !(1..=6).contains(&log2_n) {
             return Err(Error::BadMode(
                 "subdivision log2_n must be in 1..=6 (N = 2..64)",
             ));
         }
-        if let Projection::Subdivided { .. } = self.mode.projection {
-            self.mode.projection = Projection::Subdivided { log2_n };
+        match self.mode.projection {
+            Projection::Subdivided { .. } => {
+                self.mode.projection = Projection::Subdivided { log2_n };
+            }
+            Projection::Quadratic { .. } => {
+                self.mode.projection = Projection::Quadratic { log2_n };
+            }
+            _ => {}
         }
         Ok(self)
     }

@@ -13,6 +13,7 @@
 
 use super::recip::{mul_q16, recip_q30};
 use super::setup::TriSetup;
+use super::stages::ProjKind;
 use crate::math::div::mul_wide_signed;
 use crate::shading::Varyings;
 use crate::texture::mip::lambda_q8;
@@ -39,7 +40,7 @@ pub(crate) fn affine_lambda<V: Varyings>(s: &TriSetup<V>, a: usize, b: usize) ->
 /// `lambda` of a perspective mapping at a pixel with interpolants `h`: the derivative of
 /// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`).
 #[inline(always)]
-fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize, b: usize) -> i32 {
+pub(super) fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize, b: usize) -> i32 {
     let r32 = recip_q30(h.q);
     let r = i64::from(r32);
     let m = |x: i32| mul_q16(x, r32);
@@ -65,25 +66,25 @@ pub(crate) fn lambda_at<V: Varyings>(s: &TriSetup<V>, x: i32, y: i32, a: usize, 
 
 /// The perspective interpolants: varyings times `q`, and `q`.
 #[derive(Clone, Copy, Debug)]
-struct Hyper<V> {
+pub(super) struct Hyper<V> {
     s: V,
     q: i32,
 }
 
 impl<V: Varyings> Hyper<V> {
     #[inline(always)]
-    fn at(s: &TriSetup<V>, x: i32, y: i32) -> Self {
+    pub(super) fn at(s: &TriSetup<V>, x: i32, y: i32) -> Self {
         Hyper {
             s: s.at(x, y),
             q: s.plane_at(&s.q, x, y),
         }
     }
     #[inline(always)]
-    fn dx(s: &TriSetup<V>) -> Self {
+    pub(super) fn dx(s: &TriSetup<V>) -> Self {
         Hyper { s: s.dx, q: s.q.dx }
     }
     #[inline(always)]
-    fn add_scaled(&mut self, d: &Hyper<V>, n: i32) {
+    pub(super) fn add_scaled(&mut self, d: &Hyper<V>, n: i32) {
         for k in 0..V::N {
             self.s.as_mut_slice()[k] =
                 self.s.as_slice()[k].wrapping_add(d.s.as_slice()[k].wrapping_mul(n));
@@ -97,7 +98,7 @@ impl<V: Varyings> Hyper<V> {
     }
     /// The varyings: `s / q`.
     #[inline(always)]
-    fn resolve(&self) -> V {
+    pub(super) fn resolve(&self) -> V {
         let r = recip_q30(self.q);
         let mut out = self.s;
         for k in 0..V::N {
@@ -122,6 +123,16 @@ pub(crate) struct FillSpec {
 pub(crate) trait Fill<V: Varyings> {
     /// Starts at pixel `(x, y)` for a span of `len` pixels.
     fn start(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32) -> Self;
+    /// [`start`](Self::start) for projection `kind` (the run-time interpolator picks its
+    /// mode from it; the others have one mode and ignore it).
+    #[inline(always)]
+    fn start_as(s: &TriSetup<V>, x: i32, y: i32, len: u32, log2_n: u32, kind: ProjKind) -> Self
+    where
+        Self: Sized,
+    {
+        let _ = kind;
+        Self::start(s, x, y, len, log2_n)
+    }
     /// Level of detail (Q8.8, before bias) of `pair` at the next pixel.
     fn lambda(&self, s: &TriSetup<V>, pair: (usize, usize)) -> i32;
     /// Writes the varyings of the next `vals.len()` pixels into `vals` (and, with
@@ -208,7 +219,7 @@ fn chord_slope<V: Varyings>(from: &V, to: &V, per: impl Fn(i32) -> i32) -> V {
 /// Undoes the coordinate shift on a linear piece's start and slope:
 /// `(a + i d) << k = (a << k) + i (d << k)` modulo 2^32, so once per piece.
 #[inline(always)]
-fn unshift_piece<V: Varyings>(start: &mut V, slope: &mut V, spec: FillSpec) {
+pub(super) fn unshift_piece<V: Varyings>(start: &mut V, slope: &mut V, spec: FillSpec) {
     if spec.shift != 0 {
         unshift(start, spec.pair, spec.shift);
         unshift(slope, spec.pair, spec.shift);
@@ -216,7 +227,7 @@ fn unshift_piece<V: Varyings>(start: &mut V, slope: &mut V, spec: FillSpec) {
 }
 
 /// `ceil(2^16 / n)` for `n` in `1..64`: slopes of short segments without a divide.
-static INV_SMALL: [u32; 64] = {
+pub(super) static INV_SMALL: [u32; 64] = {
     let mut t = [0u32; 64];
     let mut n = 1;
     while n < 64 {
@@ -230,7 +241,7 @@ static INV_SMALL: [u32; 64] = {
 /// the `__aeabi_lmul` call of an `i64` product; elsewhere the `i64` product (which measured
 /// cheaper on Cortex-M4F than the signed 32-bit form).
 #[inline(always)]
-fn scale_q16(diff: i32, inv: u32) -> i32 {
+pub(super) fn scale_q16(diff: i32, inv: u32) -> i32 {
     #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
     {
         (mul_wide_signed(diff, inv as i32) >> 16) as i32

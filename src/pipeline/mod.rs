@@ -3,12 +3,14 @@
 //! [`ShadedDraw`] draws any [`Shader`](crate::shading::Shader); [`DrawMode`] and [`Pipeline`] name
 //! the classic choices (as enums and as marker types) and [`Draw`] binds them to built-in
 //! shaders, selecting the span loop once. The private `raster` module runs one triangle
-//! (shader hook, set-up, edge walk), `setup` builds its planes, `interp` interpolates the
-//! varyings and `span` is the chunked per-pixel loop (depth mask, varyings, shading).
+//! (shader hook, set-up, edge walk), `setup` builds its planes, `interp` and
+//! `quadratic` interpolate the varyings and `span` is the chunked per-pixel loop (depth mask, varyings, shading).
 
 mod depth_only;
 mod draw;
+mod dyn_interp;
 mod interp;
+mod quadratic;
 mod raster;
 pub mod recip;
 mod setup;
@@ -22,5 +24,6 @@ pub use shaded::ShadedDraw;
 pub use stages::{
     Adaptive, Affine, DepthLess, DepthStage, DepthTest, DrawMode, DynProjection, Exact, Flat,
     FromMode, FromWrap, Gouraud, Modulate, ModulateIntensity, NoDepth, Pipeline, ProjKind,
-    Projection, ProjectionStage, Replace, Shading, ShadingStage, Stages, Subdivided, SubdividedBy,
+    Projection, ProjectionStage, Quadratic, QuadraticBy, Replace, Shading, ShadingStage, Stages,
+    Subdivided, SubdividedBy,
 };

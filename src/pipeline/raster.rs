@@ -36,7 +36,9 @@ impl RasterParams {
         RasterParams {
             viewport: viewport.rect(),
             log2_n: match projection {
-                Projection::Subdivided { log2_n } => u32::from(log2_n),
+                Projection::Subdivided { log2_n } | Projection::Quadratic { log2_n } => {
+                    u32::from(log2_n)
+                }
                 _ => 4,
             },
             budget: match projection {
@@ -48,6 +50,7 @@ impl RasterParams {
             kind: match projection {
                 Projection::Affine => ProjKind::Affine,
                 Projection::Subdivided { .. } => ProjKind::Subdivided,
+                Projection::Quadratic { .. } => ProjKind::Quadratic,
                 Projection::Exact => ProjKind::Exact,
                 Projection::Adaptive { .. } => ProjKind::Adaptive,
             },

@@ -152,7 +152,7 @@ pub(crate) fn setup<V: Varyings>(
     let span = |a: [i64; 3]| a[0].max(a[1]).max(a[2]) - a[0].min(a[1]).min(a[2]);
     let perspective = match proj {
         ProjKind::Affine => false,
-        ProjKind::Exact | ProjKind::Subdivided | ProjKind::Dynamic => true,
+        ProjKind::Exact | ProjKind::Subdivided | ProjKind::Quadratic | ProjKind::Dynamic => true,
         ProjKind::Adaptive => {
             let q_min = q[0].min(q[1]).min(q[2]);
             match texcoords {

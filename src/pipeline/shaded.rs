@@ -66,6 +66,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
             ProjKind::Affine => Projection::Affine,
             ProjKind::Exact => Projection::Exact,
             ProjKind::Subdivided => Projection::Subdivided { log2_n: P::LOG2_N },
+            ProjKind::Quadratic => Projection::Quadratic { log2_n: P::LOG2_N },
             ProjKind::Adaptive => Projection::Adaptive { budget: 64 },
             ProjKind::Dynamic => Projection::Exact,
         };
@@ -78,7 +79,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
         })
     }
 
-    /// With subdivision length `2^log2_n` for the subdivided projection.
+    /// With segment length `2^log2_n` for the subdivided and quadratic projections.
     ///
     /// # Errors
     /// [`Error::BadMode`] unless `log2_n` is in `1..=6`.
@@ -88,8 +89,10 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
                 "subdivision log2_n must be in 1..=6 (N = 2..64)",
             ));
         }
-        if let Projection::Subdivided { .. } = self.projection {
-            self.projection = Projection::Subdivided { log2_n };
+        match self.projection {
+            Projection::Subdivided { .. } => self.projection = Projection::Subdivided { log2_n },
+            Projection::Quadratic { .. } => self.projection = Projection::Quadratic { log2_n },
+            _ => {}
         }
         Ok(self)
     }

@@ -21,7 +21,9 @@
 //! generic chosen once per span (a depth-testing draw into a target without a depth buffer
 //! falls back to the untested loop).
 
+use super::dyn_interp::DynInterp;
 use super::interp::{step, ExactInterp, Fill, FillSpec, Linear};
+use super::quadratic::Quadratic;
 use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage};
 use crate::color::TargetColor;
@@ -521,7 +523,7 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
 ) -> u32 {
     let s = &ctx.setup;
     let pair = S::TEXCOORDS.unwrap_or((0, 1));
-    let mut it = I::start(s, x, y, out.len() as u32, ctx.log2_n);
+    let mut it = I::start_as(s, x, y, out.len() as u32, ctx.log2_n, ctx.kind);
     let (lambda, per_pixel) = lod_policy(ctx, || it.lambda(s, pair));
     let spec = FillSpec {
         pair,
@@ -617,6 +619,10 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     };
     type E<S> = ExactInterp<<S as Shader>::Varyings>;
     type L<S, const SUB: bool> = Linear<<S as Shader>::Varyings, SUB>;
+    type Q<S> = Quadratic<<S as Shader>::Varyings, false>;
+    type Dy<S> = DynInterp<<S as Shader>::Varyings>;
+    // The run-time projection fills chunks through one loop for every perspective mode.
+    let dynamic = P::KIND == ProjKind::Dynamic;
     // Long linear pieces step their varyings inside the shading loop; short ones (N < 16)
     // are filled into the chunk's array first, which costs a store and a load per varying
     // but one shading call per chunk instead of one per piece.
@@ -631,8 +637,10 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         _ => false,
     };
     // One chunk that is one linear piece: the short path.
+    // (A quadratic span of at most three pixels is one chord, the subdivided mode's.)
     let one_piece = affine
-        || (kind == ProjKind::Subdivided && long && out.len() <= 1 << ctx.log2_n.clamp(1, 6));
+        || (kind == ProjKind::Subdivided && long && out.len() <= 1 << ctx.log2_n.clamp(1, 6))
+        || (kind == ProjKind::Quadratic && out.len() <= 3);
     if !S::SMALL && one_piece && out.len() <= CHUNK && short_path_on() {
         return match (affine, zrow) {
             (true, Some(z)) => run_short::<S, C, false, true>(ctx, bound, x0, y, out, z),
@@ -656,6 +664,15 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         (ProjKind::Subdivided, _, None) if long => {
             run_linear::<S, C, true, false>(ctx, bound, x0, y, out, &mut [])
         }
+        (_, _, Some(z)) if dynamic => {
+            run::<S, C, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+        }
+        (_, _, None) if dynamic && S::SMALL => {
+            run::<S, C, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+        }
+        (_, _, None) if dynamic => {
+            run::<S, C, Dy<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+        }
         (ProjKind::Subdivided, _, Some(z)) => {
             run::<S, C, L<S, true>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
         }
@@ -664,6 +681,15 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         }
         (ProjKind::Subdivided, _, None) => {
             run::<S, C, L<S, true>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+        }
+        (ProjKind::Quadratic, _, Some(z)) => {
+            run::<S, C, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+        }
+        (ProjKind::Quadratic, _, None) if S::SMALL => {
+            run::<S, C, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+        }
+        (ProjKind::Quadratic, _, None) => {
+            run::<S, C, Q<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z),
         (_, _, None) if S::SMALL => {
@@ -682,7 +708,8 @@ mod tests {
     use crate::geometry::{ClipVertex, Cull, Viewport};
     use crate::math::Fx;
     use crate::pipeline::{
-        Affine, DepthLess, Draw, ModulateIntensity, Pipeline, Replace, Stages, SubdividedBy,
+        Affine, DepthLess, Draw, ModulateIntensity, Pipeline, QuadraticBy, Replace, Stages,
+        SubdividedBy,
     };
     use crate::surface::Frame;
     use crate::texture::{Bilinear, Nearest, Repeat, Texture};
@@ -761,5 +788,8 @@ mod tests {
         >();
         same_pixels::<Pipeline<SubdividedBy<4>, Nearest, Repeat, Repeat, Replace, DepthLess>>();
         same_pixels::<Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>>();
+        same_pixels::<
+            Pipeline<QuadraticBy<4>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>,
+        >();
     }
 }

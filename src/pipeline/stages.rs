@@ -28,6 +28,13 @@ pub enum Projection {
     /// Perspective-correct at every pixel (hyperbolic interpolation of `u/w, v/w, 1/w`).
     #[default]
     Exact,
+    /// Exact at the start, middle and end of every `2^log2_n` pixels along a span, a
+    /// parabola in between (`log2_n` in `1..=6`): two reciprocals per segment, about the
+    /// error of [`Projection::Subdivided`] with a quarter of the length.
+    Quadratic {
+        /// Log2 of the segment length N.
+        log2_n: u8,
+    },
     /// Chosen per triangle: affine when a bound on the affine error (see
     /// `affine_error_bound` in the set-up) is within `budget` (texels, Q8: 256 = one texel),
     /// exact otherwise. Small or nearly screen-parallel triangles then cost no reciprocal.
@@ -137,6 +144,8 @@ pub enum ProjKind {
     Affine,
     /// See [`Projection::Subdivided`].
     Subdivided,
+    /// See [`Projection::Quadratic`].
+    Quadratic,
     /// See [`Projection::Exact`].
     Exact,
     /// See [`Projection::Adaptive`].
@@ -183,6 +192,28 @@ impl ProjectionStage for Subdivided {
 pub struct SubdividedBy<const LOG2_N: u8>;
 impl<const LOG2_N: u8> ProjectionStage for SubdividedBy<LOG2_N> {
     const KIND: ProjKind = ProjKind::Subdivided;
+    const LOG2_N: u8 = if LOG2_N < 1 {
+        1
+    } else if LOG2_N > 6 {
+        6
+    } else {
+        LOG2_N
+    };
+}
+/// Quadratic projection marker (N comes from the draw, default 16).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Quadratic;
+impl ProjectionStage for Quadratic {
+    const KIND: ProjKind = ProjKind::Quadratic;
+    const LOG2_N: u8 = 4;
+}
+/// Quadratic projection marker with the segment length in the type: `QuadraticBy<5>` is
+/// exact at the start, middle and end of every 32 pixels (`LOG2_N` in `1..=6`; other values
+/// are clamped into that range).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QuadraticBy<const LOG2_N: u8>;
+impl<const LOG2_N: u8> ProjectionStage for QuadraticBy<LOG2_N> {
+    const KIND: ProjKind = ProjKind::Quadratic;
     const LOG2_N: u8 = if LOG2_N < 1 {
         1
     } else if LOG2_N > 6 {
