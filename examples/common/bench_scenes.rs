@@ -73,7 +73,7 @@ const FILTS: [Filt; 5] = [
 ];
 
 /// Every [`Proj`], for parsing names (`proj_listed` fails to compile when one is missing).
-const PROJS: [Proj; 8] = modes::PROJS;
+const PROJS: [Proj; 10] = modes::PROJS;
 
 /// Exhaustive: a new [`Filt`] variant must be added here and to [`FILTS`].
 const fn filt_listed(f: Filt) {
@@ -95,6 +95,8 @@ const fn proj_listed(p: Proj) {
         | Proj::Sub16
         | Proj::Sub32
         | Proj::Sub64
+        | Proj::Quad16
+        | Proj::Quad32
         | Proj::Exact
         | Proj::Adaptive => {}
     }
@@ -169,12 +171,14 @@ pub const SCENES: [Case; 4] = [
 /// Cheaper and dearer modes on the cube and the floor (the per-pixel loop is chosen per
 /// draw; the cheapest, unlit nearest affine, is the fill-rate floor). Any other mode of
 /// `modes.rs` can be named on the command line of `count_scene`.
-pub const MODES: [Case; 11] = [
+pub const MODES: [Case; 13] = [
     case(Scene::Cube, false, Filt::Nearest, Proj::Affine),
     case(Scene::Cube, false, Filt::Nearest, Proj::Exact),
     case(Scene::Cube, true, Filt::Nearest, Proj::Exact),
     case(Scene::Cube, true, Filt::Bilinear, Proj::Sub16),
     case(Scene::Cube, true, Filt::Bilinear, Proj::Sub8),
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Sub4),
+    case(Scene::Cube, true, Filt::Bilinear, Proj::Quad32),
     case(Scene::Cube, true, Filt::Bilinear, Proj::Affine),
     case(Scene::Floor, false, Filt::Nearest, Proj::Affine),
     case(Scene::Floor, false, Filt::Nearest, Proj::Sub16),

@@ -3,7 +3,7 @@
 //! resolved by `fixel::surface::resolve_box` into an 8-row band of the 320 x 240 frame
 //! before it is hashed (flushed). RAM: `k²` times one band.
 
-use crate::scenes::{Fnv1a, FrameResult, Lit, H, ROWS, W};
+use crate::scenes::{Fnv1a, FrameResult, LitSub4 as Lit, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Viewport};

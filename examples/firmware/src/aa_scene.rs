@@ -4,7 +4,7 @@
 //! host's checksum test (it lives outside the firmware library so that the library's code,
 //! and so the other scenes' optimisation, does not change).
 
-use crate::scenes::{Fnv1a, FrameResult, Lit, H, W};
+use crate::scenes::{Fnv1a, FrameResult, LitSub4 as Lit, H, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Viewport};

@@ -9,7 +9,8 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::pipeline::{
-    Adaptive, Affine, DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Replace, Subdivided,
+    Adaptive, Affine, DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Quadratic, Replace,
+    Subdivided,
 };
 use fixel::prelude::{Cull, Error, Viewport};
 use fixel::texture::{
@@ -31,6 +32,11 @@ pub enum Proj {
     Sub32,
     /// Exact every 64 pixels (`Subdivided`, `log2_n = 6`).
     Sub64,
+    /// Exact at the start, middle and end of every 16 pixels, a parabola in between
+    /// (`Quadratic`, `log2_n = 4`).
+    Quad16,
+    /// The same every 32 pixels (`Quadratic`, `log2_n = 5`).
+    Quad32,
     /// Exact at every pixel (`Exact`).
     Exact,
     /// Affine or exact per triangle from an error budget of 1/4 texel
@@ -104,6 +110,8 @@ impl Mode {
             Proj::Sub16 => "sub16",
             Proj::Sub32 => "sub32",
             Proj::Sub64 => "sub64",
+            Proj::Quad16 => "quad16",
+            Proj::Quad32 => "quad32",
             Proj::Exact => "exact",
             Proj::Adaptive => "adaptive",
         }
@@ -159,6 +167,8 @@ impl Mode {
             Proj::Sub16 => by_filter!(Subdivided)?.with_subdivision(4)?,
             Proj::Sub32 => by_filter!(Subdivided)?.with_subdivision(5)?,
             Proj::Sub64 => by_filter!(Subdivided)?.with_subdivision(6)?,
+            Proj::Quad16 => by_filter!(Quadratic)?.with_subdivision(4)?,
+            Proj::Quad32 => by_filter!(Quadratic)?.with_subdivision(5)?,
             Proj::Exact => by_filter!(Exact)?,
             Proj::Adaptive => by_filter!(Adaptive)?.with_adaptive_budget(64),
         };
@@ -174,13 +184,15 @@ impl Mode {
 }
 
 /// Every projection of the report, in the order of its matrices and legends.
-pub const PROJS: [Proj; 8] = [
+pub const PROJS: [Proj; 10] = [
     Proj::Affine,
     Proj::Sub4,
     Proj::Sub8,
     Proj::Sub16,
     Proj::Sub32,
     Proj::Sub64,
+    Proj::Quad16,
+    Proj::Quad32,
     Proj::Exact,
     Proj::Adaptive,
 ];
@@ -217,11 +229,11 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
 
 /// Modes of the lit scenes (cube, sphere): lit and unlit, nearest and bilinear, every
 /// projection.
-pub const LIT_SCENE_MODES: [Mode; 32] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
+pub const LIT_SCENE_MODES: [Mode; 40] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
 /// projection.
-pub const FLOOR_MODES: [Mode; 40] = matrix(
+pub const FLOOR_MODES: [Mode; 50] = matrix(
     &[false],
     &[
         Filt::Nearest,
@@ -233,10 +245,10 @@ pub const FLOOR_MODES: [Mode; 40] = matrix(
 );
 
 /// The floor's unmipmapped modes (firmware `report_floor`).
-pub const FLOOR_PLAIN_MODES: [Mode; 16] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+pub const FLOOR_PLAIN_MODES: [Mode; 20] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
 
 /// The floor's mipmapped modes (firmware `report_floor_mip`).
-pub const FLOOR_MIP_MODES: [Mode; 24] = matrix(
+pub const FLOOR_MIP_MODES: [Mode; 30] = matrix(
     &[false],
     &[Filt::NearestMip, Filt::Trilinear, Filt::TrilinearSpan],
 );

@@ -504,6 +504,8 @@ fn proj_colour(p: Proj) -> plotters::style::RGBColor {
         Proj::Sub16 => RGBColor(188, 160, 0),
         Proj::Sub32 => RGBColor(140, 86, 75),
         Proj::Sub64 => RGBColor(127, 127, 127),
+        Proj::Quad16 => RGBColor(148, 103, 189),
+        Proj::Quad32 => RGBColor(23, 190, 207),
         Proj::Exact => RGBColor(31, 119, 180),
         Proj::Adaptive => RGBColor(44, 160, 44),
     }
@@ -723,14 +725,18 @@ fn main() {
     let mut out = PathBuf::from("target/report");
     let mut runs = 7u32;
     let mut mcu_path: Option<PathBuf> = None;
+    let mut only: Option<String> = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
             "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
             "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
+            "--scene" => only = Some(it.next().expect("--scene NAME").clone()),
             other => {
-                eprintln!("usage: report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)");
+                eprintln!(
+                    "usage: report --out DIR [--runs N] [--mcu mcu.tsv] [--scene cube|sphere|floor] (got `{other}`)"
+                );
                 std::process::exit(2);
             }
         }
@@ -741,6 +747,14 @@ fn main() {
         std::process::exit(1)
     }
 
+    let chosen: Vec<Scene> = Scene::ALL
+        .into_iter()
+        .filter(|s| only.as_deref().is_none_or(|o| o == s.name()))
+        .collect();
+    if chosen.is_empty() {
+        eprintln!("report: no scene named {only:?} (cube, sphere, floor)");
+        std::process::exit(2);
+    }
     let t_start = Instant::now();
     let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();
     let meshes = Meshes {
@@ -748,10 +762,10 @@ fn main() {
         sphere: Box::new(demo::sphere()),
         floor: demo::floor(),
     };
-    let texes: BTreeMap<Scene, Tex> = Scene::ALL.iter().map(|&s| (s, Tex::new(s))).collect();
+    let texes: BTreeMap<Scene, Tex> = chosen.iter().map(|&s| (s, Tex::new(s))).collect();
 
-    let n_modes: usize = Scene::ALL.iter().map(|s| s.modes().len()).sum();
-    let n_ref: usize = Scene::ALL
+    let n_modes: usize = chosen.iter().map(|s| s.modes().len()).sum();
+    let n_ref: usize = chosen
         .iter()
         .map(|&s| {
             let filters = if s == Scene::Floor { 4 } else { 2 };
@@ -767,7 +781,7 @@ fn main() {
 
     // 1. Host timing first, alone (no other thread of ours running).
     let mut rows: BTreeMap<Scene, Vec<Row>> = BTreeMap::new();
-    for &scene in &Scene::ALL {
+    for &scene in &chosen {
         for m in scene.modes() {
             let name = mode_name(m);
             pb.set_message(format!("timing {}/{name}", scene.name()));
@@ -798,7 +812,7 @@ fn main() {
 
     // 2. Errors: references (two threads), then fixel's frames.
     let mut problems = Vec::new();
-    for &scene in &Scene::ALL {
+    for &scene in &chosen {
         let tex = &texes[&scene];
         let frames: Vec<ErrFrame> = scene
             .error_frames()

@@ -86,7 +86,7 @@ fn stages<const V: usize, const T: usize>(
     let Ok(vp) = scenes::viewport() else {
         return false;
     };
-    let Ok(draw) = Draw::new::<scenes::Lit>(Some(data::T256X128), vp, Cull::Back) else {
+    let Ok(draw) = Draw::new::<scenes::LitSub4>(Some(data::T256X128), vp, Cull::Back) else {
         return false;
     };
     let camera = demo::camera(20);
