@@ -1062,8 +1062,9 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 11] = [
+const REPORT_BINS: [&str; 12] = [
     "report_cube",
+    "report_cube_unlit",
     "report_sphere",
     "report_floor",
     "report_floor_mip",

@@ -231,6 +231,12 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
 /// projection.
 pub const LIT_SCENE_MODES: [Mode; 40] = matrix(&[true, false], &[Filt::Nearest, Filt::Bilinear]);
 
+/// The lit half of [`LIT_SCENE_MODES`] (firmware `report_cube`).
+pub const LIT_SCENE_MODES_LIT: [Mode; 20] = matrix(&[true], &[Filt::Nearest, Filt::Bilinear]);
+
+/// The unlit half of [`LIT_SCENE_MODES`] (firmware `report_cube_unlit`).
+pub const LIT_SCENE_MODES_UNLIT: [Mode; 20] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+
 /// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
 /// projection.
 pub const FLOOR_MODES: [Mode; 50] = matrix(
