@@ -313,5 +313,28 @@ macro_rules! report_modes {
         ok
     }};
 }
+/// The body of a cube report firmware (`report_cube`, `report_cube_unlit`): scene `cube`,
+/// frame 0, once per mode of `$list` (`$i` its indices, as [`report_modes!`]).
+#[macro_export]
+macro_rules! report_cube {
+    ($list:expr, [$($i:literal)*]) => {{
+        let mut buf = $crate::scenes::Buffers::new();
+        let frame = core::hint::black_box(0);
+        match $crate::scenes::viewport() {
+            Err(_) => false,
+            Ok(vp) => $crate::report_modes!("cube", $list, [$($i)*], |m, pause, resume| {
+                let draw = m.draw(fixel::texture::MipTexture::single($crate::data::T128), vp)?;
+                $crate::scenes::cube_with(
+                    $crate::scenes::Target::Bands(&mut buf),
+                    &draw,
+                    m.lit,
+                    frame,
+                    pause,
+                    resume,
+                )
+            }),
+        }
+    }};
+}
 pub mod noise;
 pub mod shadow;

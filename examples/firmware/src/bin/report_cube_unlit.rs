@@ -3,23 +3,12 @@
 #![no_std]
 #![no_main]
 
-use fixel::texture::MipTexture;
-use fixel_firmware::{data, modes, scenes};
+use fixel_firmware::modes;
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
-    let frame = core::hint::black_box(0);
-    let Ok(vp) = scenes::viewport() else {
-        return false;
-    };
-    fixel_firmware::report_modes!(
-        "cube",
+    fixel_firmware::report_cube!(
         modes::LIT_SCENE_MODES_UNLIT,
-        [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19],
-        |m, pause, resume| {
-            let draw = m.draw(MipTexture::single(data::T128), vp)?;
-            scenes::cube_with(scenes::Target::Bands(&mut buf), &draw, m.lit, frame, pause, resume)
-        }
+        [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19]
     )
 }
 

@@ -9,7 +9,8 @@ use fixel::texture::{Bilinear, Nearest, Repeat};
 use fixel_firmware::size;
 
 fn run() -> bool {
-    size::typed::<Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>, true, true>()
+    size::typed::<Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>, true, true>(
+    )
 }
 
 fixel_firmware::entry!(run);
