@@ -181,12 +181,24 @@ impl<V: Varyings, const SHARED: bool> Fill<V> for Quadratic<V, SHARED> {
             let end = (off + self.in_seg as usize).min(vals.len());
             let (mut v, mut d, dd) = (self.cur, self.d, self.dd);
             if let Some(vs) = vals.get_mut(off..end) {
-                for x in vs.iter_mut() {
-                    *x = v;
+                let step = |v: &mut V, d: &mut V| {
                     for k in 0..V::N {
                         v.as_mut_slice()[k] = v.as_slice()[k].wrapping_add(d.as_slice()[k]);
                         d.as_mut_slice()[k] = d.as_slice()[k].wrapping_add(dd.as_slice()[k]);
                     }
+                };
+                let mut pairs = vs.chunks_exact_mut(2);
+                for p in &mut pairs {
+                    if let [a, b] = p {
+                        *a = v;
+                        step(&mut v, &mut d);
+                        *b = v;
+                        step(&mut v, &mut d);
+                    }
+                }
+                for x in pairs.into_remainder() {
+                    *x = v;
+                    step(&mut v, &mut d);
                 }
             }
             if spec.lod {
