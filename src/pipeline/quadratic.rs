@@ -87,7 +87,7 @@ impl<V: Varyings, const SHARED: bool> Quadratic<V, SHARED> {
             seg
         };
         let f0 = self.exact;
-        let mut d = f0;
+        let mut d = V::zero();
         let mut dd = V::zero();
         if reach < 3 {
             self.next.add_scaled(&self.step, reach as i32);

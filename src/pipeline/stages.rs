@@ -185,6 +185,17 @@ pub struct Subdivided;
 impl ProjectionStage for Subdivided {
     const KIND: ProjKind = ProjKind::Subdivided;
 }
+/// A segment length's log2 from a marker's const parameter, clamped into `1..=6`.
+const fn segment_log2(n: u8) -> u8 {
+    if n < 1 {
+        1
+    } else if n > 6 {
+        6
+    } else {
+        n
+    }
+}
+
 /// Subdivided projection marker with the subdivision length in the type:
 /// `SubdividedBy<4>` is exact every 16 pixels (`LOG2_N` in `1..=6`; other values are
 /// clamped into that range).
@@ -192,13 +203,7 @@ impl ProjectionStage for Subdivided {
 pub struct SubdividedBy<const LOG2_N: u8>;
 impl<const LOG2_N: u8> ProjectionStage for SubdividedBy<LOG2_N> {
     const KIND: ProjKind = ProjKind::Subdivided;
-    const LOG2_N: u8 = if LOG2_N < 1 {
-        1
-    } else if LOG2_N > 6 {
-        6
-    } else {
-        LOG2_N
-    };
+    const LOG2_N: u8 = segment_log2(LOG2_N);
 }
 /// Quadratic projection marker (N comes from the draw, default 16).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -214,13 +219,7 @@ impl ProjectionStage for Quadratic {
 pub struct QuadraticBy<const LOG2_N: u8>;
 impl<const LOG2_N: u8> ProjectionStage for QuadraticBy<LOG2_N> {
     const KIND: ProjKind = ProjKind::Quadratic;
-    const LOG2_N: u8 = if LOG2_N < 1 {
-        1
-    } else if LOG2_N > 6 {
-        6
-    } else {
-        LOG2_N
-    };
+    const LOG2_N: u8 = segment_log2(LOG2_N);
 }
 /// Adaptive projection marker (affine or exact per triangle; budget from the draw,
 /// default 1/4 texel).
