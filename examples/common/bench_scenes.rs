@@ -111,13 +111,16 @@ pub fn mode_name(mode: &Mode) -> String {
 
 /// Parses [`mode_name`] (any lighting x filter x projection of `modes.rs`).
 pub fn parse_mode(s: &str) -> Option<Mode> {
-    [true, false]
+    [(true, false), (false, false), (true, true)]
         .into_iter()
-        .flat_map(|lit| {
+        .flat_map(|(lit, facet)| {
             FILTS.into_iter().flat_map(move |filter| {
-                PROJS
-                    .into_iter()
-                    .map(move |proj| Mode { lit, filter, proj })
+                PROJS.into_iter().map(move |proj| Mode {
+                    lit,
+                    facet,
+                    filter,
+                    proj,
+                })
             })
         })
         .find(|m| mode_name(m) == s)
@@ -156,7 +159,12 @@ impl Case {
 const fn case(scene: Scene, lit: bool, filter: Filt, proj: Proj) -> Case {
     Case {
         scene,
-        mode: Mode { lit, filter, proj },
+        mode: Mode {
+            lit,
+            facet: false,
+            filter,
+            proj,
+        },
     }
 }
 

@@ -149,6 +149,13 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         viewport: Viewport,
     ) -> Result<Self, Error> {
         check(&mode, &texture)?;
+        if mode.shading == Shading::ModulateFacet {
+            // Its loops would add to every firmware linking the run-time path; a typed
+            // draw (`Pipeline<.., ModulateFacet, ..>`) links just the one it uses.
+            return Err(Error::BadMode(
+                "ModulateFacet is for typed draws (Draw::new); Draw::dynamic interpolates the intensity with ModulateIntensity",
+            ));
+        }
         Ok(Draw {
             mode,
             texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),
@@ -344,7 +351,10 @@ fn select<'a, C: TargetColor + 'a>(mode: &DrawMode) -> RasterFn<'a, C> {
             match mode.shading {
                 Shading::Replace => by_depth!($p, $f, Replace),
                 Shading::Modulate => by_depth!($p, $f, Modulate),
-                Shading::ModulateIntensity => by_depth!($p, $f, ModulateIntensity),
+                // Refused by `dynamic_mip`; the intensity loop draws the same on facets.
+                Shading::ModulateIntensity | Shading::ModulateFacet => {
+                    by_depth!($p, $f, ModulateIntensity)
+                }
                 Shading::Gouraud => by_depth!($p, Nearest, Gouraud),
                 Shading::Flat => by_depth!($p, Nearest, Flat),
             }

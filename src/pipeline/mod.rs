@@ -23,7 +23,7 @@ pub use draw::Draw;
 pub use shaded::ShadedDraw;
 pub use stages::{
     Adaptive, Affine, DepthLess, DepthStage, DepthTest, DrawMode, DynProjection, Exact, Flat,
-    FromMode, FromWrap, Gouraud, Modulate, ModulateIntensity, NoDepth, Pipeline, ProjKind,
-    Projection, ProjectionStage, Quadratic, QuadraticBy, Replace, Shading, ShadingStage, Stages,
-    Subdivided, SubdividedBy,
+    FromMode, FromWrap, Gouraud, Modulate, ModulateFacet, ModulateIntensity, NoDepth, Pipeline,
+    ProjKind, Projection, ProjectionStage, Quadratic, QuadraticBy, Replace, Shading, ShadingStage,
+    Stages, Subdivided, SubdividedBy,
 };

@@ -55,6 +55,11 @@ pub enum Shading {
     /// lighting sets all three equal). One interpolant instead of three.
     #[default]
     ModulateIntensity,
+    /// Texel times one intensity per triangle, the mean of its vertices' (lit textures on
+    /// faceted meshes, whose vertices share a face's normal: there the same pixels as
+    /// [`Shading::ModulateIntensity`] for one interpolant fewer). Typed draws only:
+    /// [`Draw::dynamic`](super::Draw::dynamic) refuses it.
+    ModulateFacet,
     /// Untextured: the interpolated vertex colour.
     Gouraud,
     /// Untextured: one constant colour for the whole draw.
@@ -66,7 +71,10 @@ impl Shading {
     pub const fn textured(self) -> bool {
         matches!(
             self,
-            Shading::Replace | Shading::Modulate | Shading::ModulateIntensity
+            Shading::Replace
+                | Shading::Modulate
+                | Shading::ModulateIntensity
+                | Shading::ModulateFacet
         )
     }
 }
@@ -269,6 +277,8 @@ textured_stage!(
     Modulate,
     /// Modulate-by-intensity marker (lit textures).
     ModulateIntensity,
+    /// Modulate-by-one-intensity-per-triangle marker (lit textures on faceted meshes).
+    ModulateFacet,
 );
 /// Untextured Gouraud marker.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -193,7 +193,7 @@ pub fn walk_mesh<C: TargetColor>(
     let MeshTransform { model_view, mvp } = *transform;
     let coloured = matches!(
         draw.mode().shading,
-        Shading::Modulate | Shading::ModulateIntensity | Shading::Gouraud
+        Shading::Modulate | Shading::ModulateIntensity | Shading::ModulateFacet | Shading::Gouraud
     );
     let ctx = Ctx {
         mesh,

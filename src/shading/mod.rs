@@ -38,9 +38,11 @@
 //! two-texture light-mapped shader.
 
 pub(crate) mod builtin;
+pub mod facet;
 mod texcoord;
 
 pub use builtin::{q8, Classic, Flat, Gouraud, Modulate, ModulateIntensity, Replace};
+pub use facet::ModulateFacet;
 pub use texcoord::{TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)

@@ -9,8 +9,8 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::pipeline::{
-    Adaptive, Affine, DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Quadratic, Replace,
-    Subdivided,
+    Adaptive, Affine, DepthLess, Draw, Exact, ModulateFacet, ModulateIntensity, Pipeline,
+    Quadratic, Replace, Subdivided,
 };
 use fixel::prelude::{Cull, Error, Viewport};
 use fixel::texture::{
@@ -74,6 +74,9 @@ impl Filt {
 pub struct Mode {
     /// Per-vertex light modulated into the texel (`ModulateIntensity`), else `Replace`.
     pub lit: bool,
+    /// With `lit`: the light read once per triangle (`ModulateFacet`: the same light on a
+    /// mesh with per-face normals, one interpolant fewer), named `facet`.
+    pub facet: bool,
     /// Texture filter.
     pub filter: Filt,
     /// Projection.
@@ -83,7 +86,9 @@ pub struct Mode {
 impl Mode {
     /// Lighting part of the name: `lit` or `unlit`.
     pub const fn lit_name(&self) -> &'static str {
-        if self.lit {
+        if self.lit && self.facet {
+            "facet"
+        } else if self.lit {
             "lit"
         } else {
             "unlit"
@@ -135,7 +140,13 @@ impl Mode {
     pub fn draw<'a>(&self, tex: MipTexture<'a>, vp: Viewport) -> Result<Draw<'a, Rgb565>, Error> {
         macro_rules! typed {
             ($p:ty, $f:ty) => {
-                if self.lit {
+                if self.lit && self.facet {
+                    Draw::new_mip::<Pipeline<$p, $f, Repeat, Repeat, ModulateFacet, DepthLess>>(
+                        Some(tex),
+                        vp,
+                        Cull::Back,
+                    )
+                } else if self.lit {
                     Draw::new_mip::<Pipeline<$p, $f, Repeat, Repeat, ModulateIntensity, DepthLess>>(
                         Some(tex),
                         vp,
@@ -202,6 +213,7 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
     assert!(N == lights.len() * filters.len() * PROJS.len());
     let mut out = [Mode {
         lit: false,
+        facet: false,
         filter: Filt::Nearest,
         proj: Proj::Affine,
     }; N];
@@ -214,6 +226,7 @@ const fn matrix<const N: usize>(lights: &[bool], filters: &[Filt]) -> [Mode; N] 
             while p < PROJS.len() {
                 out[k] = Mode {
                     lit: lights[l],
+                    facet: false,
                     filter: filters[f],
                     proj: PROJS[p],
                 };
@@ -266,16 +279,19 @@ pub const FLOOR_MIP_MODES: [Mode; 30] = matrix(
 pub const SPHERE_MCU_MODES: [Mode; 3] = [
     Mode {
         lit: false,
+        facet: false,
         filter: Filt::Nearest,
         proj: Proj::Affine,
     },
     Mode {
         lit: true,
+        facet: false,
         filter: Filt::Bilinear,
         proj: Proj::Adaptive,
     },
     Mode {
         lit: true,
+        facet: false,
         filter: Filt::Bilinear,
         proj: Proj::Exact,
     },

@@ -7,7 +7,9 @@
 use core::convert::Infallible;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
-use fixel::pipeline::{DepthLess, ModulateIntensity, Pipeline, QuadraticBy, Replace, SubdividedBy};
+use fixel::pipeline::{
+    DepthLess, ModulateFacet, ModulateIntensity, Pipeline, QuadraticBy, Replace, SubdividedBy,
+};
 use fixel::prelude::*;
 use fixel::scene::{
     draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
@@ -36,8 +38,10 @@ pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
 /// `cube`: lit, bilinear, perspective-correct, repeat, depth-tested; a parabola through
 /// exact values every 32 pixels (`docs/report`: 42.4 dB against exact's 42.8, cheaper than
-/// subdivided N = 4 at 42.6).
-pub type Lit = Pipeline<QuadraticBy<5>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+/// subdivided N = 4 at 42.6). Its faces have per-face normals, so the Gouraud intensity is
+/// one per triangle: `ModulateFacet` reads it once (closer to the f64 reference than the
+/// interpolated constant, `host-tests/tests/facet.rs`; one interpolant fewer per pixel).
+pub type Lit = Pipeline<QuadraticBy<5>, Bilinear, Repeat, Repeat, ModulateFacet, DepthLess>;
 /// The anti-aliasing scenes' cube (`aa`, `aa_scene`): [`Lit`] as it was when their figures
 /// in `docs/report/aa.md` and the README were measured, exact every 4 pixels.
 pub type LitSub4 =
