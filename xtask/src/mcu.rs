@@ -1062,9 +1062,10 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 12] = [
+const REPORT_BINS: [&str; 13] = [
     "report_cube",
     "report_cube_unlit",
+    "report_cube_facet",
     "report_sphere",
     "report_floor",
     "report_floor_mip",

@@ -250,6 +250,33 @@ pub const LIT_SCENE_MODES_LIT: [Mode; 20] = matrix(&[true], &[Filt::Nearest, Fil
 /// The unlit half of [`LIT_SCENE_MODES`] (firmware `report_cube_unlit`).
 pub const LIT_SCENE_MODES_UNLIT: [Mode; 20] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
 
+/// The cube's modes with the light read once per triangle (`facet`: its faces have per-face
+/// normals), bilinear, every projection (firmware `report_cube_facet`).
+pub const CUBE_FACET_MODES: [Mode; 10] = {
+    let mut out: [Mode; 10] = matrix(&[true], &[Filt::Bilinear]);
+    let mut k = 0;
+    while k < out.len() {
+        out[k].facet = true;
+        k += 1;
+    }
+    out
+};
+
+/// Modes of the cube: [`LIT_SCENE_MODES`] and [`CUBE_FACET_MODES`].
+pub const CUBE_MODES: [Mode; 50] = {
+    let mut out = [LIT_SCENE_MODES[0]; 50];
+    let mut k = 0;
+    while k < 50 {
+        out[k] = if k < 40 {
+            LIT_SCENE_MODES[k]
+        } else {
+            CUBE_FACET_MODES[k - 40]
+        };
+        k += 1;
+    }
+    out
+};
+
 /// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
 /// projection.
 pub const FLOOR_MODES: [Mode; 50] = matrix(

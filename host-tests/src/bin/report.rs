@@ -79,7 +79,8 @@ impl Scene {
     fn modes(self) -> &'static [Mode] {
         match self {
             Scene::Floor => &modes::FLOOR_MODES,
-            _ => &modes::LIT_SCENE_MODES,
+            Scene::Cube => &modes::CUBE_MODES,
+            Scene::Sphere => &modes::LIT_SCENE_MODES,
         }
     }
     fn frames(self) -> u32 {
@@ -619,6 +620,8 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 filt_short(r.mode.filter),
                 if scene.lit() && !r.mode.lit {
                     " unlit"
+                } else if r.mode.facet {
+                    " facet"
                 } else {
                     ""
                 }
@@ -663,6 +666,7 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
         for (k, p) in shown.enumerate() {
             let m = Mode {
                 lit: false,
+                facet: false,
                 filter: Filt::Nearest,
                 proj: p,
             };
@@ -675,7 +679,7 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 .map_err(|e| e.to_string())?;
         }
         let notes = if scene.lit() {
-            "N nearest, B bilinear; filled = lit, ring = unlit; grey label = dominated; lines = Pareto fronts"
+            "N nearest, B bilinear, facet = light per triangle; filled = lit, ring = unlit; grey label = dominated; lines = Pareto fronts"
         } else {
             "N nearest, B bilinear, NMN nearest-mipmap-nearest, T trilinear (LOD per pixel), Ts (per span); grey label = dominated"
         };
