@@ -518,7 +518,8 @@ impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
             let mut v = p.start;
             if let Some(vs) = vals.get_mut(off..end) {
                 for x in vs.iter_mut() {
-                    *x = v;
+                    // The interpolated values only (see `Quadratic::fill`).
+                    x.as_mut_slice().copy_from_slice(v.as_slice());
                     step(&mut v, &p.slope);
                 }
             }

@@ -187,17 +187,20 @@ impl<V: Varyings, const SHARED: bool> Fill<V> for Quadratic<V, SHARED> {
                         d.as_mut_slice()[k] = d.as_slice()[k].wrapping_add(dd.as_slice()[k]);
                     }
                 };
+                // Only the interpolated values are stored (a shader's `Varyings` may carry
+                // more, read per triangle: `FacetVaryings`).
+                let put = |x: &mut V, v: &V| x.as_mut_slice().copy_from_slice(v.as_slice());
                 let mut pairs = vs.chunks_exact_mut(2);
                 for p in &mut pairs {
                     if let [a, b] = p {
-                        *a = v;
+                        put(a, &v);
                         step(&mut v, &mut d);
-                        *b = v;
+                        put(b, &v);
                         step(&mut v, &mut d);
                     }
                 }
                 for x in pairs.into_remainder() {
-                    *x = v;
+                    put(x, &v);
                     step(&mut v, &mut d);
                 }
             }
