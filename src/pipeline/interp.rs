@@ -519,7 +519,9 @@ impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
             if let Some(vs) = vals.get_mut(off..end) {
                 for x in vs.iter_mut() {
                     // The interpolated values only (see `Quadratic::fill`).
-                    x.as_mut_slice().copy_from_slice(v.as_slice());
+                    for k in 0..V::N {
+                        x.as_mut_slice()[k] = v.as_slice()[k];
+                    }
                     step(&mut v, &p.slope);
                 }
             }

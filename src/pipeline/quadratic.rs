@@ -189,7 +189,11 @@ impl<V: Varyings, const SHARED: bool> Fill<V> for Quadratic<V, SHARED> {
                 };
                 // Only the interpolated values are stored (a shader's `Varyings` may carry
                 // more, read per triangle: `FacetVaryings`).
-                let put = |x: &mut V, v: &V| x.as_mut_slice().copy_from_slice(v.as_slice());
+                let put = |x: &mut V, v: &V| {
+                    for k in 0..V::N {
+                        x.as_mut_slice()[k] = v.as_slice()[k];
+                    }
+                };
                 let mut pairs = vs.chunks_exact_mut(2);
                 for p in &mut pairs {
                     if let [a, b] = p {
