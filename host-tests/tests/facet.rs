@@ -5,9 +5,9 @@
 //! (the intensity is truncated to Q8 per pixel).
 //!
 //! Measured (quadratic N = 32, bilinear; the printed lines): on frames 0 / 25 / 50 / 75 the
-//! frames differ by 1 LSB at 15.7 / 13.4 / 20.5 / 14.0 % of the pixels, and the facet shader
-//! is the closer of the two to the reference (PSNR 40.07 / 51.33 / 50.82 / 47.35 dB against
-//! 39.46 / 45.93 / 42.23 / 44.76). The test holds: at most 1 LSB apart, a maximum
+//! frames differ by 1 LSB at 15.7 / 13.4 / 20.6 / 13.9 % of the pixels, and the facet shader
+//! is the closer of the two to the reference (PSNR 40.10 / 51.56 / 51.13 / 47.47 dB against
+//! 39.45 / 45.92 / 42.23 / 44.78). The test holds: at most 1 LSB apart, a maximum
 //! error at most 1 LSB larger, a PSNR no more than 0.1 dB lower.
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};

@@ -15,7 +15,7 @@
 //! approaches: its interpolated constant wanders in its low bits and the per-pixel Q8
 //! truncation turns that into 1-LSB steps. On the benchmark cube (quadratic N = 32,
 //! `host-tests/tests/facet.rs`) the two differ by 1 LSB at 13-21 % of the pixels and this
-//! shader is the closer to the f64 reference (PSNR 40.1 / 51.3 / 50.8 / 47.4 dB on frames
+//! shader is the closer to the f64 reference (PSNR 40.1 / 51.6 / 51.1 / 47.5 dB on frames
 //! 0 / 25 / 50 / 75 against 39.5 / 45.9 / 42.2 / 44.8). Where the intensities differ (smooth
 //! meshes) the triangle is lit flat, with the mean, which depends neither on the vertex
 //! order nor on clipping.

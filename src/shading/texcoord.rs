@@ -180,8 +180,8 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
 
 impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     /// [`TexBinding::sample`] times intensity `i` (Q8, `0..=256`; larger is 256): the lit
-    /// texture of [`ModulateIntensity`](super::ModulateIntensity). Plain bilinear folds the
-    /// intensity into its filter weights (one rounding); the others modulate the sample.
+    /// texture of [`ModulateIntensity`](super::ModulateIntensity). Plain bilinear scales its
+    /// exact channel sums by the intensity (one rounding); the others modulate the sample.
     #[inline(always)]
     pub fn sample_scaled(&self, tri: TexTriangle, u: i32, v: i32, lambda: i32, i: u16) -> u16 {
         if F::LOD {

@@ -52,7 +52,7 @@ pub trait Sampler: Copy + Default + core::fmt::Debug {
 
     /// The sample times intensity `i` (Q8, `0..=256`; larger is 256), raw RGB565. The
     /// default modulates the sample ([`modulate_scalar`](crate::color::modulate_scalar));
-    /// [`Bilinear`] folds the intensity into its weights (one rounding, fewer multiplies).
+    /// [`Bilinear`] scales its exact channel sums by the intensity (one rounding).
     #[inline(always)]
     fn sample_scaled<WU: WrapMode, WV: WrapMode>(
         tex: &Texture<'_>,
