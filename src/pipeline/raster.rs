@@ -7,7 +7,7 @@
 //! uses links exactly one copy.
 
 use super::interp::lambda_at;
-use super::setup::{centroid, setup};
+use super::setup::{centroid, setup_into, TriSetup};
 use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
@@ -130,37 +130,47 @@ where
         let (x, y) = v.attr_position();
         (x, y, v.z, v.w)
     });
-    let Some(setup) = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget) else {
-        return 0;
-    };
-    let tri_lambda = match S::TEXCOORDS {
-        Some((a, b)) if S::LOD && shader.lod_granularity() == LodGranularity::Triangle => {
-            let (cx, cy) = centroid(&pos, vp);
-            lambda_at(&setup, cx, cy, a, b)
-        }
-        _ => 0,
-    };
-    let ctx = SpanCtx {
-        setup,
-        shader: *shader,
-        triangle,
-        tri_lambda,
-        log2_n: params.log2_n,
-        coord_shift: S::coord_shift(&triangle),
-        kind,
-        depth_on: params.depth_on,
-    };
+    let floor = target.depth_floor();
+    // The set-up is written where the span loop reads it (built and moved, it cost two
+    // copies per triangle).
     let mut w = Writer::<S, P, D, C> {
-        ctx,
+        ctx: SpanCtx {
+            setup: TriSetup::empty(),
+            shader: *shader,
+            triangle,
+            tri_lambda: 0,
+            log2_n: params.log2_n,
+            coord_shift: S::coord_shift(&triangle),
+            kind,
+            depth_on: params.depth_on,
+        },
         scratch: None,
         bound: DepthBound {
-            floor: target.depth_floor(),
+            floor,
             lowest: u16::MAX,
         },
         target,
         pixels: 0,
         _stages: core::marker::PhantomData,
     };
+    if !setup_into(
+        &mut w.ctx.setup,
+        pos,
+        &vary,
+        vp,
+        kind,
+        D::TEST,
+        S::TEXCOORDS,
+        params.budget,
+    ) {
+        return 0;
+    }
+    if let Some((a, b)) = S::TEXCOORDS {
+        if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
+            let (cx, cy) = centroid(&pos, vp);
+            w.ctx.tri_lambda = lambda_at(&w.ctx.setup, cx, cy, a, b);
+        }
+    }
     // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
     // per span, nothing per pixel).
     let sink: &mut dyn SpanSink = &mut w;

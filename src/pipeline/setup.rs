@@ -42,6 +42,21 @@ pub(crate) struct TriSetup<V> {
 }
 
 impl<V: Varyings> TriSetup<V> {
+    /// All zero (affine), for [`setup_into`] to fill.
+    #[inline(always)]
+    pub fn empty() -> Self {
+        TriSetup {
+            px_ref: 0,
+            py_ref: 0,
+            z: Plane::default(),
+            q: Plane::default(),
+            at_ref: V::zero(),
+            dx: V::zero(),
+            dy: V::zero(),
+            affine: true,
+        }
+    }
+
     /// The varying planes at the centre of pixel `(x, y)`.
     #[inline(always)]
     pub fn at(&self, x: i32, y: i32) -> V {
@@ -101,7 +116,7 @@ pub(crate) fn centroid(pos: &[SetupVertex; 3], viewport: Rect) -> (i32, i32) {
 ///
 /// Not inlined: it runs once per triangle, and one shared copy (per varying count) keeps
 /// every span loop a firmware links from carrying its own (about 3 KB each on Cortex-M).
-#[inline(never)]
+#[cfg(test)]
 pub(crate) fn setup<V: Varyings>(
     pos: [SetupVertex; 3],
     vary: &[V; 3],
@@ -111,24 +126,50 @@ pub(crate) fn setup<V: Varyings>(
     texcoords: Option<(usize, usize)>,
     adaptive_budget: i64,
 ) -> Option<TriSetup<V>> {
-    let ps = PlaneSetup::new(
+    let mut s = TriSetup::empty();
+    setup_into(
+        &mut s,
+        pos,
+        vary,
+        viewport,
+        proj,
+        depth,
+        texcoords,
+        adaptive_budget,
+    )
+    .then_some(s)
+}
+
+/// [`setup`] written into `s` (every field), in place: returned by value, the set-up
+/// (about 70 bytes for three varyings) was copied twice per triangle, two `memcpy` calls
+/// of ~90 instructions each on Cortex-M0+. Returns false for a zero-area triangle (`s` is
+/// then unspecified).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn setup_into<V: Varyings>(
+    s: &mut TriSetup<V>,
+    pos: [SetupVertex; 3],
+    vary: &[V; 3],
+    viewport: Rect,
+    proj: ProjKind,
+    depth: bool,
+    texcoords: Option<(usize, usize)>,
+    adaptive_budget: i64,
+) -> bool {
+    let Some(ps) = PlaneSetup::new(
         [
             (pos[0].0, pos[0].1),
             (pos[1].0, pos[1].1),
             (pos[2].0, pos[2].1),
         ],
         viewport,
-    )?;
-    let mut s = TriSetup {
-        px_ref: ps.px_ref,
-        py_ref: ps.py_ref,
-        z: Plane::default(),
-        q: Plane::default(),
-        at_ref: V::zero(),
-        dx: V::zero(),
-        dy: V::zero(),
-        affine: true,
+    ) else {
+        return false;
     };
+    s.px_ref = ps.px_ref;
+    s.py_ref = ps.py_ref;
+    s.z = Plane::default();
+    s.q = Plane::default();
     if depth {
         s.z = ps.plane([pos[0].2, pos[1].2, pos[2].2]);
     }
@@ -184,5 +225,5 @@ pub(crate) fn setup<V: Varyings>(
         s.dx.as_mut_slice()[k] = p.dx;
         s.dy.as_mut_slice()[k] = p.dy;
     }
-    Some(s)
+    true
 }
