@@ -36,12 +36,13 @@ pub const CACHE: usize = 128;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
-/// `cube`: lit, bilinear, perspective-correct, repeat, depth-tested; a parabola through
-/// exact values every 32 pixels (`docs/report`: 42.4 dB against exact's 42.8, cheaper than
-/// subdivided N = 4 at 42.6). Its faces have per-face normals, so the Gouraud intensity is
-/// one per triangle: `ModulateFacet` reads it once (closer to the f64 reference than the
-/// interpolated constant, `host-tests/tests/facet.rs`; one interpolant fewer per pixel).
-pub type Lit = Pipeline<QuadraticBy<5>, Bilinear, Repeat, Repeat, ModulateFacet, DepthLess>;
+/// `cube`: lit, bilinear, perspective-correct, repeat, depth-tested. Its faces have
+/// per-face normals, so the Gouraud intensity is one per triangle: `ModulateFacet` reads it
+/// once (one interpolant fewer per pixel, and closer to the f64 reference than the
+/// interpolated constant: `docs/report` 45.8 dB exact against 42.8). A parabola through
+/// exact values every 16 pixels: the cheapest mode within 0.5 dB of exact (45.8 dB; N = 32
+/// is 44.9).
+pub type Lit = Pipeline<QuadraticBy<4>, Bilinear, Repeat, Repeat, ModulateFacet, DepthLess>;
 /// The anti-aliasing scenes' cube (`aa`, `aa_scene`): [`Lit`] as it was when their figures
 /// in `docs/report/aa.md` and the README were measured, exact every 4 pixels.
 pub type LitSub4 =
