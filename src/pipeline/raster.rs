@@ -7,7 +7,7 @@
 //! uses links exactly one copy.
 
 use super::interp::lambda_at;
-use super::setup::{centroid, setup_into, TriSetup};
+use super::setup::{centroid, setup};
 use super::span::{span, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
@@ -59,7 +59,7 @@ impl RasterParams {
 }
 
 struct Writer<'t, S: Shader, P, D, C> {
-    ctx: SpanCtx<S>,
+    ctx: SpanCtx<'t, S>,
     scratch: Option<Scratch<S::Varyings>>,
     /// The target's depth floor, read once per triangle: a triangle writes each pixel at
     /// most once, so its own writes never matter to its later spans. Lowered once, after.
@@ -130,15 +130,26 @@ where
         let (x, y) = v.attr_position();
         (x, y, v.z, v.w)
     });
+    // Kept where the call writes it and lent to the span loop (see `setup`).
+    let setup = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
+    // By reference: bound by value, the set-up is copied out of the `Option`.
+    let Some(setup) = &setup else {
+        return 0;
+    };
+    let mut tri_lambda = 0;
+    if let Some((a, b)) = S::TEXCOORDS {
+        if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
+            let (cx, cy) = centroid(&pos, vp);
+            tri_lambda = lambda_at(setup, cx, cy, a, b);
+        }
+    }
     let floor = target.depth_floor();
-    // The set-up is written where the span loop reads it (built and moved, it cost two
-    // copies per triangle).
     let mut w = Writer::<S, P, D, C> {
         ctx: SpanCtx {
-            setup: TriSetup::empty(),
+            setup,
             shader: *shader,
             triangle,
-            tri_lambda: 0,
+            tri_lambda,
             log2_n: params.log2_n,
             coord_shift: S::coord_shift(&triangle),
             kind,
@@ -153,24 +164,6 @@ where
         pixels: 0,
         _stages: core::marker::PhantomData,
     };
-    if !setup_into(
-        &mut w.ctx.setup,
-        pos,
-        &vary,
-        vp,
-        kind,
-        D::TEST,
-        S::TEXCOORDS,
-        params.budget,
-    ) {
-        return 0;
-    }
-    if let Some((a, b)) = S::TEXCOORDS {
-        if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
-            let (cx, cy) = centroid(&pos, vp);
-            w.ctx.tri_lambda = lambda_at(&w.ctx.setup, cx, cy, a, b);
-        }
-    }
     // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
     // per span, nothing per pixel).
     let sink: &mut dyn SpanSink = &mut w;

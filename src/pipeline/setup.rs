@@ -42,21 +42,6 @@ pub(crate) struct TriSetup<V> {
 }
 
 impl<V: Varyings> TriSetup<V> {
-    /// All zero (affine), for [`setup_into`] to fill.
-    #[inline(always)]
-    pub fn empty() -> Self {
-        TriSetup {
-            px_ref: 0,
-            py_ref: 0,
-            z: Plane::default(),
-            q: Plane::default(),
-            at_ref: V::zero(),
-            dx: V::zero(),
-            dy: V::zero(),
-            affine: true,
-        }
-    }
-
     /// The varying planes at the centre of pixel `(x, y)`.
     #[inline(always)]
     pub fn at(&self, x: i32, y: i32) -> V {
@@ -116,7 +101,12 @@ pub(crate) fn centroid(pos: &[SetupVertex; 3], viewport: Rect) -> (i32, i32) {
 ///
 /// Not inlined: it runs once per triangle, and one shared copy (per varying count) keeps
 /// every span loop a firmware links from carrying its own (about 3 KB each on Cortex-M).
-#[cfg(test)]
+/// The caller keeps the result where it lands and lends it to the span loop by reference:
+/// moved into the span context, the set-up (about 70 bytes for three varyings) cost two
+/// `memcpy` calls per triangle on Cortex-M0+, and zero-filled there to be written in place,
+/// one `memset` call (~150 instructions).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn setup<V: Varyings>(
     pos: [SetupVertex; 3],
     vary: &[V; 3],
@@ -126,53 +116,19 @@ pub(crate) fn setup<V: Varyings>(
     texcoords: Option<(usize, usize)>,
     adaptive_budget: i64,
 ) -> Option<TriSetup<V>> {
-    let mut s = TriSetup::empty();
-    setup_into(
-        &mut s,
-        pos,
-        vary,
-        viewport,
-        proj,
-        depth,
-        texcoords,
-        adaptive_budget,
-    )
-    .then_some(s)
-}
-
-/// [`setup`] written into `s` (every field), in place: returned by value, the set-up
-/// (about 70 bytes for three varyings) was copied twice per triangle, two `memcpy` calls
-/// of ~90 instructions each on Cortex-M0+. Returns false for a zero-area triangle (`s` is
-/// then unspecified).
-#[inline(never)]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn setup_into<V: Varyings>(
-    s: &mut TriSetup<V>,
-    pos: [SetupVertex; 3],
-    vary: &[V; 3],
-    viewport: Rect,
-    proj: ProjKind,
-    depth: bool,
-    texcoords: Option<(usize, usize)>,
-    adaptive_budget: i64,
-) -> bool {
-    let Some(ps) = PlaneSetup::new(
+    let ps = PlaneSetup::new(
         [
             (pos[0].0, pos[0].1),
             (pos[1].0, pos[1].1),
             (pos[2].0, pos[2].1),
         ],
         viewport,
-    ) else {
-        return false;
+    )?;
+    let z = if depth {
+        ps.plane([pos[0].2, pos[1].2, pos[2].2])
+    } else {
+        Plane::default()
     };
-    s.px_ref = ps.px_ref;
-    s.py_ref = ps.py_ref;
-    s.z = Plane::default();
-    s.q = Plane::default();
-    if depth {
-        s.z = ps.plane([pos[0].2, pos[1].2, pos[2].2]);
-    }
     // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain.
     let q = if proj != ProjKind::Affine {
         let wmin = i64::from(pos[0].3.min(pos[1].3).min(pos[2].3).max(1));
@@ -207,10 +163,12 @@ pub(crate) fn setup_into<V: Varyings>(
             }
         }
     };
-    s.affine = !perspective;
-    if perspective {
-        s.q = ps.plane([q[0] as i32, q[1] as i32, q[2] as i32]);
-    }
+    let q_plane = if perspective {
+        ps.plane([q[0] as i32, q[1] as i32, q[2] as i32])
+    } else {
+        Plane::default()
+    };
+    let (mut at_ref, mut dx, mut dy) = (V::zero(), V::zero(), V::zero());
     for k in 0..V::N {
         let a = value(k);
         let a = if perspective {
@@ -221,9 +179,18 @@ pub(crate) fn setup_into<V: Varyings>(
             a.map(|x| x as i32)
         };
         let p = ps.plane(a);
-        s.at_ref.as_mut_slice()[k] = p.at_ref;
-        s.dx.as_mut_slice()[k] = p.dx;
-        s.dy.as_mut_slice()[k] = p.dy;
+        at_ref.as_mut_slice()[k] = p.at_ref;
+        dx.as_mut_slice()[k] = p.dx;
+        dy.as_mut_slice()[k] = p.dy;
     }
-    true
+    Some(TriSetup {
+        px_ref: ps.px_ref,
+        py_ref: ps.py_ref,
+        z,
+        q: q_plane,
+        at_ref,
+        dx,
+        dy,
+        affine: !perspective,
+    })
 }

@@ -32,8 +32,9 @@ use crate::texture::LodGranularity;
 
 /// Per-draw, per-triangle state the span loop reads.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct SpanCtx<S: Shader> {
-    pub setup: TriSetup<S::Varyings>,
+pub(crate) struct SpanCtx<'s, S: Shader> {
+    /// The triangle's set-up (kept by the caller where [`super::setup::setup`] wrote it).
+    pub setup: &'s TriSetup<S::Varyings>,
     pub shader: S,
     pub triangle: S::Triangle,
     /// Level of detail of the whole triangle (for [`LodGranularity::Triangle`]).
@@ -321,7 +322,7 @@ pub(crate) struct DepthBound {
 /// chunk shaded with its varyings stepped in registers.
 #[inline(always)]
 fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
-    ctx: &SpanCtx<S>,
+    ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     x: i32,
     y: i32,
@@ -424,7 +425,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
 /// finely tessellated mesh are a few pixels long: this path is what they cost.
 #[inline(always)]
 fn run_short<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
-    ctx: &SpanCtx<S>,
+    ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     x: i32,
     y: i32,
@@ -500,7 +501,7 @@ fn short_path_on() -> bool {
 
 /// The level of detail handed to the shader: `(fixed value, per pixel or piece?)`.
 #[inline(always)]
-fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i32, bool) {
+fn lod_policy<S: Shader>(ctx: &SpanCtx<'_, S>, at_start: impl FnOnce() -> i32) -> (i32, bool) {
     if !S::LOD {
         return (0, false);
     }
@@ -513,7 +514,7 @@ fn lod_policy<S: Shader>(ctx: &SpanCtx<S>, at_start: impl FnOnce() -> i32) -> (i
 
 #[inline(always)]
 fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
-    ctx: &SpanCtx<S>,
+    ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     scratch: &mut Scratch<S::Varyings>,
     x: i32,
@@ -597,7 +598,7 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
-    ctx: &SpanCtx<S>,
+    ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     scratch: &mut Option<Scratch<S::Varyings>>,
     y: i32,

@@ -215,6 +215,26 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
         }
     }
 
+    /// The first id in `id..end` that [`wants`](Self::wants) says yes to, or `end`: in a
+    /// band pass a tight scan of the band ranges (ids past the stored ranges are always
+    /// wanted).
+    #[inline]
+    pub fn next_wanted(&self, id: usize, end: usize) -> usize {
+        match &self.pass {
+            Pass::Bin { .. } => id,
+            Pass::Band { ranges, index, .. } => {
+                let stop = end.min(ranges.len());
+                let Some(stored) = ranges.get(id..stop) else {
+                    return id; // past the stored ranges (or at the end)
+                };
+                match stored.iter().position(|r| r.covers_saturated(*index)) {
+                    Some(k) => id + k,
+                    None => stop,
+                }
+            }
+        }
+    }
+
     /// True in a band pass for a triangle the binning pass pushed (it has a band range): it
     /// passed the cull test then, on the same screen positions, so the geometry may skip
     /// the test now.
