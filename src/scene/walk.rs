@@ -107,6 +107,16 @@ impl CachedVertex {
         (self.x >> (SUB_BITS + 1), self.y >> (SUB_BITS + 1))
     }
 
+    /// [`CachedVertex::screen`]'s position alone (depth, `w` and varyings zero).
+    fn position(&self) -> ScreenVertex {
+        let (x, y) = self.xy();
+        ScreenVertex {
+            x,
+            y,
+            ..ScreenVertex::default()
+        }
+    }
+
     fn screen(&self) -> ScreenVertex {
         let c = i32::from(self.color.min(COLOR_ONE)) << 16;
         let sub = |p: i32| ((p & ((2 << SUB_BITS) - 1)) - (1 << (SUB_BITS - 1))) as i16;
@@ -280,7 +290,13 @@ pub fn walk_mesh<C: TargetColor>(
         if !out.kept(id) && !keeps_xy([v[0].xy(), v[1].xy(), v[2].xy()], cull) {
             continue;
         }
-        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
+        // Without attributes only the rows count (a band renderer's binning pass once its
+        // bins are full): positions alone.
+        let mut tri = if full {
+            [v[0].screen(), v[1].screen(), v[2].screen()]
+        } else {
+            [v[0].position(), v[1].position(), v[2].position()]
+        };
         if full {
             // Kept: complete what binning left out (depth), then light.
             let mut failed = false;
