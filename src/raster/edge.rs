@@ -31,6 +31,17 @@ pub struct EdgeWalker {
     den: i32,
 }
 
+/// The ceiling pair from the floor pair: `(q, r)` with `n = q d + r`, `0 <= r < d`, gives
+/// `ceil(n / d)` and its remainder `ceil * d - n` (in `0..d`).
+#[inline(always)]
+fn ceil_from_floor(q: i64, r: i64, d: i64) -> (i64, i64) {
+    if r == 0 {
+        (q, 0)
+    } else {
+        (q + 1, d - r)
+    }
+}
+
 /// `ceil(n / d)` and the non-negative remainder `ceil * d - n`, for `d > 0`. The floor
 /// division goes through `math::div` (exact, 32-bit paths: a 64-bit library division per
 /// edge and band was a visible share of small triangles' cost on Cortex-M).
@@ -40,21 +51,13 @@ fn ceil_div_rem(n: i64, d: i64) -> (i64, i64) {
     if let (Ok(n32), Ok(d32)) = (i32::try_from(n), i32::try_from(d)) {
         if d32 > 0 && n32 != i32::MIN {
             let (q, r) = (n32.div_euclid(d32), n32.rem_euclid(d32));
-            return if r == 0 {
-                (i64::from(q), 0)
-            } else {
-                (i64::from(q) + 1, i64::from(d32 - r))
-            };
+            return ceil_from_floor(i64::from(q), i64::from(r), d);
         }
     }
     let q = div_floor_i64(n, d);
     // floor division: 0 <= r < d.
     let r = n.wrapping_sub(q.wrapping_mul(d));
-    if r == 0 {
-        (q, 0)
-    } else {
-        (q + 1, d - r)
-    }
+    ceil_from_floor(q, r, d)
 }
 
 /// `ceil(N / D)` and its remainder for a first row whose centre is less than 16 pixels
@@ -95,12 +98,11 @@ fn start_near_top(x0: i32, dy: i32, t: i32, step: i32, step_rem: i32) -> Option<
         .checked_add(qb)?;
     // N = dy c + b = 16 dy (c >> 4) + (dy (c & 15) + b), the last term in 0..16 dy.
     let rem = dy * (c & (ONE - 1)) + b;
-    let k = i64::from(c >> SUBPIXEL_BITS);
-    Some(if rem == 0 {
-        (k, 0)
-    } else {
-        (k + 1, i64::from(ONE * dy - rem))
-    })
+    Some(ceil_from_floor(
+        i64::from(c >> SUBPIXEL_BITS),
+        i64::from(rem),
+        i64::from(ONE * dy),
+    ))
 }
 
 /// [`ceil_div_rem`] when the quotient is small, `|n| < 16 d` (an edge less than 16 pixels
@@ -109,7 +111,7 @@ fn start_near_top(x0: i32, dy: i32, t: i32, step: i32, step_rem: i32) -> Option<
 /// (one per edge and band; -4.8 instructions per pixel on the Cortex-M0+ sphere in bands).
 /// `None` otherwise. The same quotient and remainder (tested).
 #[inline(always)]
-fn ceil_div_rem_small(n: i32, d: i32) -> Option<(i32, i32)> {
+fn ceil_div_rem_small(n: i32, d: i32) -> Option<(i64, i64)> {
     if d <= 0 || d >= 1 << 26 {
         return None;
     }
@@ -119,12 +121,9 @@ fn ceil_div_rem_small(n: i32, d: i32) -> Option<(i32, i32)> {
     }
     // m < 16 d < 2^30: fits `i32`, quotient 0..=15.
     let (q, r) = div_bits::<4>(m as i32, d);
+    let (q, r) = (i64::from(q), i64::from(r));
     Some(if n >= 0 {
-        if r == 0 {
-            (q, 0)
-        } else {
-            (q + 1, d - r)
-        }
+        ceil_from_floor(q, r, i64::from(d))
     } else {
         // ceil(-m / d) = -floor(m / d); remainder -q d + m = r.
         (-q, r)
@@ -170,10 +169,8 @@ impl EdgeWalker {
             let start = ceil_div_rem(n(), den);
             (start, ceil_div_rem(i64::from(one) * i64::from(dx), den))
         } else {
-            let (step, step_rem) = match ceil_div_rem_small(one.wrapping_mul(dx), den as i32) {
-                Some((q, r)) => (i64::from(q), i64::from(r)),
-                None => ceil_div_rem(i64::from(one) * i64::from(dx), den),
-            };
+            let (step, step_rem) = ceil_div_rem_small(one.wrapping_mul(dx), den as i32)
+                .unwrap_or_else(|| ceil_div_rem(i64::from(one) * i64::from(dx), den));
             let t = yc.wrapping_sub(y0);
             let start = match start_near_top(x0, dy, t, step as i32, step_rem as i32) {
                 Some(start) => start,
@@ -238,7 +235,7 @@ mod tests {
             if let Some((q, r)) = ceil_div_rem_small(n, d) {
                 hits += 1;
                 let (q2, r2) = ceil_div_rem(i64::from(n), i64::from(d));
-                assert_eq!((i64::from(q), i64::from(r)), (q2, r2), "n {n} d {d}");
+                assert_eq!((q, r), (q2, r2), "n {n} d {d}");
             }
         }
         assert!(hits > 100_000, "{hits}");
@@ -280,10 +277,8 @@ mod tests {
             let one = SUBPIXEL_ONE;
             let den = i64::from(one) * i64::from(dy);
             let n = i64::from(x0 - one / 2) * i64::from(dy) + i64::from(t) * i64::from(dx);
-            let (step, step_rem) = match ceil_div_rem_small(one.wrapping_mul(dx), den as i32) {
-                Some((q, r)) => (i64::from(q), i64::from(r)),
-                None => ceil_div_rem(i64::from(one) * i64::from(dx), den),
-            };
+            let (step, step_rem) = ceil_div_rem_small(one.wrapping_mul(dx), den as i32)
+                .unwrap_or_else(|| ceil_div_rem(i64::from(one) * i64::from(dx), den));
             if let Some(got) = start_near_top(x0, dy, t, step as i32, step_rem as i32) {
                 assert_eq!(got, ceil_div_rem(n, den), "x0 {x0} dy {dy} dx {dx} t {t}");
                 answered += 1;
