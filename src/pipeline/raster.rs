@@ -131,9 +131,9 @@ where
         (x, y, v.z, v.w)
     });
     // Kept where the call writes it and lent to the span loop (see `setup`).
-    let setup = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
+    let built = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
     // By reference: bound by value, the set-up is copied out of the `Option`.
-    let Some(setup) = &setup else {
+    let Some(setup) = &built else {
         return 0;
     };
     let mut tri_lambda = 0;

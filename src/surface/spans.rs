@@ -7,7 +7,8 @@
 //! triangle, only the range of bands it touches ([`BandRange`], 2 bytes), found by one
 //! geometry pass over the frame; each band then runs the geometry again for the triangles
 //! whose range covers it and skips the others *before transforming anything* (the
-//! geometry asks [`MeshSink::wants`] per triangle). With 8-row bands a small triangle is
+//! geometry asks [`MeshSink::next_wanted`] for the next triangle that meets the band, a
+//! scan of the ranges). With 8-row bands a small triangle is
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
 //! instead of one per band.
 //!
@@ -448,5 +449,39 @@ mod tests {
         let mut far = BandRange::EMPTY;
         far.include(254, 254);
         assert!(far.covers(300) && far.covers(254) && !far.covers(253));
+    }
+
+    /// In a band pass, `next_wanted(id, end)` is the first id in `id..end` that `wants`
+    /// says yes to (ids past the stored ranges are always wanted), or `end`.
+    #[test]
+    fn next_wanted_is_the_first_wanted_id() {
+        use embedded_graphics_core::pixelcolor::Rgb565;
+        let mut pixels = [Rgb565::default(); 8];
+        let mut band = Frame::new(&mut pixels, 4, 2).expect("a frame");
+        let mut ranges = [BandRange::EMPTY; 9];
+        for (i, r) in ranges.iter_mut().enumerate() {
+            if i % 3 != 1 {
+                r.include((i % 4) as u8, (i % 4 + i % 2) as u8);
+            }
+        }
+        for index in 0..6u8 {
+            let sink: MeshSink<'_, '_, '_, Rgb565> = MeshSink {
+                pass: Pass::Band {
+                    window: (0, usize::MAX),
+                    draws: &[],
+                    band: &mut band,
+                    ranges: &ranges,
+                    index,
+                    pixels: 0,
+                },
+                attributes: true,
+            };
+            for id in 0..13 {
+                for end in id..13 {
+                    let want = (id..end).find(|&i| sink.wants(i)).unwrap_or(end);
+                    assert_eq!(sink.next_wanted(id, end), want, "band {index} {id}..{end}");
+                }
+            }
+        }
     }
 }
