@@ -192,14 +192,14 @@ fn q8_weights(a: u32, b: u32) -> [u32; 4] {
 /// 161.1 -> 161.1 / 118.2 -> 108.2.
 #[inline(always)]
 fn blend_weights(c: [u16; 4], w: [u32; 4]) -> u16 {
-    // Each channel's sum is at most 63 * 256 < 2^14 (weights sum to at most 256), in bits
-    // 16..=31, so adding half of 256 there never overflows the word.
+    // Each channel's sum is at most 63 * 256 < 2^14 (weights sum to at most 256), so adding
+    // half of 256 to it never overflows (see `Round`).
     blend_pairs(c, w, Round)
 }
 
-/// The dot-product sums of [`blend_weights`], each channel's sum `sum w c` in the upper
-/// half of a word handed to `finish`, which returns the channel's value (red and blue
-/// 0..=31, green 0..=63); packed to RGB565. Two texels per multiply on 32-bit targets
+/// The dot-product sums of [`blend_weights`]: each channel's sum `sum w c`, where the
+/// multiply leaves it, handed to `finish` ([`Finish`]), which returns the channel's value
+/// (red and blue 0..=31, green 0..=63); packed to RGB565. Two texels per multiply on 32-bit targets
 /// ([`blend_pairs_u32`]), four on 64-bit ones ([`blend_pairs_u64`]): the same sums, so the
 /// same pixels on every target.
 #[inline(always)]
