@@ -139,7 +139,8 @@ pub trait TriangleOut {
     /// The first id in `id..end` that is wanted, or `end` (ids are then skipped without
     /// asking [`wants`](Self::wants) one by one). A band renderer answers from a tight scan
     /// of its band ranges: per skipped id, a loop of `wants` calls cost about 30
-    /// instructions on Cortex-M0+, the scan about 8.
+    /// instructions on Cortex-M0+, the scan about 8. An answer below `id` is taken as `id`
+    /// (the walk always moves forward), one above `end` as `end`.
     fn next_wanted(&self, id: usize, end: usize) -> usize {
         (id..end).find(|&i| self.wants(i)).unwrap_or(end)
     }
@@ -245,8 +246,11 @@ pub fn walk_mesh<C: TargetColor>(
     };
     let mut next = start;
     while next < end {
+        // At least `from`: an implementation answering below `id` must not stall the walk.
+        let from = first_id + next;
         let t = out
-            .next_wanted(first_id + next, first_id + end)
+            .next_wanted(from, first_id + end)
+            .max(from)
             .wrapping_sub(first_id);
         let Some(idx) = mesh.indices.get(t).filter(|_| t < end) else {
             break;
@@ -475,4 +479,75 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
     };
     walk_mesh(draw, mesh, transform, light, cache, 0, &mut out);
     Ok(out.pixels)
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::{walk_mesh, CachedVertex, MeshTransform, TriangleOut};
+    use crate::demo;
+    use crate::geometry::{Cull, ScreenTriangle, Viewport};
+    use crate::pipeline::{Draw, DrawMode, Shading};
+    use embedded_graphics_core::pixelcolor::Rgb565;
+    use std::vec::Vec;
+
+    /// Records the triangles it is given; `next_wanted` answers with `answer(id, end)`.
+    struct Recorder<F: Fn(usize, usize) -> usize> {
+        answer: F,
+        seen: Vec<usize>,
+    }
+
+    impl<F: Fn(usize, usize) -> usize> TriangleOut for Recorder<F> {
+        fn wants(&self, _: usize) -> bool {
+            true
+        }
+        fn next_wanted(&self, id: usize, end: usize) -> usize {
+            (self.answer)(id, end)
+        }
+        fn attributes(&self) -> bool {
+            true
+        }
+        fn triangle(&mut self, id: usize, _: &ScreenTriangle) {
+            self.seen.push(id);
+        }
+    }
+
+    fn walk(answer: impl Fn(usize, usize) -> usize) -> Vec<usize> {
+        let cube = demo::cube();
+        let mesh = cube.mesh().expect("the demo cube");
+        let vp = Viewport::new(0, 0, 320, 240).expect("a viewport");
+        let mode = DrawMode {
+            shading: Shading::Gouraud,
+            cull: Cull::None,
+            ..DrawMode::default()
+        };
+        let draw = Draw::<Rgb565>::dynamic(mode, None, vp).expect("an untextured draw");
+        let transform = MeshTransform::new(&demo::cube_model(10), &demo::camera(20));
+        let mut cache = [CachedVertex::default(); 8];
+        let mut out = Recorder {
+            answer,
+            seen: Vec::new(),
+        };
+        walk_mesh(&draw, &mesh, &transform, None, &mut cache, 5, &mut out);
+        out.seen
+    }
+
+    /// Whatever `next_wanted` answers, the walk moves forward and ends: an answer below
+    /// `id` is `id`, one past `end` ends the walk, and a faithful answer visits every
+    /// triangle once, in order.
+    #[test]
+    fn the_walk_moves_forward_whatever_next_wanted_answers() {
+        let all = walk(|id, _| id);
+        assert!(!all.is_empty(), "the cube draws something");
+        assert!(all.windows(2).all(|w| w[0] < w[1]), "{all:?}");
+        assert_eq!(walk(|_, _| 0), all, "an answer below id");
+        assert_eq!(
+            walk(|_, _| usize::MAX),
+            Vec::<usize>::new(),
+            "an answer past end"
+        );
+        let odd = walk(|id, end| (id..end).find(|i| i % 2 == 1).unwrap_or(end));
+        let want: Vec<usize> = all.iter().copied().filter(|i| i % 2 == 1).collect();
+        assert_eq!(odd, want, "every other id");
+    }
 }
