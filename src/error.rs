@@ -61,6 +61,11 @@ pub enum Error {
         /// The most the index type can address.
         limit: usize,
     },
+    /// A texture's paired layout does not match its texels (see `Texture::with_pairs`).
+    PairsMismatch {
+        /// The first word that is not texel `index` and its right neighbour.
+        index: usize,
+    },
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -131,6 +136,10 @@ impl fmt::Display for Error {
             Error::MeshTooLarge { what, count, limit } => write!(
                 f,
                 "mesh has {count} {what}, more than the {limit} its u16 indices can address"
+            ),
+            Error::PairsMismatch { index } => write!(
+                f,
+                "pair word {index} is not texel {index} and its right neighbour (build pairs with pair_texels or write_pairs)"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

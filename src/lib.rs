@@ -152,6 +152,12 @@
 //! (for host tools). No depth memory is needed without a depth test, no colour interpolant
 //! without lighting, no reciprocal without perspective.
 //!
+//! Memory can also buy speed where a firmware has it to spare:
+//! [`texture::BilinearPaired`] gives [`texture::Bilinear`]'s pixels from a texture that also
+//! holds its texels in pairs ([`texture::Texture::with_pairs`], 4 bytes per texel more,
+//! built in flash by [`texture::pair_texels`]): two loads per bilinear sample instead of
+//! four. A draw that does not sample pairs does not link them.
+//!
 //! ## Robustness
 //!
 //! Drawing never panics and never writes outside a buffer: triangles behind the camera are

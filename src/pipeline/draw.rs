@@ -123,6 +123,9 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             cull,
         };
         check(&mode, &texture)?;
+        if let Some(t) = &texture {
+            crate::shading::check_pairs_bound::<M::F>(t)?;
+        }
         Ok(Draw {
             mode,
             texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),

@@ -11,8 +11,9 @@ use core::marker::PhantomData;
 use crate::geometry::Cull;
 use crate::shading::{self, builtin::Classic, TexBinding};
 use crate::texture::{
-    Bilinear, BilinearFast, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter, Lod, MipFilter,
-    Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap, WrapMode,
+    Bilinear, BilinearFast, BilinearPaired, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter,
+    Lod, MipFilter, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap,
+    WrapMode,
 };
 
 /// How texture coordinates (and colours) are interpolated across a triangle.
@@ -413,6 +414,11 @@ impl FromMode for BilinearFast {
 impl FromMode for Bilinear {
     fn from_mode(_: &DrawMode) -> Self {
         Bilinear
+    }
+}
+impl FromMode for BilinearPaired {
+    fn from_mode(_: &DrawMode) -> Self {
+        BilinearPaired
     }
 }
 impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {

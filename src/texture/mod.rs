@@ -4,12 +4,13 @@
 //! first (`v = 0` at row 0), texel centres at `i + 0.5`, sampling coordinates are raw I16F16
 //! texel units (`i32`, 65536 = one texel). Sides are powers of two, 1..=4096. Wrap modes and
 //! filters are zero-sized markers ([`Repeat`], [`MirroredRepeat`], [`ClampToEdge`],
-//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`]) so the per-pixel path is monomorphised;
+//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearPaired`]) so the per-pixel path is monomorphised;
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
 //! raw RGB565 `u16`. See each submodule for the exact formulas.
 
 mod height;
 pub(crate) mod mip;
+mod paired;
 pub(crate) mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
@@ -21,6 +22,7 @@ pub use mip::{
     LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
     NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear, MAX_LEVELS,
 };
+pub use paired::{pair_texels, write_pairs, BilinearPaired};
 pub use sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 pub use texture::{Texture, MAX_LOG2_SIZE};
 pub use wrap::{ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Repeat, Wrap, WrapMode};

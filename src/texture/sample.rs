@@ -44,6 +44,9 @@ pub enum Filter {
 pub trait Sampler: Copy + Default + core::fmt::Debug {
     /// The filter as a value.
     const FILTER: Filter;
+    /// True when the sampler reads the texture's paired layout
+    /// ([`Texture::with_pairs`]): bindings and draws refuse a texture without one.
+    const PAIRED: bool = false;
 
     /// Samples `tex` at raw I16F16 texel coordinates `(u, v)` with wrap modes `wu` (columns)
     /// and `wv` (rows). Returns raw RGB565. Never panics, for any input.
@@ -152,6 +155,20 @@ fn gather_repeat(tex: &Texture<'_>, u: i32, v: i32) -> ([u16; 4], u32, u32) {
         tex.texel_at(r1 | x1),
     ];
     (c, a, b)
+}
+
+/// Where [`gather_repeat`] reads: the left column `i0` (unwrapped: mask it with
+/// `width - 1`), the two rows' offsets `r0`, `r1 = r0 + width` (row index times width,
+/// unwrapped: `texel_at` masks with `len - 1`, which wraps the row too) and the Q8 weights
+/// `a`, `b` (`0..=255`).
+#[inline(always)]
+pub(crate) fn repeat_rows(tex: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32, u32, u32) {
+    let tu = u.wrapping_sub(0x7F80);
+    let tv = v.wrapping_sub(0x7F80);
+    let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
+    let r0 = ((tv >> 16) as u32) << tex.log2_width();
+    let r1 = r0.wrapping_add(tex.width());
+    ((tu >> 16) as u32, r0, r1, a, b)
 }
 
 /// Bilinear filtering with the result scaled by intensity `i` (Q8, `0..=256`) in one
@@ -269,6 +286,14 @@ impl Finish for Scale {
 fn blend_pairs_u32(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {
     let top = c[0] as u32 | (c[1] as u32) << 16;
     let bot = c[2] as u32 | (c[3] as u32) << 16;
+    blend_rows_u32(top, bot, w, finish)
+}
+
+/// [`blend_pairs_u32`] from the two rows' words as they are packed (`c0 | c1 << 16`,
+/// `c2 | c3 << 16`), which is how a paired texture stores them.
+#[cfg(any(test, not(target_pointer_width = "64")))]
+#[inline(always)]
+fn blend_rows_u32(top: u32, bot: u32, w: [u32; 4], finish: impl Finish) -> u16 {
     let wt = w[1] | w[0] << 16;
     let wb = w[3] | w[2] << 16;
     let dot = |mask: u32, shift: u32| {
@@ -294,7 +319,16 @@ fn blend_pairs_u32(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {
 #[cfg(any(test, target_pointer_width = "64"))]
 #[inline(always)]
 fn blend_pairs_u64(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {
-    let texels = c[0] as u64 | (c[1] as u64) << 16 | (c[2] as u64) << 32 | (c[3] as u64) << 48;
+    let top = c[0] as u32 | (c[1] as u32) << 16;
+    let bot = c[2] as u32 | (c[3] as u32) << 16;
+    blend_rows_u64(top, bot, w, finish)
+}
+
+/// [`blend_pairs_u64`] from the two rows' words as they are packed (see [`blend_rows_u32`]).
+#[cfg(any(test, target_pointer_width = "64"))]
+#[inline(always)]
+fn blend_rows_u64(top: u32, bot: u32, w: [u32; 4], finish: impl Finish) -> u16 {
+    let texels = top as u64 | (bot as u64) << 32;
     let weights = w[3] as u64 | (w[2] as u64) << 16 | (w[1] as u64) << 32 | (w[0] as u64) << 48;
     let dot =
         |mask: u64, shift: u32| finish.top_lane(((texels >> shift) & mask).wrapping_mul(weights));
@@ -302,6 +336,30 @@ fn blend_pairs_u64(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {
     let g = dot(0x003F_003F_003F_003F, 5);
     let b = dot(0x001F_001F_001F_001F, 0);
     ((r << 11) | (g << 5) | b) as u16
+}
+
+/// Bilinear blend of a paired texture's two row words (`top = c00 | c10 << 16`,
+/// `bot = c01 | c11 << 16`) with Q8 fractions `a`, `b` in 0..=256, scaled by intensity `i`
+/// (Q8, `0..=256`) when `Some`: the same sums and roundings as [`blend_q8`] and
+/// [`blend_q8_scaled`], so the same result.
+#[inline(always)]
+pub(crate) fn blend_rows_q8(top: u32, bot: u32, a: u32, b: u32, i: Option<u32>) -> u16 {
+    #[inline(always)]
+    fn blend(top: u32, bot: u32, w: [u32; 4], finish: impl Finish) -> u16 {
+        #[cfg(target_pointer_width = "64")]
+        {
+            blend_rows_u64(top, bot, w, finish)
+        }
+        #[cfg(not(target_pointer_width = "64"))]
+        {
+            blend_rows_u32(top, bot, w, finish)
+        }
+    }
+    let w = q8_weights(a, b);
+    match i {
+        Some(i) => blend(top, bot, w, Scale(i)),
+        None => blend(top, bot, w, Round),
+    }
 }
 
 /// The per-texel form of [`blend_weights`] (red and blue in one word, green in another; eight

@@ -35,6 +35,8 @@ pub struct Texture<'a> {
     log2_width: u8,
     log2_height: u8,
     border: u16,
+    /// The paired layout (see [`super::paired`]), or empty.
+    pairs: &'a [u32],
 }
 
 /// Checks the sides and the length; returns `(log2_width, log2_height)`.
@@ -81,6 +83,7 @@ impl<'a> Texture<'a> {
             log2_width,
             log2_height,
             border: 0,
+            pairs: &[],
         })
     }
 
@@ -132,6 +135,58 @@ impl<'a> Texture<'a> {
     #[inline(always)]
     pub const fn border_raw(&self) -> u16 {
         self.border
+    }
+
+    /// Adds the texels in the paired layout (word `i` = texel `i` | its right neighbour
+    /// `<< 16`, built by [`pair_texels`](super::pair_texels) or
+    /// [`write_pairs`](super::write_pairs)), which [`BilinearPaired`](super::BilinearPaired)
+    /// reads: two words per bilinear sample instead of four texels.
+    ///
+    /// # Errors
+    /// - [`Error::WrongLength`] if `pairs.len() != width * height`,
+    /// - [`Error::PairsMismatch`] at the first word that is not texel `i` and its right
+    ///   neighbour (the check reads every word once).
+    pub fn with_pairs(mut self, pairs: &'a [u32]) -> Result<Self, Error> {
+        super::paired::check_pairs(&self, pairs)?;
+        self.pairs = pairs;
+        Ok(self)
+    }
+
+    /// [`Texture::with_pairs`] for statics, checked at compile time when evaluated in a
+    /// `const`/`static` (at run time otherwise).
+    ///
+    /// Only the length can be checked in a `const` (the texels are `Rgb565`, whose value a
+    /// `const fn` cannot read): build `pairs` with [`pair_texels`](super::pair_texels)
+    /// from the same raw texels. Words that do not match draw their own colours under
+    /// [`BilinearPaired`](super::BilinearPaired); nothing panics or reads out of bounds.
+    ///
+    /// # Panics
+    /// If `pairs.len() != width * height`.
+    #[must_use]
+    pub const fn with_pairs_static(mut self, pairs: &'a [u32]) -> Self {
+        assert!(
+            pairs.len() == self.texels.len(),
+            "pairs must hold one word per texel"
+        );
+        self.pairs = pairs;
+        self
+    }
+
+    /// The paired layout, or an empty slice when none was added.
+    #[inline(always)]
+    pub const fn pairs(&self) -> &'a [u32] {
+        self.pairs
+    }
+
+    /// Word `idx` of the paired layout, taken modulo its length (a power of two), or 0 when
+    /// the texture has none. Never panics.
+    #[inline(always)]
+    pub(crate) fn pair_at(&self, idx: u32) -> u32 {
+        let idx = idx as usize & self.pairs.len().wrapping_sub(1);
+        match self.pairs.get(idx) {
+            Some(&w) => w,
+            None => 0,
+        }
     }
 
     /// Raw RGB565 of texel `(i, j)` (column, row). Indices are meant to be in range
@@ -213,6 +268,7 @@ impl Texture<'static> {
                 log2_width,
                 log2_height,
                 border: 0,
+                pairs: &[],
             },
             Err(Error::BadSize(_)) => panic!("texture side is 0 or larger than 4096"),
             Err(Error::NotPowerOfTwo(_)) => panic!("texture side is not a power of two"),
