@@ -25,7 +25,7 @@ use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
 use fixel::texture::{chain_len, full_levels};
-use fixel::texture::{generate_mips, MipTexture};
+use fixel::texture::{generate_mips, write_pairs, MipTexture};
 
 /// A benchmark scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,9 +64,10 @@ impl Scene {
 }
 
 /// Every [`Filt`], for parsing names (`filt_listed` fails to compile when one is missing).
-const FILTS: [Filt; 5] = [
+const FILTS: [Filt; 6] = [
     Filt::Nearest,
     Filt::Bilinear,
+    Filt::BilinearPaired,
     Filt::NearestMip,
     Filt::Trilinear,
     Filt::TrilinearSpan,
@@ -80,6 +81,7 @@ const fn filt_listed(f: Filt) {
     match f {
         Filt::Nearest
         | Filt::Bilinear
+        | Filt::BilinearPaired
         | Filt::NearestMip
         | Filt::Trilinear
         | Filt::TrilinearSpan => {}
@@ -201,6 +203,8 @@ pub struct Bench {
     pub case: Case,
     /// Level 0, then (mipmapped filters only) the rest of the full mip chain.
     texels: Vec<Rgb565>,
+    /// Level 0's paired layout (`Filt::BilinearPaired` only; else empty).
+    pairs: Vec<u32>,
     tex_size: (u32, u32),
     levels: u32,
     cube: demo::MeshData<24, 12>,
@@ -230,10 +234,17 @@ impl Bench {
         if levels > 1 {
             generate_mips(&mut texels, w, h, levels).expect("mips");
         }
+        let mut pairs = Vec::new();
+        if case.mode.filter == Filt::BilinearPaired {
+            let base = Texture::new(&texels, w, h).expect("texture");
+            pairs = vec![0u32; texels.len()];
+            write_pairs(&base, &mut pairs).expect("pairs");
+        }
         let n = (demo::WIDTH * demo::HEIGHT) as usize;
         Bench {
             case,
             texels,
+            pairs,
             tex_size: (w, h),
             levels,
             cube: demo::cube(),
@@ -250,7 +261,12 @@ impl Bench {
     /// that passed the depth test, summed over the frames.
     pub fn run(&mut self, frames: u32) -> u64 {
         let (w, h) = self.tex_size;
-        let tex = MipTexture::new(&self.texels, w, h, self.levels).expect("texture");
+        let tex = if self.pairs.is_empty() {
+            MipTexture::new(&self.texels, w, h, self.levels).expect("texture")
+        } else {
+            let base = Texture::new(&self.texels, w, h).expect("texture");
+            MipTexture::single(base.with_pairs(&self.pairs).expect("pairs"))
+        };
         let vp = Viewport::new(0, 0, demo::WIDTH, demo::HEIGHT).expect("viewport");
         let draw = self.case.mode.draw(tex, vp).expect("draw");
         let mesh: Mesh<'_> = match self.case.scene {

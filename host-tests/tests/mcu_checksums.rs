@@ -35,6 +35,13 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
     t
 }
 
+/// The paired layout of `tex` (the firmwares keep it in flash: `data::T128_PAIRED`).
+fn pairs(tex: &Texture<'_>) -> Vec<u32> {
+    let mut p = vec![0u32; tex.texels().len()];
+    fixel::texture::write_pairs(tex, &mut p).unwrap();
+    p
+}
+
 /// The same frame drawn whole (one 320x240 frame, no bands), hashed the same way.
 fn whole<M>(tex: Texture<'_>, mesh: &Mesh<'_>, model: &Mat4, far: i32, lit: bool) -> (u32, u32)
 where
@@ -89,7 +96,9 @@ fn mcu_frames() {
     let (mut nop1, mut nop2) = (|| {}, || {});
 
     let t128 = texture(128, 128);
-    let tex = Texture::new(&t128, 128, 128).unwrap();
+    let plain = Texture::new(&t128, 128, 128).unwrap();
+    let p128 = pairs(&plain);
+    let tex = plain.with_pairs(&p128).unwrap();
     let r = scenes::cube(Target::Bands(&mut *small), tex, 0, &mut nop1, &mut nop2).unwrap();
     print("cube", &r);
     let wr = scenes::cube(
@@ -103,7 +112,8 @@ fn mcu_frames() {
     print_whole("cube", &r, &wr);
     assert!(!r.stats.rewalked);
     let cube = demo::cube();
-    let w = whole::<scenes::Lit>(tex, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);
+    // `Lit` reads the plain texels: the paired draw gives its pixels.
+    let w = whole::<scenes::Lit>(plain, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);
     assert_eq!(
         w,
         (r.checksum, r.stats.pixels),
@@ -230,22 +240,25 @@ fn mcu_frames() {
         "floor: bands differ from the whole frame"
     );
 
-    let r = scenes::floor::<scenes::FloorBilinear, _, _, _>(
+    let p64 = pairs(&tex);
+    let paired = tex.with_pairs(&p64).unwrap();
+    let r = scenes::floor::<scenes::FloorBilinearPaired, _, _, _>(
         Target::Bands(&mut *small),
-        tex,
+        paired,
         &mut nop1,
         &mut nop2,
     )
     .unwrap();
     print("floor_bilinear", &r);
-    let wr = scenes::floor::<scenes::FloorBilinear, _, _, _>(
+    let wr = scenes::floor::<scenes::FloorBilinearPaired, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
-        tex,
+        paired,
         &mut nop1,
         &mut nop2,
     )
     .unwrap();
     print_whole("floor_bilinear", &r, &wr);
+    // `FloorBilinear` reads the plain texels: the paired draw gives its pixels.
     let w = whole::<scenes::FloorBilinear>(tex, &fm, &Mat4::IDENTITY, 200, false);
     assert_eq!(
         w,

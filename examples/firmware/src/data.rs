@@ -31,10 +31,47 @@ macro_rules! texture {
     };
 }
 
+/// Raw little-endian RGB565 bytes to raw values, at compile time.
+const fn raw<const N: usize>(b: &[u8]) -> [u16; N] {
+    assert!(b.len() == 2 * N);
+    let mut t = [0u16; N];
+    let mut i = 0;
+    while i < N {
+        t[i] = b[2 * i] as u16 | (b[2 * i + 1] as u16) << 8;
+        i += 1;
+    }
+    t
+}
+
+/// A texture of [`texture!`] with its paired layout in flash too
+/// (`fixel::texture::pair_texels`, 4 bytes per texel), for `BilinearPaired`. A separate
+/// static, so only the firmwares that sample it link the pairs.
+macro_rules! paired {
+    ($pairs:ident, $tex:ident, $texels:ident, $w:literal, $h:literal, $file:literal) => {
+        #[doc = concat!("`T(", $w, ", ", $h, ")`'s paired layout.")]
+        pub static $pairs: [u32; $w * $h] = fixel::texture::pair_texels(
+            &raw::<{ $w * $h }>(include_bytes!(concat!(env!("OUT_DIR"), "/", $file))),
+            $w,
+        );
+        #[doc = concat!("`T(", $w, ", ", $h, ")` with its pairs (for `BilinearPaired`).")]
+        pub static $tex: Texture<'static> =
+            Texture::from_static(&$texels, $w, $h).with_pairs_static(&$pairs);
+    };
+}
+
 texture!(T8_TEXELS, T8, 8, 8, "t8x8.bin");
 texture!(T64_TEXELS, T64, 64, 64, "t64x64.bin");
 texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
+paired!(T64_PAIRS, T64_PAIRED, T64_TEXELS, 64, 64, "t64x64.bin");
+paired!(
+    T128_PAIRS,
+    T128_PAIRED,
+    T128_TEXELS,
+    128,
+    128,
+    "t128x128.bin"
+);
 
 /// Texels of `T(64, 64)` and its mip levels down to 1 x 1 (5461 texels, ~11 KB).
 pub static T64_MIP_TEXELS: [Rgb565; fixel::texture::chain_len(64, 64, 7)] =

@@ -14,7 +14,8 @@ use fixel::pipeline::{
 };
 use fixel::prelude::{Cull, Error, Viewport};
 use fixel::texture::{
-    Bilinear, Lod, LodGranularity, MipTexture, Nearest, NearestMipmapNearest, Repeat, Trilinear,
+    Bilinear, BilinearPaired, Lod, LodGranularity, MipTexture, Nearest, NearestMipmapNearest,
+    Repeat, Trilinear,
 };
 
 /// Projection of a mode.
@@ -51,6 +52,9 @@ pub enum Filt {
     Nearest,
     /// `Bilinear`, level 0.
     Bilinear,
+    /// `BilinearPaired`, level 0: `Bilinear`'s pixels from the texture's paired layout (the
+    /// texture handed to [`Mode::draw`] must have pairs, `Texture::with_pairs`).
+    BilinearPaired,
     /// `NearestMipmapNearest`, LOD per pixel.
     NearestMip,
     /// `Trilinear`, LOD per pixel.
@@ -100,6 +104,7 @@ impl Mode {
         match self.filter {
             Filt::Nearest => "nearest",
             Filt::Bilinear => "bilinear",
+            Filt::BilinearPaired => "bilinear-paired",
             Filt::NearestMip => "nearest-mip-nearest",
             Filt::Trilinear => "trilinear",
             Filt::TrilinearSpan => "trilinear-span",
@@ -166,6 +171,7 @@ impl Mode {
                 match self.filter {
                     Filt::Nearest => typed!($p, Nearest),
                     Filt::Bilinear => typed!($p, Bilinear),
+                    Filt::BilinearPaired => typed!($p, BilinearPaired),
                     Filt::NearestMip => typed!($p, NearestMipmapNearest),
                     Filt::Trilinear | Filt::TrilinearSpan => typed!($p, Trilinear),
                 }

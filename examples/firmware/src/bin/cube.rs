@@ -10,7 +10,7 @@ fn run() -> bool {
     report("cube", |pause, resume| {
         scenes::cube(
             scenes::Target::Bands(&mut buf),
-            data::T128,
+            data::T128_PAIRED,
             frame,
             pause,
             resume,
