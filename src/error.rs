@@ -61,8 +61,8 @@ pub enum Error {
         /// The most the index type can address.
         limit: usize,
     },
-    /// A texture's paired layout does not match its texels (see `Texture::with_pairs`).
-    PairsMismatch {
+    /// A texture's footprints do not match its texels (see `Texture::with_footprints`).
+    FootprintMismatch {
         /// The first word that is not texel `index` and its right neighbour.
         index: usize,
     },
@@ -137,9 +137,9 @@ impl fmt::Display for Error {
                 f,
                 "mesh has {count} {what}, more than the {limit} its u16 indices can address"
             ),
-            Error::PairsMismatch { index } => write!(
+            Error::FootprintMismatch { index } => write!(
                 f,
-                "pair word {index} is not texel {index} and its right neighbour (build pairs with pair_texels or write_pairs)"
+                "footprint {index} is not the four texels around texel {index} (build footprints with footprint_texels or write_footprints)"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

@@ -153,10 +153,10 @@
 //! without lighting, no reciprocal without perspective.
 //!
 //! Memory can also buy speed where a firmware has it to spare:
-//! [`texture::BilinearPaired`] gives [`texture::Bilinear`]'s pixels from a texture that also
-//! holds its texels in pairs ([`texture::Texture::with_pairs`], 4 bytes per texel more,
-//! built in flash by [`texture::pair_texels`]): two loads per bilinear sample instead of
-//! four. A draw that does not sample pairs does not link them.
+//! [`texture::BilinearFootprint`] gives [`texture::Bilinear`]'s pixels from a texture that also
+//! holds each texel's bilinear footprint ([`texture::Texture::with_footprints`], 8 bytes per
+//! texel more, built in flash by [`texture::footprint_texels`]): one 64-bit load per sample
+//! instead of four texel loads. A draw that does not sample footprints does not link them.
 //!
 //! ## Robustness
 //!

@@ -25,7 +25,7 @@ use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
 use fixel::texture::{chain_len, full_levels};
-use fixel::texture::{generate_mips, write_pairs, MipTexture};
+use fixel::texture::{generate_mips, write_footprints, MipTexture};
 
 /// A benchmark scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,7 +67,7 @@ impl Scene {
 const FILTS: [Filt; 6] = [
     Filt::Nearest,
     Filt::Bilinear,
-    Filt::BilinearPaired,
+    Filt::BilinearFootprint,
     Filt::NearestMip,
     Filt::Trilinear,
     Filt::TrilinearSpan,
@@ -81,7 +81,7 @@ const fn filt_listed(f: Filt) {
     match f {
         Filt::Nearest
         | Filt::Bilinear
-        | Filt::BilinearPaired
+        | Filt::BilinearFootprint
         | Filt::NearestMip
         | Filt::Trilinear
         | Filt::TrilinearSpan => {}
@@ -203,8 +203,8 @@ pub struct Bench {
     pub case: Case,
     /// Level 0, then (mipmapped filters only) the rest of the full mip chain.
     texels: Vec<Rgb565>,
-    /// Level 0's paired layout (`Filt::BilinearPaired` only; else empty).
-    pairs: Vec<u32>,
+    /// Level 0's footprints (`Filt::BilinearFootprint` only; else empty).
+    footprints: Vec<u64>,
     tex_size: (u32, u32),
     levels: u32,
     cube: demo::MeshData<24, 12>,
@@ -234,17 +234,17 @@ impl Bench {
         if levels > 1 {
             generate_mips(&mut texels, w, h, levels).expect("mips");
         }
-        let mut pairs = Vec::new();
-        if case.mode.filter == Filt::BilinearPaired {
+        let mut footprints = Vec::new();
+        if case.mode.filter == Filt::BilinearFootprint {
             let base = Texture::new(&texels, w, h).expect("texture");
-            pairs = vec![0u32; texels.len()];
-            write_pairs(&base, &mut pairs).expect("pairs");
+            footprints = vec![0u64; texels.len()];
+            write_footprints(&base, &mut footprints).expect("footprints");
         }
         let n = (demo::WIDTH * demo::HEIGHT) as usize;
         Bench {
             case,
             texels,
-            pairs,
+            footprints,
             tex_size: (w, h),
             levels,
             cube: demo::cube(),
@@ -261,11 +261,11 @@ impl Bench {
     /// that passed the depth test, summed over the frames.
     pub fn run(&mut self, frames: u32) -> u64 {
         let (w, h) = self.tex_size;
-        let tex = if self.pairs.is_empty() {
+        let tex = if self.footprints.is_empty() {
             MipTexture::new(&self.texels, w, h, self.levels).expect("texture")
         } else {
             let base = Texture::new(&self.texels, w, h).expect("texture");
-            MipTexture::single(base.with_pairs(&self.pairs).expect("pairs"))
+            MipTexture::single(base.with_footprints(&self.footprints).expect("footprints"))
         };
         let vp = Viewport::new(0, 0, demo::WIDTH, demo::HEIGHT).expect("viewport");
         let draw = self.case.mode.draw(tex, vp).expect("draw");

@@ -35,10 +35,10 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
     t
 }
 
-/// The paired layout of `tex` (the firmwares keep it in flash: `data::T128_PAIRED`).
-fn pairs(tex: &Texture<'_>) -> Vec<u32> {
-    let mut p = vec![0u32; tex.texels().len()];
-    fixel::texture::write_pairs(tex, &mut p).unwrap();
+/// The footprints of `tex` (the firmwares keep them in flash: `data::T128_FP`).
+fn footprints(tex: &Texture<'_>) -> Vec<u64> {
+    let mut p = vec![0u64; tex.texels().len()];
+    fixel::texture::write_footprints(tex, &mut p).unwrap();
     p
 }
 
@@ -97,8 +97,8 @@ fn mcu_frames() {
 
     let t128 = texture(128, 128);
     let plain = Texture::new(&t128, 128, 128).unwrap();
-    let p128 = pairs(&plain);
-    let tex = plain.with_pairs(&p128).unwrap();
+    let f128 = footprints(&plain);
+    let tex = plain.with_footprints(&f128).unwrap();
     let r = scenes::cube(Target::Bands(&mut *small), tex, 0, &mut nop1, &mut nop2).unwrap();
     print("cube", &r);
     let wr = scenes::cube(
@@ -112,7 +112,7 @@ fn mcu_frames() {
     print_whole("cube", &r, &wr);
     assert!(!r.stats.rewalked);
     let cube = demo::cube();
-    // `Lit` reads the plain texels: the paired draw gives its pixels.
+    // `Lit` reads the plain texels: the footprint draw gives its pixels.
     let w = whole::<scenes::Lit>(plain, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);
     assert_eq!(
         w,
@@ -240,25 +240,25 @@ fn mcu_frames() {
         "floor: bands differ from the whole frame"
     );
 
-    let p64 = pairs(&tex);
-    let paired = tex.with_pairs(&p64).unwrap();
-    let r = scenes::floor::<scenes::FloorBilinearPaired, _, _, _>(
+    let f64s = footprints(&tex);
+    let fp = tex.with_footprints(&f64s).unwrap();
+    let r = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _>(
         Target::Bands(&mut *small),
-        paired,
+        fp,
         &mut nop1,
         &mut nop2,
     )
     .unwrap();
     print("floor_bilinear", &r);
-    let wr = scenes::floor::<scenes::FloorBilinearPaired, _, _, _>(
+    let wr = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
-        paired,
+        fp,
         &mut nop1,
         &mut nop2,
     )
     .unwrap();
     print_whole("floor_bilinear", &r, &wr);
-    // `FloorBilinear` reads the plain texels: the paired draw gives its pixels.
+    // `FloorBilinear` reads the plain texels: the footprint draw gives its pixels.
     let w = whole::<scenes::FloorBilinear>(tex, &fm, &Mat4::IDENTITY, 200, false);
     assert_eq!(
         w,

@@ -124,7 +124,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         };
         check(&mode, &texture)?;
         if let Some(t) = &texture {
-            crate::shading::check_pairs_bound::<M::F>(t)?;
+            crate::shading::check_footprints_bound::<M::F>(t)?;
         }
         Ok(Draw {
             mode,

@@ -11,7 +11,7 @@ use core::marker::PhantomData;
 use crate::geometry::Cull;
 use crate::shading::{self, builtin::Classic, TexBinding};
 use crate::texture::{
-    Bilinear, BilinearFast, BilinearPaired, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter,
+    Bilinear, BilinearFast, BilinearFootprint, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter,
     Lod, MipFilter, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap,
     WrapMode,
 };
@@ -416,9 +416,9 @@ impl FromMode for Bilinear {
         Bilinear
     }
 }
-impl FromMode for BilinearPaired {
+impl FromMode for BilinearFootprint {
     fn from_mode(_: &DrawMode) -> Self {
-        BilinearPaired
+        BilinearFootprint
     }
 }
 impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {

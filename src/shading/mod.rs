@@ -43,7 +43,7 @@ mod texcoord;
 
 pub use builtin::{q8, Classic, Flat, Gouraud, Modulate, ModulateIntensity, Replace};
 pub use facet::ModulateFacet;
-pub use texcoord::{check_pairs_bound, TexBinding, TexTriangle};
+pub use texcoord::{check_footprints_bound, TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)
 /// and the span loop one running value and one step each; 8 covers a texture pair, a

@@ -33,23 +33,23 @@ pub struct TexBinding<'a, F, WU, WV> {
     lod: Lod,
 }
 
-/// Refuses a sampler that reads the paired layout ([`TexSampler::PAIRED`]) on a chain
-/// whose level 0 has none, or that mipmaps (levels past 0 have no pairs).
+/// Refuses a sampler that reads footprints ([`TexSampler::FOOTPRINTS`]) on a chain whose
+/// level 0 has none, or that mipmaps (levels past 0 have none).
 ///
 /// # Errors
 /// [`Error::BadMode`], saying which.
-pub fn check_pairs_bound<F: TexSampler>(chain: &MipTexture<'_>) -> Result<(), Error> {
-    if !F::PAIRED {
+pub fn check_footprints_bound<F: TexSampler>(chain: &MipTexture<'_>) -> Result<(), Error> {
+    if !F::FOOTPRINTS {
         return Ok(());
     }
     if F::LOD {
         return Err(Error::BadMode(
-            "a paired filter reads level 0 only: it cannot be part of a mipmapped sampler",
+            "a footprint filter reads level 0 only: it cannot be part of a mipmapped sampler",
         ));
     }
-    if chain.base().pairs().is_empty() {
+    if chain.base().footprints().is_empty() {
         return Err(Error::BadMode(
-            "BilinearPaired needs a texture with pairs (Texture::with_pairs)",
+            "BilinearFootprint needs a texture with footprints (Texture::with_footprints)",
         ));
     }
     Ok(())
@@ -80,9 +80,9 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     ///
     /// # Errors
     /// [`Error::BadMode`] when `F` is a mipmapping sampler and the level of detail's
-    /// clamps are inverted (`lod.min > lod.max`), or when `F` reads the paired layout
-    /// ([`BilinearPaired`](crate::texture::BilinearPaired)) and level 0 has none or `F`
-    /// mipmaps (see [`check_pairs_bound`]).
+    /// clamps are inverted (`lod.min > lod.max`), or when `F` reads footprints
+    /// ([`BilinearFootprint`](crate::texture::BilinearFootprint)) and level 0 has none or `F`
+    /// mipmaps (see [`check_footprints_bound`]).
     pub fn new(
         chain: &'a MipTexture<'a>,
         sampler: F,
@@ -93,7 +93,7 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         if F::LOD && lod.min > lod.max {
             return Err(Error::BadMode("lod.min must not exceed lod.max"));
         }
-        check_pairs_bound::<F>(chain)?;
+        check_footprints_bound::<F>(chain)?;
         Ok(Self::new_unchecked(chain, sampler, wu, wv, lod))
     }
 

@@ -27,7 +27,7 @@
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 
-use super::paired::BilinearPaired;
+use super::footprint::BilinearFootprint;
 use super::sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 use super::texture::{Texture, MAX_LOG2_SIZE};
 use super::wrap::WrapMode;
@@ -255,8 +255,8 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     const LOD: bool;
     /// Magnification filter (for reports).
     const FILTER: Filter;
-    /// True when the sampler reads level 0's paired layout ([`Sampler::PAIRED`]).
-    const PAIRED: bool = false;
+    /// True when the sampler reads level 0's footprints ([`Sampler::FOOTPRINTS`]).
+    const FOOTPRINTS: bool = false;
     /// Samples at level-0 texel coordinates `u, v` (I16F16 bits) with `lambda` (Q8.8,
     /// already biased and clamped; ignored unless `LOD`).
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
@@ -303,7 +303,7 @@ macro_rules! plain_sampler {
         impl TexSampler for $t {
             const LOD: bool = false;
             const FILTER: Filter = $f;
-            const PAIRED: bool = <$t as Sampler>::PAIRED;
+            const FOOTPRINTS: bool = <$t as Sampler>::FOOTPRINTS;
             #[inline(always)]
             fn sample_mip<WU: WrapMode, WV: WrapMode>(
                 self,
@@ -346,7 +346,7 @@ plain_sampler!(
     Nearest => Filter::Nearest,
     Bilinear => Filter::Bilinear,
     BilinearFast => Filter::Bilinear,
-    BilinearPaired => Filter::Bilinear,
+    BilinearFootprint => Filter::Bilinear,
 );
 
 /// Blends two RGB565 colours, `f` in `0..=256` (weight of `b`), per channel, rounded.
@@ -404,8 +404,9 @@ pub type Trilinear = Mipmapped<Bilinear, Bilinear, true>;
 impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, Mag, LB> {
     const LOD: bool = true;
     const FILTER: Filter = Mag::FILTER;
-    /// Levels past 0 have no pairs: bindings refuse a paired filter in a mipmapped sampler.
-    const PAIRED: bool = Min::PAIRED || Mag::PAIRED;
+    /// Levels past 0 have no footprints: bindings refuse a footprint filter in a mipmapped
+    /// sampler.
+    const FOOTPRINTS: bool = Min::FOOTPRINTS || Mag::FOOTPRINTS;
     #[inline(always)]
     fn sample_base<WU: WrapMode, WV: WrapMode>(
         self,

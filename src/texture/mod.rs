@@ -4,25 +4,25 @@
 //! first (`v = 0` at row 0), texel centres at `i + 0.5`, sampling coordinates are raw I16F16
 //! texel units (`i32`, 65536 = one texel). Sides are powers of two, 1..=4096. Wrap modes and
 //! filters are zero-sized markers ([`Repeat`], [`MirroredRepeat`], [`ClampToEdge`],
-//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearPaired`]) so the per-pixel path is monomorphised;
+//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearFootprint`]) so the per-pixel path is monomorphised;
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
 //! raw RGB565 `u16`. See each submodule for the exact formulas.
 
+mod footprint;
 mod height;
 pub(crate) mod mip;
-mod paired;
 pub(crate) mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
 mod wrap;
 
+pub use footprint::{footprint_texels, write_footprints, BilinearFootprint};
 pub use height::{generate_height_mips, HeightMap};
 pub use mip::{
     chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,
     LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
     NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear, MAX_LEVELS,
 };
-pub use paired::{pair_texels, write_pairs, BilinearPaired};
 pub use sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 pub use texture::{Texture, MAX_LOG2_SIZE};
 pub use wrap::{ClampToBorder, ClampToEdge, DynWrap, MirroredRepeat, Repeat, Wrap, WrapMode};

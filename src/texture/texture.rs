@@ -35,8 +35,8 @@ pub struct Texture<'a> {
     log2_width: u8,
     log2_height: u8,
     border: u16,
-    /// The paired layout (see [`super::paired`]), or empty.
-    pairs: &'a [u32],
+    /// The footprint layout (see [`super::BilinearFootprint`]), or empty.
+    footprints: &'a [u64],
 }
 
 /// Checks the sides and the length; returns `(log2_width, log2_height)`.
@@ -83,7 +83,7 @@ impl<'a> Texture<'a> {
             log2_width,
             log2_height,
             border: 0,
-            pairs: &[],
+            footprints: &[],
         })
     }
 
@@ -137,53 +137,57 @@ impl<'a> Texture<'a> {
         self.border
     }
 
-    /// Adds the texels in the paired layout (word `i` = texel `i` | its right neighbour
-    /// `<< 16`, built by [`pair_texels`](super::pair_texels) or
-    /// [`write_pairs`](super::write_pairs)), which [`BilinearPaired`](super::BilinearPaired)
-    /// reads: two words per bilinear sample instead of four texels.
+    /// Adds the texture's bilinear footprints (word `i` holds texel `i`, its right
+    /// neighbour, and the two texels below them, built by
+    /// [`footprint_texels`](super::footprint_texels) or
+    /// [`write_footprints`](super::write_footprints)), which
+    /// [`BilinearFootprint`](super::BilinearFootprint) reads: one 64-bit word per bilinear
+    /// sample instead of four texels.
     ///
     /// # Errors
-    /// - [`Error::WrongLength`] if `pairs.len() != width * height`,
-    /// - [`Error::PairsMismatch`] at the first word that is not texel `i` and its right
-    ///   neighbour (the check reads every word once).
-    pub fn with_pairs(mut self, pairs: &'a [u32]) -> Result<Self, Error> {
-        super::paired::check_pairs(&self, pairs)?;
-        self.pairs = pairs;
+    /// - [`Error::WrongLength`] if `footprints.len() != width * height`,
+    /// - [`Error::FootprintMismatch`] at the first word that is not texel `i`'s footprint
+    ///   (the check reads every word once).
+    pub fn with_footprints(mut self, footprints: &'a [u64]) -> Result<Self, Error> {
+        super::footprint::check_footprints(&self, footprints)?;
+        self.footprints = footprints;
         Ok(self)
     }
 
-    /// [`Texture::with_pairs`] for statics, checked at compile time when evaluated in a
+    /// [`Texture::with_footprints`] for statics, checked at compile time when evaluated in a
     /// `const`/`static` (at run time otherwise).
     ///
     /// Only the length can be checked in a `const` (the texels are `Rgb565`, whose value a
-    /// `const fn` cannot read): build `pairs` with [`pair_texels`](super::pair_texels)
-    /// from the same raw texels. Words that do not match draw their own colours under
-    /// [`BilinearPaired`](super::BilinearPaired); nothing panics or reads out of bounds.
+    /// `const fn` cannot read): build `footprints` with
+    /// [`footprint_texels`](super::footprint_texels) from the same raw texels. Words that
+    /// do not match draw their own colours under
+    /// [`BilinearFootprint`](super::BilinearFootprint); nothing panics or reads out of
+    /// bounds.
     ///
     /// # Panics
-    /// If `pairs.len() != width * height`.
+    /// If `footprints.len() != width * height`.
     #[must_use]
-    pub const fn with_pairs_static(mut self, pairs: &'a [u32]) -> Self {
+    pub const fn with_footprints_static(mut self, footprints: &'a [u64]) -> Self {
         assert!(
-            pairs.len() == self.texels.len(),
-            "pairs must hold one word per texel"
+            footprints.len() == self.texels.len(),
+            "footprints must hold one word per texel"
         );
-        self.pairs = pairs;
+        self.footprints = footprints;
         self
     }
 
-    /// The paired layout, or an empty slice when none was added.
+    /// The footprints, or an empty slice when none were added.
     #[inline(always)]
-    pub const fn pairs(&self) -> &'a [u32] {
-        self.pairs
+    pub const fn footprints(&self) -> &'a [u64] {
+        self.footprints
     }
 
-    /// Word `idx` of the paired layout, taken modulo its length (a power of two), or 0 when
-    /// the texture has none. Never panics.
+    /// Footprint `idx`, taken modulo their count (a power of two), or 0 when the texture
+    /// has none. Never panics.
     #[inline(always)]
-    pub(crate) fn pair_at(&self, idx: u32) -> u32 {
-        let idx = idx as usize & self.pairs.len().wrapping_sub(1);
-        match self.pairs.get(idx) {
+    pub(crate) fn footprint_at(&self, idx: u32) -> u64 {
+        let idx = idx as usize & self.footprints.len().wrapping_sub(1);
+        match self.footprints.get(idx) {
             Some(&w) => w,
             None => 0,
         }
@@ -268,7 +272,7 @@ impl Texture<'static> {
                 log2_width,
                 log2_height,
                 border: 0,
-                pairs: &[],
+                footprints: &[],
             },
             Err(Error::BadSize(_)) => panic!("texture side is 0 or larger than 4096"),
             Err(Error::NotPowerOfTwo(_)) => panic!("texture side is not a power of two"),

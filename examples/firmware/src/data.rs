@@ -43,19 +43,19 @@ const fn raw<const N: usize>(b: &[u8]) -> [u16; N] {
     t
 }
 
-/// A texture of [`texture!`] with its paired layout in flash too
-/// (`fixel::texture::pair_texels`, 4 bytes per texel), for `BilinearPaired`. A separate
-/// static, so only the firmwares that sample it link the pairs.
-macro_rules! paired {
-    ($pairs:ident, $tex:ident, $texels:ident, $w:literal, $h:literal, $file:literal) => {
-        #[doc = concat!("`T(", $w, ", ", $h, ")`'s paired layout.")]
-        pub static $pairs: [u32; $w * $h] = fixel::texture::pair_texels(
+/// A texture of [`texture!`] with its bilinear footprints in flash too
+/// (`fixel::texture::footprint_texels`, 8 bytes per texel), for `BilinearFootprint`. A
+/// separate static, so only the firmwares that sample it link the footprints.
+macro_rules! footprints {
+    ($fp:ident, $tex:ident, $texels:ident, $w:literal, $h:literal, $file:literal) => {
+        #[doc = concat!("`T(", $w, ", ", $h, ")`'s footprints.")]
+        pub static $fp: [u64; $w * $h] = fixel::texture::footprint_texels(
             &raw::<{ $w * $h }>(include_bytes!(concat!(env!("OUT_DIR"), "/", $file))),
             $w,
         );
-        #[doc = concat!("`T(", $w, ", ", $h, ")` with its pairs (for `BilinearPaired`).")]
+        #[doc = concat!("`T(", $w, ", ", $h, ")` with its footprints (for `BilinearFootprint`).")]
         pub static $tex: Texture<'static> =
-            Texture::from_static(&$texels, $w, $h).with_pairs_static(&$pairs);
+            Texture::from_static(&$texels, $w, $h).with_footprints_static(&$fp);
     };
 }
 
@@ -63,10 +63,10 @@ texture!(T8_TEXELS, T8, 8, 8, "t8x8.bin");
 texture!(T64_TEXELS, T64, 64, 64, "t64x64.bin");
 texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
-paired!(T64_PAIRS, T64_PAIRED, T64_TEXELS, 64, 64, "t64x64.bin");
-paired!(
-    T128_PAIRS,
-    T128_PAIRED,
+footprints!(T64_FOOTPRINTS, T64_FP, T64_TEXELS, 64, 64, "t64x64.bin");
+footprints!(
+    T128_FOOTPRINTS,
+    T128_FP,
     T128_TEXELS,
     128,
     128,

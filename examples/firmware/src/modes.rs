@@ -14,7 +14,7 @@ use fixel::pipeline::{
 };
 use fixel::prelude::{Cull, Error, Viewport};
 use fixel::texture::{
-    Bilinear, BilinearPaired, Lod, LodGranularity, MipTexture, Nearest, NearestMipmapNearest,
+    Bilinear, BilinearFootprint, Lod, LodGranularity, MipTexture, Nearest, NearestMipmapNearest,
     Repeat, Trilinear,
 };
 
@@ -52,9 +52,10 @@ pub enum Filt {
     Nearest,
     /// `Bilinear`, level 0.
     Bilinear,
-    /// `BilinearPaired`, level 0: `Bilinear`'s pixels from the texture's paired layout (the
-    /// texture handed to [`Mode::draw`] must have pairs, `Texture::with_pairs`).
-    BilinearPaired,
+    /// `BilinearFootprint`, level 0: `Bilinear`'s pixels from the texture's bilinear
+    /// footprints (the texture handed to [`Mode::draw`] must have them,
+    /// `Texture::with_footprints`).
+    BilinearFootprint,
     /// `NearestMipmapNearest`, LOD per pixel.
     NearestMip,
     /// `Trilinear`, LOD per pixel.
@@ -104,7 +105,7 @@ impl Mode {
         match self.filter {
             Filt::Nearest => "nearest",
             Filt::Bilinear => "bilinear",
-            Filt::BilinearPaired => "bilinear-paired",
+            Filt::BilinearFootprint => "bilinear-footprint",
             Filt::NearestMip => "nearest-mip-nearest",
             Filt::Trilinear => "trilinear",
             Filt::TrilinearSpan => "trilinear-span",
@@ -171,7 +172,7 @@ impl Mode {
                 match self.filter {
                     Filt::Nearest => typed!($p, Nearest),
                     Filt::Bilinear => typed!($p, Bilinear),
-                    Filt::BilinearPaired => typed!($p, BilinearPaired),
+                    Filt::BilinearFootprint => typed!($p, BilinearFootprint),
                     Filt::NearestMip => typed!($p, NearestMipmapNearest),
                     Filt::Trilinear | Filt::TrilinearSpan => typed!($p, Trilinear),
                 }

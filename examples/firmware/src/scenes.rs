@@ -16,7 +16,7 @@ use fixel::scene::{
 };
 use fixel::surface::BandRange;
 use fixel::surface::{BandStats, Binned};
-use fixel::texture::{Bilinear, BilinearPaired, Nearest, Repeat};
+use fixel::texture::{Bilinear, BilinearFootprint, Nearest, Repeat};
 
 /// Frame size of every scene.
 pub const W: u32 = demo::WIDTH;
@@ -43,10 +43,10 @@ pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 /// exact values every 16 pixels: the cheapest mode within 0.5 dB of exact (45.8 dB; N = 32
 /// is 44.9).
 pub type Lit = Pipeline<QuadraticBy<4>, Bilinear, Repeat, Repeat, ModulateFacet, DepthLess>;
-/// The `cube` scene's draw: [`Lit`] reading the texture's paired layout
-/// (`BilinearPaired`: the same pixels, two loads per sample instead of four).
-pub type LitPaired =
-    Pipeline<QuadraticBy<4>, BilinearPaired, Repeat, Repeat, ModulateFacet, DepthLess>;
+/// The `cube` scene's draw: [`Lit`] reading the texture's bilinear footprints
+/// (`BilinearFootprint`: the same pixels, two loads per sample instead of four).
+pub type LitFootprint =
+    Pipeline<QuadraticBy<4>, BilinearFootprint, Repeat, Repeat, ModulateFacet, DepthLess>;
 /// The anti-aliasing scenes' cube (`aa`, `aa_scene`): [`Lit`] as it was when their figures
 /// in `docs/report/aa.md` and the README were measured, exact every 4 pixels.
 pub type LitSub4 =
@@ -59,9 +59,9 @@ pub type LitSphere =
 pub type FloorNearest = Pipeline<SubdividedBy<6>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).
 pub type FloorBilinear = Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, Replace, DepthLess>;
-/// `floor_bilinear`'s draw: [`FloorBilinear`] reading the texture's paired layout.
-pub type FloorBilinearPaired =
-    Pipeline<SubdividedBy<6>, BilinearPaired, Repeat, Repeat, Replace, DepthLess>;
+/// `floor_bilinear`'s draw: [`FloorBilinear`] reading the texture's bilinear footprints.
+pub type FloorBilinearFootprint =
+    Pipeline<SubdividedBy<6>, BilinearFootprint, Repeat, Repeat, Replace, DepthLess>;
 
 /// FNV-1a (32 bit) over the RGB565 values as little-endian bytes, rows top to bottom.
 #[derive(Clone, Copy, Debug)]
@@ -267,8 +267,8 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
     })
 }
 
-/// Scene `cube`, frame `i`: `texture` must be `T(128, 128)` with its pairs
-/// (`Texture::with_pairs`; drawn with [`LitPaired`]).
+/// Scene `cube`, frame `i`: `texture` must be `T(128, 128)` with its footprints
+/// (`Texture::with_footprints`; drawn with [`LitFootprint`]).
 pub fn cube<const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
     texture: Texture<'_>,
@@ -277,7 +277,7 @@ pub fn cube<const R: usize, const V: usize, const B: usize>(
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let m = demo::cube();
-    render::<LitPaired, R, V, B>(
+    render::<LitFootprint, R, V, B>(
         buf,
         texture,
         &m.mesh()?,

@@ -272,7 +272,7 @@ fn band_checksum(scene: Scene, m: &Mode, tex: &Tex, meshes: &Meshes) -> (String,
 fn ref_filter(f: Filt) -> (RefFilter, RefMip) {
     match f {
         Filt::Nearest => (RefFilter::Nearest, RefMip::None),
-        Filt::Bilinear | Filt::BilinearPaired => (RefFilter::Bilinear, RefMip::None),
+        Filt::Bilinear | Filt::BilinearFootprint => (RefFilter::Bilinear, RefMip::None),
         Filt::NearestMip => (RefFilter::Nearest, RefMip::Nearest),
         Filt::Trilinear | Filt::TrilinearSpan => (RefFilter::Bilinear, RefMip::Linear),
     }
@@ -516,7 +516,7 @@ fn filt_short(f: Filt) -> &'static str {
     match f {
         Filt::Nearest => "N",
         Filt::Bilinear => "B",
-        Filt::BilinearPaired => "Bp",
+        Filt::BilinearFootprint => "Bp",
         Filt::NearestMip => "NMN",
         Filt::Trilinear => "T",
         Filt::TrilinearSpan => "Ts",

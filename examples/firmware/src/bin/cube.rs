@@ -10,7 +10,7 @@ fn run() -> bool {
     report("cube", |pause, resume| {
         scenes::cube(
             scenes::Target::Bands(&mut buf),
-            data::T128_PAIRED,
+            data::T128_FP,
             frame,
             pause,
             resume,

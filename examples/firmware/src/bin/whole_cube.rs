@@ -14,7 +14,7 @@ fn run() -> bool {
     report("whole_cube", |pause, resume| {
         scenes::cube(
             WholeTarget::Whole(&mut buf),
-            data::T128_PAIRED,
+            data::T128_FP,
             frame,
             pause,
             resume,

@@ -1,0 +1,369 @@
+//! Bilinear footprints: a texture layout for [`BilinearFootprint`], the bilinear filter that
+//! reads it.
+//!
+//! Layout: one `u64` per texel (row-major like the texels) holding the four texels of the
+//! bilinear footprint whose top-left texel it is, with repeat wrapping (the row's first
+//! texel after its last, row 0 below the last row). With `c(i, j)` raw RGB565 and
+//! `i1 = (i + 1) % width`, `j1 = (j + 1) % height`:
+//!
+//! `footprints[j * width + i] = c(i, j) | c(i1, j) << 16 | c(i, j1) << 32 | c(i1, j1) << 48`.
+//!
+//! A bilinear sample with repeat wrapping needs exactly those four texels. [`Bilinear`] loads
+//! them one by one and packs each row's two into a word for its two-texels-per-multiply sums
+//! (see `sample.rs`); [`BilinearFootprint`] loads one word, already packed: one index
+//! instead of four, no right column or lower row to wrap, no packing. The weights, sums and
+//! roundings are [`Bilinear`]'s, so the pixels are the same bit for bit (tested); only the
+//! cost changes.
+//!
+//! Cost: 8 bytes per texel beside the texels' 2 (a 128 x 128 texture: 128 KiB of footprints
+//! beside 32 KiB of texels). Build them once: [`footprint_texels`] in a `static` (flash, at
+//! compile time), or [`write_footprints`] into caller storage (RAM, at run time). A draw
+//! that does not sample them links none of this.
+//!
+//! Other wraps (clamp, mirror, border) read the plain texels as [`Bilinear`] does, since
+//! their neighbours at the edges are not the repeat ones.
+//!
+//! ```
+//! use fixel::texture::{footprint_texels, BilinearFootprint, Repeat, Sampler, Texture};
+//! use fixel::Rgb565;
+//!
+//! const RAW: [u16; 4] = [0xF800, 0x07E0, 0x001F, 0xFFFF];
+//! static TEXELS: [Rgb565; 4] = [
+//!     Rgb565::new(31, 0, 0),
+//!     Rgb565::new(0, 63, 0),
+//!     Rgb565::new(0, 0, 31),
+//!     Rgb565::new(31, 63, 31),
+//! ];
+//! static FOOTPRINTS: [u64; 4] = footprint_texels(&RAW, 2);
+//! static TEX: Texture<'static> =
+//!     Texture::from_static(&TEXELS, 2, 2).with_footprints_static(&FOOTPRINTS);
+//!
+//! // Texel (1, 1)'s footprint wraps right to (0, 1) and down to row 0.
+//! assert_eq!(FOOTPRINTS[3], 0xFFFF | 0x001F << 16 | 0x07E0 << 32 | 0xF800 << 48);
+//! // Halfway between all four texel centres: their mean, whatever the layout.
+//! let c = BilinearFootprint::sample(&TEX, Repeat, Repeat, 0x10000, 0x10000);
+//! assert_eq!(c, fixel::texture::Bilinear::sample(&TEX, Repeat, Repeat, 0x10000, 0x10000));
+//! ```
+
+use embedded_graphics_core::pixelcolor::IntoStorage;
+
+use super::sample::{blend_rows_q8, repeat_rows, Bilinear, Sampler};
+use super::texture::Texture;
+use super::wrap::WrapMode;
+use crate::Error;
+
+/// Bilinear filtering ([`Bilinear`]'s arithmetic and pixels) that reads a texture's
+/// footprints ([`Texture::with_footprints`]) when both wraps repeat: one 64-bit word per
+/// sample.
+///
+/// Bindings and draws refuse a texture without footprints ([`Error::BadMode`]), and a
+/// mipmapped sampler built on it (the levels past 0 have none). Its [`Sampler::FILTER`]
+/// is [`Filter::Bilinear`](super::Filter::Bilinear).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BilinearFootprint;
+
+impl BilinearFootprint {
+    /// The two row words (`c00 | c10 << 16`, `c01 | c11 << 16`) and Q8 weights of a
+    /// repeat-wrapped sample at `(u, v)`.
+    #[inline(always)]
+    fn gather(tex: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32, u32) {
+        let (i0, r0, _, a, b) = repeat_rows(tex, u, v);
+        let f = tex.footprint_at(r0 | (i0 & (tex.width() - 1)));
+        (f as u32, (f >> 32) as u32, a, b)
+    }
+}
+
+impl Sampler for BilinearFootprint {
+    const FILTER: super::Filter = super::Filter::Bilinear;
+    const FOOTPRINTS: bool = true;
+
+    #[inline(always)]
+    fn sample<WU: WrapMode, WV: WrapMode>(
+        tex: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            let (top, bot, a, b) = Self::gather(tex, u, v);
+            return blend_rows_q8(top, bot, a, b, None);
+        }
+        Bilinear::sample(tex, wu, wv, u, v)
+    }
+
+    #[inline(always)]
+    fn sample_scaled<WU: WrapMode, WV: WrapMode>(
+        tex: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            let (top, bot, a, b) = Self::gather(tex, u, v);
+            return blend_rows_q8(top, bot, a, b, Some(u32::from(i.min(256))));
+        }
+        Bilinear::sample_scaled(tex, wu, wv, u, v, i)
+    }
+}
+
+/// Indices of the four texels of texel `i`'s footprint in `n` texels of rows of `width`
+/// (powers of two, `width` dividing `n`): `i`, right, below, below right.
+#[inline(always)]
+const fn footprint_of(i: usize, width: usize, n: usize) -> [usize; 4] {
+    let below = (i + width) & (n - 1);
+    [i, right_of(i, width), below, right_of(below, width)]
+}
+
+/// Index of the texel right of `k` in rows of `width` (a power of two), wrapping to the
+/// row's first texel.
+#[inline(always)]
+const fn right_of(k: usize, width: usize) -> usize {
+    (k & !(width - 1)) | ((k + 1) & (width - 1))
+}
+
+/// The footprints of raw RGB565 texels in rows of `width`, at compile time:
+/// `static F: [u64; N] = footprint_texels(&RAW, W);` puts them in flash.
+///
+/// # Panics
+/// If `width` or `N` is not a power of two, or `width > N` (a compile error in a `static`).
+pub const fn footprint_texels<const N: usize>(raw: &[u16; N], width: u32) -> [u64; N] {
+    let w = width as usize;
+    assert!(
+        width.is_power_of_two() && N.is_power_of_two() && w <= N,
+        "width and the texel count must be powers of two, width at most the count"
+    );
+    let mut out = [0u64; N];
+    let mut i = 0;
+    while i < N {
+        let k = footprint_of(i, w, N);
+        out[i] = raw[k[0]] as u64
+            | (raw[k[1]] as u64) << 16
+            | (raw[k[2]] as u64) << 32
+            | (raw[k[3]] as u64) << 48;
+        i += 1;
+    }
+    out
+}
+
+/// Writes `tex`'s footprints into `out` (one word per texel), at run time.
+///
+/// # Errors
+/// [`Error::WrongLength`] if `out.len() != width * height`.
+pub fn write_footprints(tex: &Texture<'_>, out: &mut [u64]) -> Result<(), Error> {
+    let texels = tex.texels();
+    if out.len() != texels.len() {
+        return Err(Error::WrongLength {
+            expected: texels.len(),
+            actual: out.len(),
+        });
+    }
+    for (i, word) in out.iter_mut().enumerate() {
+        *word = footprint_word(tex, i);
+    }
+    Ok(())
+}
+
+/// Footprint `i` of `tex` (`i < texels.len()`).
+fn footprint_word(tex: &Texture<'_>, i: usize) -> u64 {
+    let texels = tex.texels();
+    let at = |k: usize| texels.get(k).map_or(0, |c| u64::from(c.into_storage()));
+    let k = footprint_of(i, tex.width() as usize, texels.len());
+    at(k[0]) | at(k[1]) << 16 | at(k[2]) << 32 | at(k[3]) << 48
+}
+
+/// Checks that `footprints` are `tex`'s ([`Texture::with_footprints`]).
+pub(crate) fn check_footprints(tex: &Texture<'_>, footprints: &[u64]) -> Result<(), Error> {
+    if footprints.len() != tex.texels().len() {
+        return Err(Error::WrongLength {
+            expected: tex.texels().len(),
+            actual: footprints.len(),
+        });
+    }
+    match (0..footprints.len()).find(|&i| footprints[i] != footprint_word(tex, i)) {
+        Some(index) => Err(Error::FootprintMismatch { index }),
+        None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::texture::wrap::{ClampToBorder, ClampToEdge, MirroredRepeat, Repeat};
+    use embedded_graphics_core::pixelcolor::raw::RawU16;
+    use embedded_graphics_core::pixelcolor::Rgb565;
+    use std::vec::Vec;
+
+    struct Rng(u32);
+    impl Rng {
+        fn next(&mut self) -> u32 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 17;
+            self.0 ^= self.0 << 5;
+            self.0
+        }
+    }
+
+    fn texels(raw: &[u16]) -> Vec<Rgb565> {
+        raw.iter().map(|&r| Rgb565::from(RawU16::new(r))).collect()
+    }
+
+    /// Every wrap pair, every size up to 16 x 16 (including 1-texel rows and columns), any
+    /// coordinates: the same pixels as `Bilinear`, plain and scaled.
+    #[test]
+    fn footprint_samples_equal_bilinear() {
+        let mut rng = Rng(0x1234_5678);
+        for (lw, lh) in [(0, 0), (0, 3), (3, 0), (1, 1), (2, 3), (4, 4), (4, 1)] {
+            let (w, h) = (1u32 << lw, 1u32 << lh);
+            let raw: Vec<u16> = (0..w * h).map(|_| rng.next() as u16).collect();
+            let t = texels(&raw);
+            let plain = Texture::new(&t, w, h).unwrap();
+            let mut fp = std::vec![0u64; (w * h) as usize];
+            write_footprints(&plain, &mut fp).unwrap();
+            let tex = plain.with_footprints(&fp).unwrap();
+            for _ in 0..4000 {
+                // Mostly near the texture, sometimes anywhere in i32.
+                let (u, v) = if rng.next() % 8 == 0 {
+                    (rng.next() as i32, rng.next() as i32)
+                } else {
+                    (
+                        (rng.next() % (w << 18)) as i32 - (w << 17) as i32,
+                        (rng.next() % (h << 18)) as i32 - (h << 17) as i32,
+                    )
+                };
+                let i = (rng.next() % 300) as u16;
+                macro_rules! same {
+                    ($wu:expr, $wv:expr) => {
+                        assert_eq!(
+                            BilinearFootprint::sample(&tex, $wu, $wv, u, v),
+                            Bilinear::sample(&plain, $wu, $wv, u, v),
+                            "{w}x{h} at ({u}, {v})"
+                        );
+                        assert_eq!(
+                            BilinearFootprint::sample_scaled(&tex, $wu, $wv, u, v, i),
+                            Bilinear::sample_scaled(&plain, $wu, $wv, u, v, i),
+                            "{w}x{h} at ({u}, {v}) scaled by {i}"
+                        );
+                    };
+                }
+                same!(Repeat, Repeat);
+                same!(Repeat, ClampToEdge);
+                same!(MirroredRepeat, Repeat);
+                same!(ClampToBorder, ClampToBorder);
+            }
+        }
+    }
+
+    #[test]
+    fn const_and_run_time_layouts_agree() {
+        const RAW: [u16; 8] = [1, 2, 3, 4, 5, 6, 7, 8];
+        const FP: [u64; 8] = footprint_texels(&RAW, 4);
+        let word = |a: u64, b: u64, c: u64, d: u64| a | b << 16 | c << 32 | d << 48;
+        assert_eq!(FP[0], word(1, 2, 5, 6));
+        assert_eq!(FP[3], word(4, 1, 8, 5));
+        assert_eq!(FP[7], word(8, 5, 4, 1));
+        let t = texels(&RAW);
+        let tex = Texture::new(&t, 4, 2).unwrap();
+        let mut out = [0u64; 8];
+        write_footprints(&tex, &mut out).unwrap();
+        assert_eq!(out, FP);
+        assert_eq!(footprint_texels(&[9u16], 1), [word(9, 9, 9, 9)]);
+        // One row, one column.
+        let row = footprint_texels(&[1u16, 2], 2);
+        assert_eq!(row, [word(1, 2, 1, 2), word(2, 1, 2, 1)]);
+        let col = footprint_texels(&[1u16, 2], 1);
+        assert_eq!(col, [word(1, 1, 2, 2), word(2, 2, 1, 1)]);
+    }
+
+    #[test]
+    fn wrong_footprints_are_refused() {
+        let t = texels(&[1, 2, 3, 4]);
+        let tex = Texture::new(&t, 2, 2).unwrap();
+        let mut out = [0u64; 3];
+        assert_eq!(
+            write_footprints(&tex, &mut out),
+            Err(Error::WrongLength {
+                expected: 4,
+                actual: 3
+            })
+        );
+        assert_eq!(
+            tex.with_footprints(&[0; 5]).unwrap_err(),
+            Error::WrongLength {
+                expected: 4,
+                actual: 5
+            }
+        );
+        let mut good = [0u64; 4];
+        write_footprints(&tex, &mut good).unwrap();
+        assert!(tex.with_footprints(&good).is_ok());
+        let mut bad = good;
+        bad[2] ^= 1 << 40;
+        assert_eq!(
+            tex.with_footprints(&bad).unwrap_err(),
+            Error::FootprintMismatch { index: 2 }
+        );
+        // Footprints of the same texels in another width are refused too.
+        let other = footprint_texels(&[1, 2, 3, 4], 4);
+        assert_eq!(
+            tex.with_footprints(&other).unwrap_err(),
+            Error::FootprintMismatch { index: 0 }
+        );
+    }
+
+    /// A texture without footprints never panics under the footprint sampler (its words read as 0;
+    /// bindings refuse it before a draw gets there).
+    #[test]
+    fn missing_footprints_never_panic() {
+        let t = texels(&[0xFFFF; 4]);
+        let tex = Texture::new(&t, 2, 2).unwrap();
+        assert_eq!(
+            BilinearFootprint::sample(&tex, Repeat, Repeat, 0x8000, 0x8000),
+            0
+        );
+        assert_eq!(
+            BilinearFootprint::sample(&tex, ClampToEdge, ClampToEdge, 0x8000, 0x8000),
+            0xFFFF
+        );
+    }
+
+    /// Draws and bindings refuse the footprint filter on a texture without footprints, and
+    /// inside a mipmapped sampler, with errors that say so; with footprints they accept it.
+    #[test]
+    fn bindings_refuse_missing_footprints() {
+        use crate::geometry::{Cull, Viewport};
+        use crate::pipeline::{Affine, Draw, NoDepth, Pipeline, Replace};
+        use crate::shading::TexBinding;
+        use crate::texture::{Lod, MipTexture, Mipmapped};
+        type Fp = Pipeline<Affine, BilinearFootprint, Repeat, Repeat, Replace, NoDepth>;
+        let t = texels(&[1, 2, 3, 4]);
+        let plain = Texture::new(&t, 2, 2).unwrap();
+        let vp = Viewport::new(0, 0, 8, 8).unwrap();
+        let needs = Error::BadMode(
+            "BilinearFootprint needs a texture with footprints (Texture::with_footprints)",
+        );
+        assert_eq!(
+            Draw::<Rgb565>::new::<Fp>(Some(plain), vp, Cull::None).unwrap_err(),
+            needs
+        );
+        let chain = MipTexture::single(plain);
+        assert_eq!(
+            TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).unwrap_err(),
+            needs
+        );
+        let mut fp = [0u64; 4];
+        write_footprints(&plain, &mut fp).unwrap();
+        let tex = plain.with_footprints(&fp).unwrap();
+        assert!(Draw::<Rgb565>::new::<Fp>(Some(tex), vp, Cull::None).is_ok());
+        let chain = MipTexture::single(tex);
+        assert!(TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).is_ok());
+        let mip = Mipmapped::<BilinearFootprint, Bilinear, true>::default();
+        assert!(matches!(
+            TexBinding::new(&chain, mip, Repeat, Repeat, Lod::default()),
+            Err(Error::BadMode(m)) if m.contains("mipmapped")
+        ));
+    }
+}
