@@ -1062,13 +1062,15 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 13] = [
+const REPORT_BINS: [&str; 15] = [
     "report_cube",
     "report_cube_unlit",
     "report_cube_facet",
+    "report_cube_footprint",
     "report_sphere",
     "report_floor",
     "report_floor_mip",
+    "report_floor_footprint",
     "report_noise",
     "report_env",
     "report_mapping",

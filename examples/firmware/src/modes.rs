@@ -269,24 +269,39 @@ pub const CUBE_FACET_MODES: [Mode; 10] = {
     out
 };
 
-/// Modes of the cube: [`LIT_SCENE_MODES`] and [`CUBE_FACET_MODES`].
-pub const CUBE_MODES: [Mode; 50] = {
-    let mut out = [LIT_SCENE_MODES[0]; 50];
+/// [`CUBE_FACET_MODES`] reading the texture's bilinear footprints (`BilinearFootprint`: the
+/// same pixels, one 64-bit load per sample; firmware `report_cube_footprint`).
+pub const CUBE_FOOTPRINT_MODES: [Mode; 10] = {
+    let mut out = CUBE_FACET_MODES;
     let mut k = 0;
-    while k < 50 {
+    while k < out.len() {
+        out[k].filter = Filt::BilinearFootprint;
+        k += 1;
+    }
+    out
+};
+
+/// Modes of the cube: [`LIT_SCENE_MODES`], [`CUBE_FACET_MODES`] and
+/// [`CUBE_FOOTPRINT_MODES`].
+pub const CUBE_MODES: [Mode; 60] = {
+    let mut out = [LIT_SCENE_MODES[0]; 60];
+    let mut k = 0;
+    while k < 60 {
         out[k] = if k < 40 {
             LIT_SCENE_MODES[k]
-        } else {
+        } else if k < 50 {
             CUBE_FACET_MODES[k - 40]
+        } else {
+            CUBE_FOOTPRINT_MODES[k - 50]
         };
         k += 1;
     }
     out
 };
 
-/// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones, every
-/// projection.
-pub const FLOOR_MODES: [Mode; 50] = matrix(
+/// Modes of the floor (unlit, minified): every filter incl. the mipmapped ones and the
+/// footprint bilinear, every projection.
+pub const FLOOR_MODES: [Mode; 60] = matrix(
     &[false],
     &[
         Filt::Nearest,
@@ -294,11 +309,15 @@ pub const FLOOR_MODES: [Mode; 50] = matrix(
         Filt::NearestMip,
         Filt::Trilinear,
         Filt::TrilinearSpan,
+        Filt::BilinearFootprint,
     ],
 );
 
 /// The floor's unmipmapped modes (firmware `report_floor`).
 pub const FLOOR_PLAIN_MODES: [Mode; 20] = matrix(&[false], &[Filt::Nearest, Filt::Bilinear]);
+
+/// The floor's footprint bilinear modes (firmware `report_floor_footprint`).
+pub const FLOOR_FOOTPRINT_MODES: [Mode; 10] = matrix(&[false], &[Filt::BilinearFootprint]);
 
 /// The floor's mipmapped modes (firmware `report_floor_mip`).
 pub const FLOOR_MIP_MODES: [Mode; 30] = matrix(

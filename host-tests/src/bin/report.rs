@@ -44,7 +44,7 @@ use fixel::pipeline::{DepthTest, DrawMode, Shading};
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
 use fixel::surface::Frame;
 use fixel::texture::{chain_len, full_levels};
-use fixel::texture::{generate_mips, MipTexture, Texture};
+use fixel::texture::{generate_mips, write_footprints, MipTexture, Texture};
 use host_tests::adapter;
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::png_io::write_png_rgb8;
@@ -147,9 +147,11 @@ fn mode_name(m: &Mode) -> String {
     s
 }
 
-/// `T(w, h)` with a full mip chain (level 0 alone for the unmipmapped scenes).
+/// `T(w, h)` with a full mip chain (level 0 alone for the unmipmapped scenes), and level 0's
+/// bilinear footprints (for `Filt::BilinearFootprint`).
 struct Tex {
     chain: Vec<Rgb565>,
+    footprints: Vec<u64>,
     w: u32,
     h: u32,
     levels: u32,
@@ -168,12 +170,26 @@ impl Tex {
         if levels > 1 {
             generate_mips(&mut chain, w, h, levels).expect("mips");
         }
+        let mut footprints = vec![0u64; (w * h) as usize];
+        let base = Texture::new(&chain[..(w * h) as usize], w, h).expect("texture");
+        write_footprints(&base, &mut footprints).expect("footprints");
         Tex {
             chain,
+            footprints,
             w,
             h,
             levels,
         }
+    }
+    /// The texture `m` samples: level 0 with its footprints for `Filt::BilinearFootprint`,
+    /// else [`Tex::mip`].
+    fn for_mode(&self, m: &Mode) -> MipTexture<'_> {
+        if m.filter != Filt::BilinearFootprint {
+            return self.mip();
+        }
+        let n = (self.w * self.h) as usize;
+        let base = Texture::new(&self.chain[..n], self.w, self.h).expect("texture");
+        MipTexture::single(base.with_footprints(&self.footprints).expect("footprints"))
     }
     fn mip(&self) -> MipTexture<'_> {
         if self.levels > 1 {
@@ -204,7 +220,7 @@ impl Meshes {
 /// Host timing of one mode: ns per drawn pixel of each run, and drawn pixels per run.
 fn time_mode(scene: Scene, m: &Mode, tex: &Tex, meshes: &Meshes, runs: u32) -> (Vec<f64>, u64) {
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
-    let draw = m.draw(tex.mip(), vp).expect("draw");
+    let draw = m.draw(tex.for_mode(m), vp).expect("draw");
     let mesh = meshes.mesh(scene);
     let camera = demo::camera(scene.far());
     let light = DirectionalLight::default();
@@ -240,7 +256,7 @@ fn band_checksum(scene: Scene, m: &Mode, tex: &Tex, meshes: &Meshes) -> (String,
     let mut buf = Box::new(scenes::Buffers::new());
     let (mut a, mut b) = (|| {}, || {});
     let vp = scenes::viewport().expect("viewport");
-    let draw = m.draw(tex.mip(), vp).expect("draw");
+    let draw = m.draw(tex.for_mode(m), vp).expect("draw");
     let r = match scene {
         Scene::Cube => scenes::cube_with(
             scenes::Target::Bands(&mut buf),
@@ -361,7 +377,7 @@ impl ErrFrame {
     /// fixel's frame with the typed draw of `m`.
     fn fixel(&self, m: &Mode, tex: &Tex) -> Vec<u16> {
         let vp = Viewport::new(0, 0, W, H).expect("viewport");
-        let draw = m.draw(tex.mip(), vp).expect("draw");
+        let draw = m.draw(tex.for_mode(m), vp).expect("draw");
         let n = (W * H) as usize;
         let mut color = vec![Rgb565::new(0, 0, 0); n];
         let mut depth = vec![0u16; n];
@@ -516,7 +532,7 @@ fn filt_short(f: Filt) -> &'static str {
     match f {
         Filt::Nearest => "N",
         Filt::Bilinear => "B",
-        Filt::BilinearFootprint => "Bp",
+        Filt::BilinearFootprint => "Bf",
         Filt::NearestMip => "NMN",
         Filt::Trilinear => "T",
         Filt::TrilinearSpan => "Ts",
