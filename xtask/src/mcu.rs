@@ -1062,11 +1062,12 @@ const REPORT_MCUS: [Mcu; 2] = [
 ];
 
 /// The report firmwares (`examples/firmware/src/bin/report_*.rs`).
-const REPORT_BINS: [&str; 15] = [
+const REPORT_BINS: [&str; 16] = [
     "report_cube",
     "report_cube_unlit",
     "report_cube_facet",
     "report_cube_footprint",
+    "report_cube_footprint_b",
     "report_sphere",
     "report_floor",
     "report_floor_mip",

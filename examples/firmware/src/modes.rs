@@ -281,6 +281,24 @@ pub const CUBE_FOOTPRINT_MODES: [Mode; 10] = {
     out
 };
 
+/// [`CUBE_FOOTPRINT_MODES`] `0..5` (firmware `report_cube_footprint`; all ten do not fit
+/// 256 KiB of flash on Cortex-M0+).
+pub const CUBE_FOOTPRINT_MODES_A: [Mode; 5] = half(0);
+
+/// [`CUBE_FOOTPRINT_MODES`] `5..10` (firmware `report_cube_footprint_b`).
+pub const CUBE_FOOTPRINT_MODES_B: [Mode; 5] = half(5);
+
+/// Five modes of [`CUBE_FOOTPRINT_MODES`] from `from`.
+const fn half(from: usize) -> [Mode; 5] {
+    let mut out = [CUBE_FOOTPRINT_MODES[0]; 5];
+    let mut k = 0;
+    while k < 5 {
+        out[k] = CUBE_FOOTPRINT_MODES[from + k];
+        k += 1;
+    }
+    out
+}
+
 /// Modes of the cube: [`LIT_SCENE_MODES`], [`CUBE_FACET_MODES`] and
 /// [`CUBE_FOOTPRINT_MODES`].
 pub const CUBE_MODES: [Mode; 60] = {
