@@ -192,20 +192,11 @@ pub(crate) fn check_footprints(tex: &Texture<'_>, footprints: &[u64]) -> Result<
 mod tests {
     extern crate std;
     use super::*;
+    use crate::test_rng::Rng;
     use crate::texture::wrap::{ClampToBorder, ClampToEdge, MirroredRepeat, Repeat};
     use embedded_graphics_core::pixelcolor::raw::RawU16;
     use embedded_graphics_core::pixelcolor::Rgb565;
     use std::vec::Vec;
-
-    struct Rng(u32);
-    impl Rng {
-        fn next(&mut self) -> u32 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 17;
-            self.0 ^= self.0 << 5;
-            self.0
-        }
-    }
 
     fn texels(raw: &[u16]) -> Vec<Rgb565> {
         raw.iter().map(|&r| Rgb565::from(RawU16::new(r))).collect()
@@ -216,9 +207,10 @@ mod tests {
     #[test]
     fn footprint_samples_equal_bilinear() {
         let mut rng = Rng(0x1234_5678);
+        let mut next = || rng.next() as u32;
         for (lw, lh) in [(0, 0), (0, 3), (3, 0), (1, 1), (2, 3), (4, 4), (4, 1)] {
             let (w, h) = (1u32 << lw, 1u32 << lh);
-            let raw: Vec<u16> = (0..w * h).map(|_| rng.next() as u16).collect();
+            let raw: Vec<u16> = (0..w * h).map(|_| next() as u16).collect();
             let t = texels(&raw);
             let plain = Texture::new(&t, w, h).unwrap();
             let mut fp = std::vec![0u64; (w * h) as usize];
@@ -226,15 +218,15 @@ mod tests {
             let tex = plain.with_footprints(&fp).unwrap();
             for _ in 0..4000 {
                 // Mostly near the texture, sometimes anywhere in i32.
-                let (u, v) = if rng.next() % 8 == 0 {
-                    (rng.next() as i32, rng.next() as i32)
+                let (u, v) = if next() % 8 == 0 {
+                    (next() as i32, next() as i32)
                 } else {
                     (
-                        (rng.next() % (w << 18)) as i32 - (w << 17) as i32,
-                        (rng.next() % (h << 18)) as i32 - (h << 17) as i32,
+                        (next() % (w << 18)) as i32 - (w << 17) as i32,
+                        (next() % (h << 18)) as i32 - (h << 17) as i32,
                     )
                 };
-                let i = (rng.next() % 300) as u16;
+                let i = (next() % 300) as u16;
                 macro_rules! same {
                     ($wu:expr, $wv:expr) => {
                         assert_eq!(

@@ -696,9 +696,9 @@ fn plot(scene: Scene, t: &str, rows: &[Row], path: &Path) -> Result<(), String> 
                 .map_err(|e| e.to_string())?;
         }
         let notes = if scene.lit() {
-            "N nearest, B bilinear, facet = light per triangle; filled = lit, ring = unlit; grey label = dominated; lines = Pareto fronts"
+            "N nearest, B bilinear, Bf bilinear from footprints, facet = light per triangle; filled = lit, ring = unlit; grey label = dominated; lines = Pareto fronts"
         } else {
-            "N nearest, B bilinear, NMN nearest-mipmap-nearest, T trilinear (LOD per pixel), Ts (per span); grey label = dominated"
+            "N nearest, B bilinear, Bf from footprints, NMN nearest-mipmap-nearest, T trilinear (LOD per pixel), Ts (per span); grey label = dominated"
         };
         root.draw(&Text::new(notes, (70, h as i32 - 16), ("sans-serif", 13)))
             .map_err(|e| e.to_string())?;
@@ -901,8 +901,10 @@ fn main() {
         };
         for row in rows.get_mut(&scene).expect("rows") {
             pb.set_message(format!("errors {}/{}", scene.name(), row.name));
+            // Modes that differ only in cost share their filter's reference.
             let f = match row.mode.filter {
                 Filt::TrilinearSpan => Filt::Trilinear,
+                Filt::BilinearFootprint => Filt::Bilinear,
                 f => f,
             };
             let (mut c, mut cc, mut r, mut rc, mut i, mut ic) =
