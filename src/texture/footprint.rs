@@ -47,7 +47,7 @@
 
 use embedded_graphics_core::pixelcolor::IntoStorage;
 
-use super::sample::{blend_rows_q8, repeat_rows, Bilinear, Sampler};
+use super::sample::{blend_rows_q8, Bilinear, Sampler};
 use super::texture::Texture;
 use super::wrap::WrapMode;
 use crate::Error;
@@ -63,12 +63,17 @@ use crate::Error;
 pub struct BilinearFootprint;
 
 impl BilinearFootprint {
-    /// The two row words (`c00 | c10 << 16`, `c01 | c11 << 16`) and Q8 weights of a
-    /// repeat-wrapped sample at `(u, v)`.
+    /// The two row words (`c00 | c10 << 16`, `c01 | c11 << 16`) and Q8 weights `a`, `b`
+    /// (`0..=255`) of a repeat-wrapped sample at `(u, v)`, split as `Bilinear`'s
+    /// `gather_repeat` splits them (`t = u - 1/2 + 1/512`). The row offset is not wrapped:
+    /// `footprint_at` masks with the count, which wraps the row too.
     #[inline(always)]
     fn gather(tex: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32, u32) {
-        let (i0, r0, _, a, b) = repeat_rows(tex, u, v);
-        let f = tex.footprint_at(r0 | (i0 & (tex.width() - 1)));
+        let tu = u.wrapping_sub(0x7F80);
+        let tv = v.wrapping_sub(0x7F80);
+        let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
+        let row = ((tv >> 16) as u32) << tex.log2_width();
+        let f = tex.footprint_at(row | ((tu >> 16) as u32 & (tex.width() - 1)));
         (f as u32, (f >> 32) as u32, a, b)
     }
 }
