@@ -166,7 +166,7 @@
 //! within `i32`), and degenerate triangles are skipped. Everything that can be wrong with
 //! input is refused at construction with an [`Error`] that says what is wrong.
 #![no_std]
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 #![warn(missing_docs, missing_debug_implementations)]
 
 pub mod color;

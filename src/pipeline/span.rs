@@ -634,11 +634,10 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
                 lambda,
                 per_pixel: spec.lod,
             };
+            // The shading loop counts what it writes (a full chunk without a count per
+            // pixel), so no population count per chunk.
             written += if depth && S::DISCARDS && !S::BLENDS {
                 shade_chunk::<S, C, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
-            } else if depth && !S::BLENDS {
-                shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos);
-                mask.count_ones()
             } else {
                 shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
             };
