@@ -61,7 +61,7 @@ pub enum Error {
         /// The most the index type can address.
         limit: usize,
     },
-    /// A texture's footprints do not match its texels (see `Texture::with_footprints`).
+    /// A texture's footprints do not match its texels (see `MipTexture::with_footprints`).
     FootprintMismatch {
         /// The first word that is not texel `index` and its right neighbour.
         index: usize,

@@ -154,9 +154,10 @@
 //!
 //! Memory can also buy speed where a firmware has it to spare:
 //! [`texture::BilinearFootprint`] gives [`texture::Bilinear`]'s pixels from a texture that also
-//! holds each texel's bilinear footprint ([`texture::Texture::with_footprints`], 8 bytes per
-//! texel more, built in flash by [`texture::footprint_texels`]): one 64-bit load per sample
-//! instead of four texel loads. A draw that does not sample footprints does not link them.
+//! holds each texel's bilinear footprint ([`texture::MipTexture::with_footprints`], 8 bytes
+//! per texel more, built in flash by [`texture::footprint_texels`]): one 64-bit load per
+//! sample instead of four texel loads. Only a chain that is given footprints holds them, and
+//! a draw that does not sample them does not link them.
 //!
 //! ## Robustness
 //!

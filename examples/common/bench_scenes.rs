@@ -265,7 +265,9 @@ impl Bench {
             MipTexture::new(&self.texels, w, h, self.levels).expect("texture")
         } else {
             let base = Texture::new(&self.texels, w, h).expect("texture");
-            MipTexture::single(base.with_footprints(&self.footprints).expect("footprints"))
+            MipTexture::single(base)
+                .with_footprints(&self.footprints)
+                .expect("footprints")
         };
         let vp = Viewport::new(0, 0, demo::WIDTH, demo::HEIGHT).expect("viewport");
         let draw = self.case.mode.draw(tex, vp).expect("draw");

@@ -13,6 +13,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
+use fixel::texture::MipTexture;
 #[path = "../../examples/firmware/src/aa_scene.rs"]
 mod aa_scene;
 
@@ -98,7 +99,7 @@ fn mcu_frames() {
     let t128 = texture(128, 128);
     let plain = Texture::new(&t128, 128, 128).unwrap();
     let f128 = footprints(&plain);
-    let tex = plain.with_footprints(&f128).unwrap();
+    let tex = MipTexture::single(plain).with_footprints(&f128).unwrap();
     let r = scenes::cube(Target::Bands(&mut *small), tex, 0, &mut nop1, &mut nop2).unwrap();
     print("cube", &r);
     let wr = scenes::cube(
@@ -219,7 +220,7 @@ fn mcu_frames() {
     let fm = floor.mesh().unwrap();
     let r = scenes::floor::<scenes::FloorNearest, _, _, _>(
         Target::Bands(&mut *small),
-        tex,
+        MipTexture::single(tex),
         &mut nop1,
         &mut nop2,
     )
@@ -227,7 +228,7 @@ fn mcu_frames() {
     print("floor", &r);
     let wr = scenes::floor::<scenes::FloorNearest, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
-        tex,
+        MipTexture::single(tex),
         &mut nop1,
         &mut nop2,
     )
@@ -241,7 +242,7 @@ fn mcu_frames() {
     );
 
     let f64s = footprints(&tex);
-    let fp = tex.with_footprints(&f64s).unwrap();
+    let fp = MipTexture::single(tex).with_footprints(&f64s).unwrap();
     let r = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _>(
         Target::Bands(&mut *small),
         fp,

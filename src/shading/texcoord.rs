@@ -26,6 +26,8 @@ use crate::Error;
 #[derive(Clone, Copy, Debug)]
 pub struct TexBinding<'a, F, WU, WV> {
     base: Texture<'a>,
+    /// Level 0's footprints when `F` reads them ([`TexSampler::FOOTPRINTS`]), else empty.
+    footprints: &'a [u64],
     chain: &'a MipTexture<'a>,
     sampler: F,
     wu: WU,
@@ -33,8 +35,8 @@ pub struct TexBinding<'a, F, WU, WV> {
     lod: Lod,
 }
 
-/// Refuses a sampler that reads footprints ([`TexSampler::FOOTPRINTS`]) on a chain whose
-/// level 0 has none, or that mipmaps (levels past 0 have none).
+/// Refuses a sampler that reads footprints ([`TexSampler::FOOTPRINTS`]) on a chain without
+/// them ([`MipTexture::with_footprints`]), or one that mipmaps (levels past 0 have none).
 ///
 /// # Errors
 /// [`Error::BadMode`], saying which.
@@ -47,9 +49,9 @@ pub fn check_footprints_bound<F: TexSampler>(chain: &MipTexture<'_>) -> Result<(
             "a footprint filter reads level 0 only: it cannot be part of a mipmapped sampler",
         ));
     }
-    if chain.base().footprints().is_empty() {
+    if chain.footprints().is_empty() {
         return Err(Error::BadMode(
-            "BilinearFootprint needs a texture with footprints (Texture::with_footprints)",
+            "BilinearFootprint needs a texture with footprints (MipTexture::with_footprints)",
         ));
     }
     Ok(())
@@ -81,8 +83,8 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     /// # Errors
     /// [`Error::BadMode`] when `F` is a mipmapping sampler and the level of detail's
     /// clamps are inverted (`lod.min > lod.max`), or when `F` reads footprints
-    /// ([`BilinearFootprint`](crate::texture::BilinearFootprint)) and level 0 has none or `F`
-    /// mipmaps (see [`check_footprints_bound`]).
+    /// ([`BilinearFootprint`](crate::texture::BilinearFootprint)) and the chain has none or
+    /// `F` mipmaps (see [`check_footprints_bound`]).
     pub fn new(
         chain: &'a MipTexture<'a>,
         sampler: F,
@@ -108,6 +110,11 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     ) -> Self {
         TexBinding {
             base: *chain.base(),
+            footprints: if F::FOOTPRINTS {
+                chain.footprints()
+            } else {
+                &[]
+            },
             chain,
             sampler,
             wu,
@@ -198,7 +205,8 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             self.sampler
                 .sample_mip(self.chain, self.wu, self.wv, u, v, l)
         } else {
-            self.sampler.sample_base(&self.base, self.wu, self.wv, u, v)
+            self.sampler
+                .sample_level0(&self.base, self.footprints, self.wu, self.wv, u, v)
         }
     }
 }
@@ -212,8 +220,15 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         if F::LOD {
             crate::color::modulate_scalar(self.sample(tri, u, v, lambda), i)
         } else {
-            self.sampler
-                .sample_base_scaled(&self.base, self.wu, self.wv, u, v, i)
+            self.sampler.sample_level0_scaled(
+                &self.base,
+                self.footprints,
+                self.wu,
+                self.wv,
+                u,
+                v,
+                i,
+            )
         }
     }
 }

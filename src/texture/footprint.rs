@@ -17,14 +17,17 @@
 //!
 //! Cost: 8 bytes per texel beside the texels' 2 (a 128 x 128 texture: 128 KiB of footprints
 //! beside 32 KiB of texels). Build them once: [`footprint_texels`] in a `static` (flash, at
-//! compile time), or [`write_footprints`] into caller storage (RAM, at run time). A draw
-//! that does not sample them links none of this.
+//! compile time), or [`write_footprints`] into caller storage (RAM, at run time), and hand
+//! them to the chain ([`MipTexture::with_footprints`]; level 0 only). Only the chain holds
+//! them: a [`Texture`] has no footprint field, so textures, chains and draws that do not
+//! sample them carry and link none of this.
 //!
 //! Other wraps (clamp, mirror, border) read the plain texels as [`Bilinear`] does, since
 //! their neighbours at the edges are not the repeat ones.
 //!
 //! ```
-//! use fixel::texture::{footprint_texels, BilinearFootprint, Repeat, Sampler, Texture};
+//! use fixel::texture::{footprint_texels, BilinearFootprint, MipTexture, Repeat, Texture};
+//! use fixel::texture::{Bilinear, Sampler};
 //! use fixel::Rgb565;
 //!
 //! const RAW: [u16; 4] = [0xF800, 0x07E0, 0x001F, 0xFFFF];
@@ -35,30 +38,33 @@
 //!     Rgb565::new(31, 63, 31),
 //! ];
 //! static FOOTPRINTS: [u64; 4] = footprint_texels(&RAW, 2);
-//! static TEX: Texture<'static> =
-//!     Texture::from_static(&TEXELS, 2, 2).with_footprints_static(&FOOTPRINTS);
+//! static TEX: Texture<'static> = Texture::from_static(&TEXELS, 2, 2);
+//! // What a draw or a binding takes (`Draw::new_mip`, `TexBinding::new`).
+//! static CHAIN: MipTexture<'static> = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);
 //!
 //! // Texel (1, 1)'s footprint wraps right to (0, 1) and down to row 0.
 //! assert_eq!(FOOTPRINTS[3], 0xFFFF | 0x001F << 16 | 0x07E0 << 32 | 0xF800 << 48);
 //! // Halfway between all four texel centres: their mean, whatever the layout.
-//! let c = BilinearFootprint::sample(&TEX, Repeat, Repeat, 0x10000, 0x10000);
-//! assert_eq!(c, fixel::texture::Bilinear::sample(&TEX, Repeat, Repeat, 0x10000, 0x10000));
+//! let c = BilinearFootprint::sample(&TEX, CHAIN.footprints(), Repeat, Repeat, 0x10000, 0x10000);
+//! assert_eq!(c, Bilinear::sample(&TEX, Repeat, Repeat, 0x10000, 0x10000));
 //! ```
 
 use embedded_graphics_core::pixelcolor::IntoStorage;
 
+use super::mip::{MipTexture, TexSampler};
 use super::sample::{blend_rows_q8, Bilinear, Sampler};
 use super::texture::Texture;
 use super::wrap::WrapMode;
 use crate::Error;
 
-/// Bilinear filtering ([`Bilinear`]'s arithmetic and pixels) that reads a texture's
-/// footprints ([`Texture::with_footprints`]) when both wraps repeat: one 64-bit word per
+/// Bilinear filtering ([`Bilinear`]'s arithmetic and pixels) that reads level 0's
+/// footprints ([`MipTexture::with_footprints`]) when both wraps repeat: one 64-bit word per
 /// sample.
 ///
-/// Bindings and draws refuse a texture without footprints ([`Error::BadMode`]), and a
-/// mipmapped sampler built on it (the levels past 0 have none). Its [`Sampler::FILTER`]
-/// is [`Filter::Bilinear`](super::Filter::Bilinear).
+/// A [`TexSampler`] for level 0 only (not a [`Sampler`](super::Sampler), so it cannot be
+/// part of a [`Mipmapped`](super::Mipmapped) one). Bindings and draws refuse a chain without
+/// footprints ([`Error::BadMode`]). Its [`TexSampler::FILTER`] is
+/// [`Filter::Bilinear`](super::Filter::Bilinear).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BilinearFootprint;
 
@@ -68,38 +74,41 @@ impl BilinearFootprint {
     /// `gather_repeat` splits them (`t = u - 1/2 + 1/512`). The row offset is not wrapped:
     /// `footprint_at` masks with the count, which wraps the row too.
     #[inline(always)]
-    fn gather(tex: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32, u32) {
+    fn gather(tex: &Texture<'_>, footprints: &[u64], u: i32, v: i32) -> (u32, u32, u32, u32) {
         let tu = u.wrapping_sub(0x7F80);
         let tv = v.wrapping_sub(0x7F80);
         let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
         let row = ((tv >> 16) as u32) << tex.log2_width();
-        let f = tex.footprint_at(row | ((tu >> 16) as u32 & (tex.width() - 1)));
+        let f = footprint_at(footprints, row | ((tu >> 16) as u32 & (tex.width() - 1)));
         (f as u32, (f >> 32) as u32, a, b)
     }
-}
 
-impl Sampler for BilinearFootprint {
-    const FILTER: super::Filter = super::Filter::Bilinear;
-    const FOOTPRINTS: bool = true;
-
+    /// Samples `tex` (level 0) at raw I16F16 texel coordinates `(u, v)` with wrap modes
+    /// `wu`, `wv`, reading `footprints` (`tex`'s, see [`write_footprints`]) when both wraps
+    /// repeat. Returns raw RGB565, [`Bilinear`]'s pixel. Never panics: footprints of the
+    /// wrong length read as black (bindings refuse them before a draw gets here).
     #[inline(always)]
-    fn sample<WU: WrapMode, WV: WrapMode>(
+    pub fn sample<WU: WrapMode, WV: WrapMode>(
         tex: &Texture<'_>,
+        footprints: &[u64],
         wu: WU,
         wv: WV,
         u: i32,
         v: i32,
     ) -> u16 {
         if WU::REPEAT && WV::REPEAT {
-            let (top, bot, a, b) = Self::gather(tex, u, v);
+            let (top, bot, a, b) = Self::gather(tex, footprints, u, v);
             return blend_rows_q8(top, bot, a, b, None);
         }
         Bilinear::sample(tex, wu, wv, u, v)
     }
 
+    /// [`BilinearFootprint::sample`] times intensity `i` (Q8, `0..=256`; larger is 256),
+    /// as [`Bilinear::sample_scaled`](super::Sampler::sample_scaled): one rounding.
     #[inline(always)]
-    fn sample_scaled<WU: WrapMode, WV: WrapMode>(
+    pub fn sample_scaled<WU: WrapMode, WV: WrapMode>(
         tex: &Texture<'_>,
+        footprints: &[u64],
         wu: WU,
         wv: WV,
         u: i32,
@@ -107,10 +116,94 @@ impl Sampler for BilinearFootprint {
         i: u16,
     ) -> u16 {
         if WU::REPEAT && WV::REPEAT {
-            let (top, bot, a, b) = Self::gather(tex, u, v);
+            let (top, bot, a, b) = Self::gather(tex, footprints, u, v);
             return blend_rows_q8(top, bot, a, b, Some(u32::from(i.min(256))));
         }
         Bilinear::sample_scaled(tex, wu, wv, u, v, i)
+    }
+}
+
+/// Footprint `idx`, taken modulo their count (a power of two), or 0 when there are none.
+/// Never panics.
+#[inline(always)]
+fn footprint_at(footprints: &[u64], idx: u32) -> u64 {
+    let idx = idx as usize & footprints.len().wrapping_sub(1);
+    match footprints.get(idx) {
+        Some(&w) => w,
+        None => 0,
+    }
+}
+
+impl TexSampler for BilinearFootprint {
+    const LOD: bool = false;
+    const FILTER: super::Filter = super::Filter::Bilinear;
+    const FOOTPRINTS: bool = true;
+
+    #[inline(always)]
+    fn sample_mip<WU: WrapMode, WV: WrapMode>(
+        self,
+        t: &MipTexture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        _: i32,
+    ) -> u16 {
+        Self::sample(t.base(), t.footprints(), wu, wv, u, v)
+    }
+
+    /// Without the footprints at hand: [`Bilinear`] (the same pixels).
+    #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Bilinear::sample(base, wu, wv, u, v)
+    }
+
+    /// Without the footprints at hand: [`Bilinear`] (the same pixels).
+    #[inline(always)]
+    fn sample_base_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        Bilinear::sample_scaled(base, wu, wv, u, v, i)
+    }
+
+    #[inline(always)]
+    fn sample_level0<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Self::sample(base, footprints, wu, wv, u, v)
+    }
+
+    #[inline(always)]
+    fn sample_level0_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        Self::sample_scaled(base, footprints, wu, wv, u, v, i)
     }
 }
 
@@ -179,7 +272,7 @@ fn footprint_word(tex: &Texture<'_>, i: usize) -> u64 {
     at(k[0]) | at(k[1]) << 16 | at(k[2]) << 32 | at(k[3]) << 48
 }
 
-/// Checks that `footprints` are `tex`'s ([`Texture::with_footprints`]).
+/// Checks that `footprints` are `tex`'s ([`MipTexture::with_footprints`]).
 pub(crate) fn check_footprints(tex: &Texture<'_>, footprints: &[u64]) -> Result<(), Error> {
     if footprints.len() != tex.texels().len() {
         return Err(Error::WrongLength {
@@ -220,7 +313,7 @@ mod tests {
             let plain = Texture::new(&t, w, h).unwrap();
             let mut fp = std::vec![0u64; (w * h) as usize];
             write_footprints(&plain, &mut fp).unwrap();
-            let tex = plain.with_footprints(&fp).unwrap();
+            MipTexture::single(plain).with_footprints(&fp).unwrap();
             for _ in 0..4000 {
                 // Mostly near the texture, sometimes anywhere in i32.
                 let (u, v) = if next() % 8 == 0 {
@@ -235,12 +328,12 @@ mod tests {
                 macro_rules! same {
                     ($wu:expr, $wv:expr) => {
                         assert_eq!(
-                            BilinearFootprint::sample(&tex, $wu, $wv, u, v),
+                            BilinearFootprint::sample(&plain, &fp, $wu, $wv, u, v),
                             Bilinear::sample(&plain, $wu, $wv, u, v),
                             "{w}x{h} at ({u}, {v})"
                         );
                         assert_eq!(
-                            BilinearFootprint::sample_scaled(&tex, $wu, $wv, u, v, i),
+                            BilinearFootprint::sample_scaled(&plain, &fp, $wu, $wv, u, v, i),
                             Bilinear::sample_scaled(&plain, $wu, $wv, u, v, i),
                             "{w}x{h} at ({u}, {v}) scaled by {i}"
                         );
@@ -279,6 +372,7 @@ mod tests {
     fn wrong_footprints_are_refused() {
         let t = texels(&[1, 2, 3, 4]);
         let tex = Texture::new(&t, 2, 2).unwrap();
+        let chain = MipTexture::single(tex);
         let mut out = [0u64; 3];
         assert_eq!(
             write_footprints(&tex, &mut out),
@@ -288,7 +382,7 @@ mod tests {
             })
         );
         assert_eq!(
-            tex.with_footprints(&[0; 5]).unwrap_err(),
+            chain.with_footprints(&[0; 5]).unwrap_err(),
             Error::WrongLength {
                 expected: 4,
                 actual: 5
@@ -296,51 +390,57 @@ mod tests {
         );
         let mut good = [0u64; 4];
         write_footprints(&tex, &mut good).unwrap();
-        assert!(tex.with_footprints(&good).is_ok());
+        assert!(chain.with_footprints(&good).is_ok());
         let mut bad = good;
         bad[2] ^= 1 << 40;
         assert_eq!(
-            tex.with_footprints(&bad).unwrap_err(),
+            chain.with_footprints(&bad).unwrap_err(),
             Error::FootprintMismatch { index: 2 }
         );
         // Footprints of the same texels in another width are refused too.
         let other = footprint_texels(&[1, 2, 3, 4], 4);
         assert_eq!(
-            tex.with_footprints(&other).unwrap_err(),
+            chain.with_footprints(&other).unwrap_err(),
             Error::FootprintMismatch { index: 0 }
         );
     }
 
-    /// A texture without footprints never panics under the footprint sampler (its words read as 0;
-    /// bindings refuse it before a draw gets there).
+    /// Missing or short footprints never panic under the footprint sampler (their words
+    /// read as 0; bindings refuse them before a draw gets there).
     #[test]
     fn missing_footprints_never_panic() {
         let t = texels(&[0xFFFF; 4]);
         let tex = Texture::new(&t, 2, 2).unwrap();
+        for fp in [&[][..], &[0x1234_5678_9ABC_DEF0][..]] {
+            for (u, v) in [(0x8000, 0x8000), (i32::MIN, i32::MAX), (-1, 0x7FFF_FFFF)] {
+                let _ = BilinearFootprint::sample(&tex, fp, Repeat, Repeat, u, v);
+                let _ = BilinearFootprint::sample_scaled(&tex, fp, Repeat, Repeat, u, v, 999);
+            }
+        }
         assert_eq!(
-            BilinearFootprint::sample(&tex, Repeat, Repeat, 0x8000, 0x8000),
+            BilinearFootprint::sample(&tex, &[], Repeat, Repeat, 0x8000, 0x8000),
             0
         );
         assert_eq!(
-            BilinearFootprint::sample(&tex, ClampToEdge, ClampToEdge, 0x8000, 0x8000),
+            BilinearFootprint::sample(&tex, &[], ClampToEdge, ClampToEdge, 0x8000, 0x8000),
             0xFFFF
         );
     }
 
-    /// Draws and bindings refuse the footprint filter on a texture without footprints, and
-    /// inside a mipmapped sampler, with errors that say so; with footprints they accept it.
+    /// Draws and bindings refuse the footprint filter on a chain without footprints, with an
+    /// error that says so; with footprints they accept it, and draw `Bilinear`'s pixels.
     #[test]
     fn bindings_refuse_missing_footprints() {
         use crate::geometry::{Cull, Viewport};
         use crate::pipeline::{Affine, Draw, NoDepth, Pipeline, Replace};
-        use crate::shading::TexBinding;
-        use crate::texture::{Lod, MipTexture, Mipmapped};
+        use crate::shading::{TexBinding, TexTriangle};
+        use crate::texture::Lod;
         type Fp = Pipeline<Affine, BilinearFootprint, Repeat, Repeat, Replace, NoDepth>;
         let t = texels(&[1, 2, 3, 4]);
         let plain = Texture::new(&t, 2, 2).unwrap();
         let vp = Viewport::new(0, 0, 8, 8).unwrap();
         let needs = Error::BadMode(
-            "BilinearFootprint needs a texture with footprints (Texture::with_footprints)",
+            "BilinearFootprint needs a texture with footprints (MipTexture::with_footprints)",
         );
         assert_eq!(
             Draw::<Rgb565>::new::<Fp>(Some(plain), vp, Cull::None).unwrap_err(),
@@ -348,19 +448,26 @@ mod tests {
         );
         let chain = MipTexture::single(plain);
         assert_eq!(
+            Draw::<Rgb565>::new_mip::<Fp>(Some(chain), vp, Cull::None).unwrap_err(),
+            needs
+        );
+        assert_eq!(
             TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).unwrap_err(),
             needs
         );
         let mut fp = [0u64; 4];
         write_footprints(&plain, &mut fp).unwrap();
-        let tex = plain.with_footprints(&fp).unwrap();
-        assert!(Draw::<Rgb565>::new::<Fp>(Some(tex), vp, Cull::None).is_ok());
-        let chain = MipTexture::single(tex);
-        assert!(TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).is_ok());
-        let mip = Mipmapped::<BilinearFootprint, Bilinear, true>::default();
-        assert!(matches!(
-            TexBinding::new(&chain, mip, Repeat, Repeat, Lod::default()),
-            Err(Error::BadMode(m)) if m.contains("mipmapped")
-        ));
+        let chain = chain.with_footprints(&fp).unwrap();
+        assert!(Draw::<Rgb565>::new_mip::<Fp>(Some(chain), vp, Cull::None).is_ok());
+        let b = TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).unwrap();
+        let plain_b = TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
+        let tri = TexTriangle::default();
+        for (u, v) in [(0x8000, 0x8000), (0x1_4000, 0x9000), (-0x2_0000, 0x7_FFFF)] {
+            assert_eq!(b.sample(tri, u, v, 0), plain_b.sample(tri, u, v, 0));
+            assert_eq!(
+                b.sample_scaled(tri, u, v, 0, 200),
+                plain_b.sample_scaled(tri, u, v, 0, 200)
+            );
+        }
     }
 }

@@ -27,7 +27,6 @@
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 
-use super::footprint::BilinearFootprint;
 use super::sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 use super::texture::{Texture, MAX_LOG2_SIZE};
 use super::wrap::WrapMode;
@@ -72,15 +71,65 @@ pub const fn full_levels(width: u32, height: u32) -> u32 {
 pub struct MipTexture<'a> {
     levels: [Texture<'a>; MAX_LEVELS],
     count: u8,
+    /// Level 0's bilinear footprints (see [`BilinearFootprint`](super::BilinearFootprint)),
+    /// or empty. Here, not in [`Texture`], so that textures and chains that do not carry
+    /// them pay nothing: 8 bytes per chain instead of 8 per level.
+    footprints: &'a [u64],
 }
 
 impl<'a> MipTexture<'a> {
     /// A one-level "chain": plain sampling, no mipmapping.
-    pub fn single(t: Texture<'a>) -> Self {
+    pub const fn single(t: Texture<'a>) -> Self {
         MipTexture {
             levels: [t; MAX_LEVELS],
             count: 1,
+            footprints: &[],
         }
+    }
+
+    /// Adds level 0's bilinear footprints (word `i` holds texel `i`, its right neighbour,
+    /// and the two texels below them, built by [`footprint_texels`](super::footprint_texels)
+    /// or [`write_footprints`](super::write_footprints)), which
+    /// [`BilinearFootprint`](super::BilinearFootprint) reads: one 64-bit word per bilinear
+    /// sample instead of four texels.
+    ///
+    /// # Errors
+    /// - [`Error::WrongLength`] if `footprints.len()` is not level 0's `width * height`,
+    /// - [`Error::FootprintMismatch`] at the first word that is not texel `i`'s footprint
+    ///   (the check reads every word once).
+    pub fn with_footprints(mut self, footprints: &'a [u64]) -> Result<Self, Error> {
+        super::footprint::check_footprints(self.base(), footprints)?;
+        self.footprints = footprints;
+        Ok(self)
+    }
+
+    /// [`MipTexture::with_footprints`] for statics, checked at compile time when evaluated
+    /// in a `const`/`static` (at run time otherwise):
+    /// `static T: MipTexture = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);`.
+    ///
+    /// Only the length can be checked in a `const` (the texels are `Rgb565`, whose value a
+    /// `const fn` cannot read): build `footprints` with
+    /// [`footprint_texels`](super::footprint_texels) from the same raw texels. Words that
+    /// do not match draw their own colours under
+    /// [`BilinearFootprint`](super::BilinearFootprint); nothing panics or reads out of
+    /// bounds.
+    ///
+    /// # Panics
+    /// If `footprints.len()` is not level 0's `width * height`.
+    #[must_use]
+    pub const fn with_footprints_static(mut self, footprints: &'a [u64]) -> Self {
+        assert!(
+            footprints.len() == self.levels[0].texels().len(),
+            "footprints must hold one word per texel of level 0"
+        );
+        self.footprints = footprints;
+        self
+    }
+
+    /// Level 0's footprints, or an empty slice when none were added.
+    #[inline(always)]
+    pub const fn footprints(&self) -> &'a [u64] {
+        self.footprints
     }
 
     /// Views `chain` (laid out as in the module docs) as `levels` levels of a
@@ -255,7 +304,8 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     const LOD: bool;
     /// Magnification filter (for reports).
     const FILTER: Filter;
-    /// True when the sampler reads level 0's footprints ([`Sampler::FOOTPRINTS`]).
+    /// True when the sampler reads level 0's footprints ([`MipTexture::with_footprints`]):
+    /// bindings and draws refuse a chain without them.
     const FOOTPRINTS: bool = false;
     /// Samples at level-0 texel coordinates `u, v` (I16F16 bits) with `lambda` (Q8.8,
     /// already biased and clamped; ignored unless `LOD`).
@@ -294,6 +344,39 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         u: i32,
         v: i32,
     ) -> u16;
+
+    /// [`TexSampler::sample_base`] with level 0's footprints at hand (empty unless
+    /// [`TexSampler::FOOTPRINTS`]; see [`MipTexture::with_footprints`]). The default ignores
+    /// them; [`BilinearFootprint`](super::BilinearFootprint) reads them.
+    #[inline(always)]
+    fn sample_level0<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        _footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        self.sample_base(base, wu, wv, u, v)
+    }
+
+    /// [`TexSampler::sample_base_scaled`] with level 0's footprints at hand (see
+    /// [`TexSampler::sample_level0`]).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn sample_level0_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        _footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        self.sample_base_scaled(base, wu, wv, u, v, i)
+    }
 }
 
 /// The plain samplers: no level of detail, always level 0.
@@ -303,7 +386,6 @@ macro_rules! plain_sampler {
         impl TexSampler for $t {
             const LOD: bool = false;
             const FILTER: Filter = $f;
-            const FOOTPRINTS: bool = <$t as Sampler>::FOOTPRINTS;
             #[inline(always)]
             fn sample_mip<WU: WrapMode, WV: WrapMode>(
                 self,
@@ -346,7 +428,6 @@ plain_sampler!(
     Nearest => Filter::Nearest,
     Bilinear => Filter::Bilinear,
     BilinearFast => Filter::Bilinear,
-    BilinearFootprint => Filter::Bilinear,
 );
 
 /// Blends two RGB565 colours, `f` in `0..=256` (weight of `b`), per channel, rounded.
@@ -404,9 +485,6 @@ pub type Trilinear = Mipmapped<Bilinear, Bilinear, true>;
 impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, Mag, LB> {
     const LOD: bool = true;
     const FILTER: Filter = Mag::FILTER;
-    /// Levels past 0 have no footprints: bindings refuse a footprint filter in a mipmapped
-    /// sampler.
-    const FOOTPRINTS: bool = Min::FOOTPRINTS || Mag::FOOTPRINTS;
     #[inline(always)]
     fn sample_base<WU: WrapMode, WV: WrapMode>(
         self,

@@ -44,9 +44,6 @@ pub enum Filter {
 pub trait Sampler: Copy + Default + core::fmt::Debug {
     /// The filter as a value.
     const FILTER: Filter;
-    /// True when the sampler reads the texture's footprints
-    /// ([`Texture::with_footprints`]): bindings and draws refuse a texture without them.
-    const FOOTPRINTS: bool = false;
 
     /// Samples `tex` at raw I16F16 texel coordinates `(u, v)` with wrap modes `wu` (columns)
     /// and `wv` (rows). Returns raw RGB565. Never panics, for any input.

@@ -35,8 +35,6 @@ pub struct Texture<'a> {
     log2_width: u8,
     log2_height: u8,
     border: u16,
-    /// The footprint layout (see [`super::BilinearFootprint`]), or empty.
-    footprints: &'a [u64],
 }
 
 /// Checks the sides and the length; returns `(log2_width, log2_height)`.
@@ -83,7 +81,6 @@ impl<'a> Texture<'a> {
             log2_width,
             log2_height,
             border: 0,
-            footprints: &[],
         })
     }
 
@@ -135,62 +132,6 @@ impl<'a> Texture<'a> {
     #[inline(always)]
     pub const fn border_raw(&self) -> u16 {
         self.border
-    }
-
-    /// Adds the texture's bilinear footprints (word `i` holds texel `i`, its right
-    /// neighbour, and the two texels below them, built by
-    /// [`footprint_texels`](super::footprint_texels) or
-    /// [`write_footprints`](super::write_footprints)), which
-    /// [`BilinearFootprint`](super::BilinearFootprint) reads: one 64-bit word per bilinear
-    /// sample instead of four texels.
-    ///
-    /// # Errors
-    /// - [`Error::WrongLength`] if `footprints.len() != width * height`,
-    /// - [`Error::FootprintMismatch`] at the first word that is not texel `i`'s footprint
-    ///   (the check reads every word once).
-    pub fn with_footprints(mut self, footprints: &'a [u64]) -> Result<Self, Error> {
-        super::footprint::check_footprints(&self, footprints)?;
-        self.footprints = footprints;
-        Ok(self)
-    }
-
-    /// [`Texture::with_footprints`] for statics, checked at compile time when evaluated in a
-    /// `const`/`static` (at run time otherwise).
-    ///
-    /// Only the length can be checked in a `const` (the texels are `Rgb565`, whose value a
-    /// `const fn` cannot read): build `footprints` with
-    /// [`footprint_texels`](super::footprint_texels) from the same raw texels. Words that
-    /// do not match draw their own colours under
-    /// [`BilinearFootprint`](super::BilinearFootprint); nothing panics or reads out of
-    /// bounds.
-    ///
-    /// # Panics
-    /// If `footprints.len() != width * height`.
-    #[must_use]
-    pub const fn with_footprints_static(mut self, footprints: &'a [u64]) -> Self {
-        assert!(
-            footprints.len() == self.texels.len(),
-            "footprints must hold one word per texel"
-        );
-        self.footprints = footprints;
-        self
-    }
-
-    /// The footprints, or an empty slice when none were added.
-    #[inline(always)]
-    pub const fn footprints(&self) -> &'a [u64] {
-        self.footprints
-    }
-
-    /// Footprint `idx`, taken modulo their count (a power of two), or 0 when the texture
-    /// has none. Never panics.
-    #[inline(always)]
-    pub(crate) fn footprint_at(&self, idx: u32) -> u64 {
-        let idx = idx as usize & self.footprints.len().wrapping_sub(1);
-        match self.footprints.get(idx) {
-            Some(&w) => w,
-            None => 0,
-        }
     }
 
     /// Raw RGB565 of texel `(i, j)` (column, row). Indices are meant to be in range
@@ -272,7 +213,6 @@ impl Texture<'static> {
                 log2_width,
                 log2_height,
                 border: 0,
-                footprints: &[],
             },
             Err(Error::BadSize(_)) => panic!("texture side is 0 or larger than 4096"),
             Err(Error::NotPowerOfTwo(_)) => panic!("texture side is not a power of two"),

@@ -54,8 +54,8 @@ macro_rules! footprints {
             $w,
         );
         #[doc = concat!("`T(", $w, ", ", $h, ")` with its footprints (for `BilinearFootprint`).")]
-        pub static $tex: Texture<'static> =
-            Texture::from_static(&$texels, $w, $h).with_footprints_static(&$fp);
+        pub static $tex: MipTexture<'static> =
+            MipTexture::single(Texture::from_static(&$texels, $w, $h)).with_footprints_static(&$fp);
     };
 }
 

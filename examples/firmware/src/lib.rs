@@ -315,11 +315,15 @@ macro_rules! report_modes {
 }
 /// The body of a cube report firmware (`report_cube`, `report_cube_unlit`): scene `cube`,
 /// frame 0, once per mode of `$list` (`$i` its indices, as [`report_modes!`]), with texture
-/// `$tex` (default `data::T128`; `report_cube_footprint` passes `data::T128_FP`).
+/// chain `$tex` (default `data::T128` alone; `report_cube_footprint` passes `data::T128_FP`).
 #[macro_export]
 macro_rules! report_cube {
     ($list:expr, [$($i:literal)*]) => {
-        $crate::report_cube!($list, [$($i)*], $crate::data::T128)
+        $crate::report_cube!(
+            $list,
+            [$($i)*],
+            fixel::texture::MipTexture::single($crate::data::T128)
+        )
     };
     ($list:expr, [$($i:literal)*], $tex:expr) => {{
         let mut buf = $crate::scenes::Buffers::new();
@@ -327,7 +331,7 @@ macro_rules! report_cube {
         match $crate::scenes::viewport() {
             Err(_) => false,
             Ok(vp) => $crate::report_modes!("cube", $list, [$($i)*], |m, pause, resume| {
-                let draw = m.draw(fixel::texture::MipTexture::single($tex), vp)?;
+                let draw = m.draw($tex, vp)?;
                 $crate::scenes::cube_with(
                     $crate::scenes::Target::Bands(&mut buf),
                     &draw,

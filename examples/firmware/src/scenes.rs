@@ -16,7 +16,7 @@ use fixel::scene::{
 };
 use fixel::surface::BandRange;
 use fixel::surface::{BandStats, Binned};
-use fixel::texture::{Bilinear, BilinearFootprint, Nearest, Repeat};
+use fixel::texture::{Bilinear, BilinearFootprint, MipTexture, Nearest, Repeat};
 
 /// Frame size of every scene.
 pub const W: u32 = demo::WIDTH;
@@ -189,7 +189,7 @@ pub struct FrameResult {
 #[allow(clippy::too_many_arguments)]
 pub fn render<M, const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
-    texture: Texture<'_>,
+    texture: MipTexture<'_>,
     mesh: &Mesh<'_>,
     model: &Mat4,
     far: i32,
@@ -200,7 +200,7 @@ pub fn render<M, const R: usize, const V: usize, const B: usize>(
 where
     M: fixel::pipeline::Stages + 'static,
 {
-    let draw = Draw::new::<M>(Some(texture), viewport()?, Cull::Back)?;
+    let draw = Draw::new_mip::<M>(Some(texture), viewport()?, Cull::Back)?;
     render_draw(buf, &draw, mesh, model, far, lit, pause, resume)
 }
 
@@ -268,10 +268,10 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
 }
 
 /// Scene `cube`, frame `i`: `texture` must be `T(128, 128)` with its footprints
-/// (`Texture::with_footprints`; drawn with [`LitFootprint`]).
+/// (`MipTexture::with_footprints`, [`data::T128_FP`]; drawn with [`LitFootprint`]).
 pub fn cube<const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
-    texture: Texture<'_>,
+    texture: MipTexture<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
@@ -300,7 +300,7 @@ pub fn sphere<const R: usize, const V: usize, const B: usize>(
 ) -> Result<FrameResult, Error> {
     render::<LitSphere, R, V, B>(
         buf,
-        texture,
+        MipTexture::single(texture),
         mesh,
         &demo::sphere_model(i),
         20,
@@ -332,7 +332,7 @@ pub fn teapot<const R: usize, const V: usize, const B: usize>(
 ) -> Result<FrameResult, Error> {
     render::<LitSphere, R, V, B>(
         buf,
-        texture,
+        MipTexture::single(texture),
         mesh,
         &teapot_model(i),
         20,
@@ -342,10 +342,11 @@ pub fn teapot<const R: usize, const V: usize, const B: usize>(
     )
 }
 
-/// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`.
+/// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`
+/// (with its footprints, [`data::T64_FP`], for [`FloorBilinearFootprint`]).
 pub fn floor<M, const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
-    texture: Texture<'_>,
+    texture: MipTexture<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error>

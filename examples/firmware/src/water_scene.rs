@@ -9,7 +9,7 @@
 use crate::scenes::{render, Buffers, FrameResult, LitSphere, Target};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::scene::{displace, displace_positions, recompute_normals, Displacement, Mesh};
-use fixel::texture::{HeightMap, Texture};
+use fixel::texture::{HeightMap, MipTexture, Texture};
 use fixel::Error;
 
 /// Vertices of the subdivided grid.
@@ -73,7 +73,7 @@ pub fn water(
     let mesh = displace(&d, base, None, positions, normals)?;
     render::<LitSphere, WATER_TRIANGLES, 64, 0>(
         Target::Bands(buf),
-        texture,
+        MipTexture::single(texture),
         &mesh,
         &water_model(),
         20,

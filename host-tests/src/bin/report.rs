@@ -189,7 +189,9 @@ impl Tex {
         }
         let n = (self.w * self.h) as usize;
         let base = Texture::new(&self.chain[..n], self.w, self.h).expect("texture");
-        MipTexture::single(base.with_footprints(&self.footprints).expect("footprints"))
+        MipTexture::single(base)
+            .with_footprints(&self.footprints)
+            .expect("footprints")
     }
     fn mip(&self) -> MipTexture<'_> {
         if self.levels > 1 {

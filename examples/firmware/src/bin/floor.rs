@@ -9,7 +9,7 @@ fn run() -> bool {
     report("floor", |pause, resume| {
         scenes::floor::<scenes::FloorNearest, _, _, _>(
             scenes::Target::Bands(&mut buf),
-            core::hint::black_box(data::T64),
+            fixel::texture::MipTexture::single(core::hint::black_box(data::T64)),
             pause,
             resume,
         )

@@ -15,8 +15,7 @@ fn run() -> bool {
         modes::FLOOR_FOOTPRINT_MODES,
         [0 1 2 3 4 5 6 7 8 9],
         |m, pause, resume| {
-            let tex = fixel::texture::MipTexture::single(core::hint::black_box(data::T64_FP));
-            let draw = m.draw(tex, vp)?;
+            let draw = m.draw(core::hint::black_box(data::T64_FP), vp)?;
             scenes::floor_with(scenes::Target::Bands(&mut buf), &draw, pause, resume)
         }
     )

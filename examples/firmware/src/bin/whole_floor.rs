@@ -15,7 +15,7 @@ fn run() -> bool {
     report("whole_floor", |pause, resume| {
         scenes::floor::<scenes::FloorNearest, 0, 0, 0>(
             WholeTarget::Whole(&mut buf),
-            data::T64,
+            fixel::texture::MipTexture::single(data::T64),
             pause,
             resume,
         )
