@@ -170,10 +170,12 @@ pub fn clip_and_project_varyings<const N: usize>(
     let fin: &[Attr<N>] = if any != 0 {
         spare = [empty; MAX_POLY];
         let (mut src, mut dst) = (&mut poly, &mut spare);
-        for plane in 0..PLANES {
-            if any & (1 << plane) == 0 {
-                continue;
-            }
+        // Only the planes some vertex is outside of, one at a time: a loop whose trip count
+        // LLVM cannot know is not unrolled into a copy of the polygon loop per plane.
+        let mut planes = any;
+        while planes != 0 {
+            let plane = planes.trailing_zeros() as usize;
+            planes &= planes - 1;
             let mut m = 0;
             for i in 0..n {
                 let (cur, nxt) = (&src[i], &src[(i + 1) % n]);
