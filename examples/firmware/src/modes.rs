@@ -54,7 +54,7 @@ pub enum Filt {
     Bilinear,
     /// `BilinearFootprint`, level 0: `Bilinear`'s pixels from the texture's bilinear
     /// footprints (the texture handed to [`Mode::draw`] must have them,
-    /// `Texture::with_footprints`).
+    /// `MipTexture::with_footprints`).
     BilinearFootprint,
     /// `NearestMipmapNearest`, LOD per pixel.
     NearestMip,
