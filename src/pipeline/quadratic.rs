@@ -76,8 +76,11 @@ fn div_small(x: i32, n: u32, log2: Option<u32>) -> i32 {
 /// -0.35, M0+ +0.4 (measured with `cargo xtask mcu`, session 13). An empty `asm!` is the
 /// only zero-cost barrier (`core::hint::black_box` goes through memory).
 #[inline(always)]
-#[allow(unsafe_code)]
-fn opaque(x: i32) -> i32 {
+#[allow(unsafe_code, unused_mut)]
+fn opaque(mut x: i32) -> i32 {
+    // SAFETY: the template is a comment: no instruction, no memory or stack access, flags
+    // preserved (as the options declare); `x` is read and written back unchanged in its
+    // register. Tested in `opaque_is_the_identity`. (Elsewhere: the identity.)
     #[cfg(any(
         target_arch = "arm",
         target_arch = "riscv32",
@@ -86,32 +89,15 @@ fn opaque(x: i32) -> i32 {
         target_arch = "x86_64",
         target_arch = "aarch64"
     ))]
-    {
-        let mut x = x;
-        // SAFETY: the template is a comment: no instruction, no memory or stack access, flags
-        // preserved (as the options declare); `x` is read and written back unchanged in its
-        // register. Tested in `opaque_is_the_identity`.
-        #[allow(asm_sub_register)]
-        unsafe {
-            core::arch::asm!(
-                "/* {0} */",
-                inout(reg) x,
-                options(pure, nomem, nostack, preserves_flags)
-            );
-        }
-        x
+    #[allow(asm_sub_register)]
+    unsafe {
+        core::arch::asm!(
+            "/* {0} */",
+            inout(reg) x,
+            options(pure, nomem, nostack, preserves_flags)
+        );
     }
-    #[cfg(not(any(
-        target_arch = "arm",
-        target_arch = "riscv32",
-        target_arch = "riscv64",
-        target_arch = "x86",
-        target_arch = "x86_64",
-        target_arch = "aarch64"
-    )))]
-    {
-        x
-    }
+    x
 }
 
 impl<V: Varyings, const SHARED: bool> Quadratic<V, SHARED> {
