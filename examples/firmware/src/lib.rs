@@ -344,5 +344,26 @@ macro_rules! report_cube {
         }
     }};
 }
+/// The body of a floor report firmware (`report_floor`, `report_floor_mip`,
+/// `report_floor_footprint`): scene `floor`, once per mode of `$list` (`$i` its indices, as
+/// [`report_modes!`]), with texture chain `$tex` (an expression evaluated per mode).
+#[macro_export]
+macro_rules! report_floor {
+    ($list:expr, [$($i:literal)*], $tex:expr) => {{
+        let mut buf = $crate::scenes::Buffers::new();
+        match $crate::scenes::viewport() {
+            Err(_) => false,
+            Ok(vp) => $crate::report_modes!("floor", $list, [$($i)*], |m, pause, resume| {
+                let draw = m.draw(core::hint::black_box($tex), vp)?;
+                $crate::scenes::floor_with(
+                    $crate::scenes::Target::Bands(&mut buf),
+                    &draw,
+                    pause,
+                    resume,
+                )
+            }),
+        }
+    }};
+}
 pub mod noise;
 pub mod shadow;

@@ -3,21 +3,13 @@
 #![no_std]
 #![no_main]
 
-use fixel_firmware::{data, modes, scenes};
+use fixel_firmware::{data, modes};
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
-    let Ok(vp) = scenes::viewport() else {
-        return false;
-    };
-    fixel_firmware::report_modes!(
-        "floor",
+    fixel_firmware::report_floor!(
         modes::FLOOR_FOOTPRINT_MODES,
         [0 1 2 3 4 5 6 7 8 9],
-        |m, pause, resume| {
-            let draw = m.draw(core::hint::black_box(data::T64_FP), vp)?;
-            scenes::floor_with(scenes::Target::Bands(&mut buf), &draw, pause, resume)
-        }
+        data::T64_FP
     )
 }
 

@@ -4,21 +4,13 @@
 #![no_std]
 #![no_main]
 
-use fixel_firmware::{data, modes, scenes};
+use fixel_firmware::{data, modes};
 
 fn run() -> bool {
-    let mut buf = scenes::Buffers::new();
-    let Ok(vp) = scenes::viewport() else {
-        return false;
-    };
-    fixel_firmware::report_modes!(
-        "floor",
+    fixel_firmware::report_floor!(
         modes::FLOOR_MIP_MODES,
         [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29],
-        |m, pause, resume| {
-            let draw = m.draw(core::hint::black_box(data::t64_mips()), vp)?;
-            scenes::floor_with(scenes::Target::Bands(&mut buf), &draw, pause, resume)
-        }
+        data::t64_mips()
     )
 }
 
