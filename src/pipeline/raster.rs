@@ -14,7 +14,7 @@ use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
 use crate::raster::{rasterize, Rect, SpanSink};
 use crate::shading::Shader;
-use crate::surface::RenderTarget;
+use crate::surface::{RenderTarget, Rows};
 use crate::texture::LodGranularity;
 
 /// The per-draw numbers the rasterization of one triangle needs.
@@ -64,7 +64,8 @@ struct Writer<'t, S: Shader, P, D, C> {
     /// The target's depth floor, read once per triangle: a triangle writes each pixel at
     /// most once, so its own writes never matter to its later spans. Lowered once, after.
     bound: DepthBound,
-    target: &'t mut dyn RenderTarget<Color = C>,
+    /// The target's rows, lent for the triangle.
+    rows: Rows<'t, C>,
     pixels: u32,
     _stages: core::marker::PhantomData<(P, D)>,
 }
@@ -74,7 +75,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
 {
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        if let Some((row, depth)) = self.target.row_mut(y) {
+        if let Some((row, depth)) = self.rows.row(y) {
             let n = span::<S, P, D, C>(
                 &self.ctx,
                 &mut self.bound,
@@ -144,28 +145,30 @@ where
         }
     }
     let floor = target.depth_floor();
+    let ctx = SpanCtx {
+        setup,
+        shader: *shader,
+        triangle,
+        tri_lambda,
+        log2_n: params.log2_n,
+        coord_shift: S::coord_shift(&triangle),
+        kind,
+        depth_on: params.depth_on,
+    };
+    let bound = DepthBound {
+        floor,
+        lowest: u16::MAX,
+    };
     let mut w = Writer::<S, P, D, C> {
-        ctx: SpanCtx {
-            setup,
-            shader: *shader,
-            triangle,
-            tri_lambda,
-            log2_n: params.log2_n,
-            coord_shift: S::coord_shift(&triangle),
-            kind,
-            depth_on: params.depth_on,
-        },
+        ctx,
         scratch: None,
-        bound: DepthBound {
-            floor,
-            lowest: u16::MAX,
-        },
-        target,
+        bound,
+        rows: target.rows_mut(),
         pixels: 0,
         _stages: core::marker::PhantomData,
     };
-    // Through `dyn`: one copy of the edge walker for every span loop (one indirect call
-    // per span, nothing per pixel).
+    // Through `dyn`: one copy of the edge walker for every span loop (LLVM calls the
+    // writer directly where it sees which it is).
     let sink: &mut dyn SpanSink = &mut w;
     rasterize(
         [
@@ -176,8 +179,9 @@ where
         clip,
         sink,
     );
-    if w.bound.lowest < w.bound.floor {
-        w.target.lower_depth_floor(w.bound.lowest);
+    let (pixels, lowest) = (w.pixels, w.bound.lowest);
+    if lowest < floor {
+        target.lower_depth_floor(lowest);
     }
-    w.pixels
+    pixels
 }

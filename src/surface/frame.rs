@@ -158,18 +158,49 @@ impl<C: TargetColor> RenderTarget for Frame<'_, C> {
     }
 
     #[inline]
-    fn row_mut(&mut self, y: i32) -> Option<super::Row<'_, C>> {
-        let r = y.checked_sub(self.y0)?;
-        if r < 0 || r as u32 >= self.height {
-            return None;
+    fn rows_mut(&mut self) -> super::Rows<'_, C> {
+        super::Rows {
+            color: &mut *self.color,
+            depth: self.depth.as_deref_mut(),
+            width: self.width as usize,
+            stride: self.width as usize,
+            height: self.height as usize,
+            y0: self.y0,
         }
-        let w = self.width as usize;
-        let start = r as usize * w;
-        let color = self.color.get_mut(start..start + w)?;
-        let depth = match self.depth.as_deref_mut() {
-            Some(d) => Some(d.get_mut(start..start + w)?),
-            None => None,
-        };
-        Some((color, depth))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Rgb565;
+
+    /// `row_mut` gives row `y0 + r` as `r * width..`, with and without depth, and `None`
+    /// outside the band's rows (for any `y`, far outside included).
+    #[test]
+    fn rows_are_the_band_rows() {
+        let (w, h) = (5u32, 3u32);
+        let mut colour = [Rgb565::default(); 15];
+        let mut depth = [0u16; 15];
+        let base = colour.as_ptr() as usize;
+        for with_depth in [false, true] {
+            let frame = Frame::new(&mut colour, w, h).unwrap().at_row(7);
+            let mut frame = if with_depth {
+                frame.with_depth(&mut depth).unwrap()
+            } else {
+                frame
+            };
+            for y in [i32::MIN, -1, 0, 6, 7, 8, 9, 10, 11, i32::MAX] {
+                let row = frame.row_mut(y).map(|(c, d)| {
+                    let at = (c.as_ptr() as usize - base) / 2;
+                    (at, c.len(), d.map(|d| d.len()))
+                });
+                let want = (7..10).contains(&y).then(|| {
+                    let r = (y - 7) as usize;
+                    (r * 5, 5, with_depth.then_some(5))
+                });
+                assert_eq!(row, want, "row {y}, depth {with_depth}");
+            }
+        }
     }
 }
