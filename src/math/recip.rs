@@ -47,6 +47,37 @@ pub(crate) const SEED: [u16; 256] = [
     33321, 33255, 33189, 33124, 33059, 32994, 32929, 32864, 32800,
 ];
 
+const fn mantissa_table() -> [u32; 257] {
+    let mut t = [0u32; 257];
+    let mut i = 0;
+    while i < 257 {
+        // 2^62 / (2^31 (1 + i/256)) = 2^39 / (256 + i), rounded.
+        t[i] = (((1u64 << 39) + (256 + i as u64) / 2) / (256 + i as u64)) as u32;
+        i += 1;
+    }
+    t
+}
+
+/// `2^39 / (256 + i)` rounded, `i` in `0..=256`: `2^62 / m` at the 257 mantissas
+/// `m = 2^31 + i 2^23`.
+static RECIP_TABLE: [u32; 257] = mantissa_table();
+
+/// `2^62 / m` for a normalised mantissa `m` in `[2^31, 2^32)`, in `(2^30, 2^31]`: the table
+/// entry of `m`'s top 8 bits after the leading one, interpolated linearly with the next 9.
+/// Relative error below 2^-16 (about 2^-18 of curvature, the rest from the 9-bit weight).
+/// The per-pixel reciprocal of perspective interpolation, and the seed of
+/// [`div_64_32`](super::div)'s Newton form.
+#[inline(always)]
+pub(crate) fn recip_mantissa(m: u32) -> u32 {
+    let f = m.wrapping_sub(1 << 31);
+    let idx = ((f >> 23) & 0xFF) as usize;
+    let frac = (f >> 14) & 0x1FF; // 9 bits
+    let a = RECIP_TABLE[idx];
+    let b = RECIP_TABLE[idx + 1];
+    // a - b < 2^23, so the product fits u32.
+    a - (((a - b) * frac) >> 9)
+}
+
 /// `1 / x` as a mantissa and exponent: returns `(m, e)` with `m` in [2^31, 2^32) and
 /// `1/x ≈ m / 2^e`, `m` rounded to nearest (relative error <= 2^-32; exact for powers of two).
 ///

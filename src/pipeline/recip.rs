@@ -15,18 +15,7 @@ pub const Q_FLOOR: u32 = 1 << 15;
 /// `q` of the vertex with the smallest `w` (1.0 in Q30).
 pub const Q_ONE: u32 = 1 << 30;
 
-const fn table() -> [u32; 257] {
-    let mut t = [0u32; 257];
-    let mut i = 0;
-    while i < 257 {
-        // 2^62 / (2^31 (1 + i/256)) = 2^39 / (256 + i), rounded.
-        t[i] = (((1u64 << 39) + (256 + i as u64) / 2) / (256 + i as u64)) as u32;
-        i += 1;
-    }
-    t
-}
-
-static RECIP_TABLE: [u32; 257] = table();
+use crate::math::recip::recip_mantissa;
 
 /// `2^46 / q` (that is, `1/q` for Q30 `q`, as Q16), for `q` clamped below to
 /// `Q_FLOOR + 1`: the result is below 2^31, so it is a non-negative `i32` and [`mul_q16`]
@@ -37,13 +26,8 @@ static RECIP_TABLE: [u32; 257] = table();
 pub fn recip_q30(q: i32) -> i32 {
     let q = q.max(Q_FLOOR as i32 + 1) as u32;
     let (n, m) = normalize(q); // n in 1..=16, m = q << n in [2^31, 2^32)
-    let f = m - (1 << 31);
-    let idx = (f >> 23) as usize; // 0..=255
-    let frac = (f >> 14) & 0x1FF; // 9 bits
-    let a = RECIP_TABLE[idx & 0xFF];
-    let b = RECIP_TABLE[(idx & 0xFF) + 1];
-    let y = a - (((a - b) * frac) >> 9); // ~ 2^62 / m
-                                         // 2^46 / q = 2^(46 + n) / m = y / 2^(16 - n).
+    let y = recip_mantissa(m); // ~ 2^62 / m
+                               // 2^46 / q = 2^(46 + n) / m = y / 2^(16 - n).
     (y >> (16 - n)) as i32
 }
 
