@@ -163,10 +163,11 @@ struct Pos {
 /// Shades the pixels of `out` whose bit is set in `mask` (bit 0 = first pixel) from the
 /// filled `vals`; with `ZW` (a shader that discards) writes their depth to `zrow` as well.
 /// Returns the pixels written. Not inlined: its registers are allocated on their own, so
-/// the shader's uniforms stay in registers through the loop.
+/// the shader's uniforms stay in registers through the loop. As [`shade_linear`], a draw
+/// without a depth stage (`D`) links only one of the two loops.
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
-fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
+fn shade_chunk<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
     shader: &S,
     triangle: S::Triangle,
     vals: &[S::Varyings],
@@ -193,7 +194,7 @@ fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
         triangle,
     };
     let mut written = 0u32;
-    if !S::SMALL && !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
+    if !S::SMALL && !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
         for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
             if let Some(c) = color(&shader, &frag(*v, k), o) {
                 *o = C::from_rgb565(c);
@@ -221,10 +222,12 @@ fn shade_chunk<S: Shader, C: TargetColor, const ZW: bool>(
 }
 
 /// Like [`shade_chunk`] for a linear piece: the varyings start at `start` and change by
-/// `slope` per pixel, stepped here in registers.
+/// `slope` per pixel, stepped here in registers. For a draw without a depth stage (`D`)
+/// and a shader that never discards, every mask is full: only the unmasked loop is
+/// linked (about 0.7 KB less on Cortex-M4F).
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
-fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
+fn shade_linear<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
     shader: &S,
     triangle: S::Triangle,
     start: &S::Varyings,
@@ -249,7 +252,7 @@ fn shade_linear<S: Shader, C: TargetColor, const ZW: bool>(
         triangle,
     };
     let mut written = 0u32;
-    if !ZW && !S::DISCARDS && mask == low_bits(out.len()) {
+    if !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
         for (k, o) in out.iter_mut().enumerate() {
             if let Some(c) = color(&shader, &frag(v, k), o) {
                 *o = C::from_rgb565(c);
@@ -378,7 +381,7 @@ pub(crate) struct DepthBound {
 /// Affine and subdivided spans: per chunk, the depth mask, then each linear piece of the
 /// chunk shaded with its varyings stepped in registers.
 #[inline(always)]
-fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
+fn run_linear<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z: bool>(
     ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     x: i32,
@@ -439,7 +442,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
                     break;
                 };
                 let shaded = if Z && S::DISCARDS && !S::BLENDS {
-                    shade_linear::<S, C, true>(
+                    shade_linear::<S, C, D, true>(
                         &ctx.shader,
                         ctx.triangle,
                         &p.start,
@@ -450,7 +453,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
                         pos,
                     )
                 } else {
-                    shade_linear::<S, C, false>(
+                    shade_linear::<S, C, D, false>(
                         &ctx.shader,
                         ctx.triangle,
                         &p.start,
@@ -481,7 +484,7 @@ fn run_linear<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
 /// bookkeeping of [`run_linear`] (whose pixels it gives, bit for bit). Most spans of a
 /// finely tessellated mesh are a few pixels long: this path is what they cost.
 #[inline(always)]
-fn run_short<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
+fn run_short<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z: bool>(
     ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     x: i32,
@@ -519,9 +522,9 @@ fn run_short<S: Shader, C: TargetColor, const SUB: bool, const Z: bool>(
     // The shading loop counts what it writes: for a shader that never discards that is
     // every pixel of the mask (no population count per span).
     let shade = if Z && S::DISCARDS && !S::BLENDS {
-        shade_linear::<S, C, true>
+        shade_linear::<S, C, D, true>
     } else {
-        shade_linear::<S, C, false>
+        shade_linear::<S, C, D, false>
     };
     shade(
         &ctx.shader,
@@ -570,7 +573,7 @@ fn lod_policy<S: Shader>(ctx: &SpanCtx<'_, S>, at_start: impl FnOnce() -> i32) -
 }
 
 #[inline(always)]
-fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
+fn run<S: Shader, C: TargetColor, D: DepthStage, I: Fill<S::Varyings>, const Z: bool>(
     ctx: &SpanCtx<'_, S>,
     bound: &mut DepthBound,
     scratch: &mut Scratch<S::Varyings>,
@@ -637,9 +640,9 @@ fn run<S: Shader, C: TargetColor, I: Fill<S::Varyings>, const Z: bool>(
             // The shading loop counts what it writes (a full chunk without a count per
             // pixel), so no population count per chunk.
             written += if depth && S::DISCARDS && !S::BLENDS {
-                shade_chunk::<S, C, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
+                shade_chunk::<S, C, D, true>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
             } else {
-                shade_chunk::<S, C, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
+                shade_chunk::<S, C, D, false>(&ctx.shader, ctx.triangle, vs, ls, os, zc, mask, pos)
             };
         }
         z = z.wrapping_add(dz.wrapping_mul(n as i32));
@@ -700,60 +703,62 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
         || (kind == ProjKind::Quadratic && out.len() <= 3);
     if !S::SMALL && one_piece && out.len() <= CHUNK && short_path_on() {
         return match (affine, zrow) {
-            (true, Some(z)) => run_short::<S, C, false, true>(ctx, bound, x0, y, out, z),
-            (true, None) => run_short::<S, C, false, false>(ctx, bound, x0, y, out, &mut []),
-            (false, Some(z)) => run_short::<S, C, true, true>(ctx, bound, x0, y, out, z),
-            (false, None) => run_short::<S, C, true, false>(ctx, bound, x0, y, out, &mut []),
+            (true, Some(z)) => run_short::<S, C, D, false, true>(ctx, bound, x0, y, out, z),
+            (true, None) => run_short::<S, C, D, false, false>(ctx, bound, x0, y, out, &mut []),
+            (false, Some(z)) => run_short::<S, C, D, true, true>(ctx, bound, x0, y, out, z),
+            (false, None) => run_short::<S, C, D, true, false>(ctx, bound, x0, y, out, &mut []),
         };
     }
     match (kind, affine, zrow) {
         (_, true, Some(z)) if S::SMALL => {
-            run::<S, C, L<S, false>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+            run::<S, C, D, L<S, false>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
         }
         (_, true, None) if S::SMALL => {
-            run::<S, C, L<S, false>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, L<S, false>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
-        (_, true, Some(z)) => run_linear::<S, C, false, true>(ctx, bound, x0, y, out, z),
-        (_, true, None) => run_linear::<S, C, false, false>(ctx, bound, x0, y, out, &mut []),
+        (_, true, Some(z)) => run_linear::<S, C, D, false, true>(ctx, bound, x0, y, out, z),
+        (_, true, None) => run_linear::<S, C, D, false, false>(ctx, bound, x0, y, out, &mut []),
         (ProjKind::Subdivided, _, Some(z)) if long => {
-            run_linear::<S, C, true, true>(ctx, bound, x0, y, out, z)
+            run_linear::<S, C, D, true, true>(ctx, bound, x0, y, out, z)
         }
         (ProjKind::Subdivided, _, None) if long => {
-            run_linear::<S, C, true, false>(ctx, bound, x0, y, out, &mut [])
+            run_linear::<S, C, D, true, false>(ctx, bound, x0, y, out, &mut [])
         }
         (_, _, Some(z)) if dynamic => {
-            run::<S, C, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+            run::<S, C, D, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
         }
         (_, _, None) if dynamic && S::SMALL => {
-            run::<S, C, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, Dy<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (_, _, None) if dynamic => {
-            run::<S, C, Dy<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, Dy<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (ProjKind::Subdivided, _, Some(z)) => {
-            run::<S, C, L<S, true>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+            run::<S, C, D, L<S, true>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
         }
         (ProjKind::Subdivided, _, None) if S::SMALL => {
-            run::<S, C, L<S, true>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, L<S, true>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (ProjKind::Subdivided, _, None) => {
-            run::<S, C, L<S, true>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, L<S, true>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (ProjKind::Quadratic, _, Some(z)) => {
-            run::<S, C, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+            run::<S, C, D, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
         }
         (ProjKind::Quadratic, _, None) if S::SMALL => {
-            run::<S, C, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, Q<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (ProjKind::Quadratic, _, None) => {
-            run::<S, C, Q<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, Q<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
-        (_, _, Some(z)) => run::<S, C, E<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z),
+        (_, _, Some(z)) => {
+            run::<S, C, D, E<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, z)
+        }
         (_, _, None) if S::SMALL => {
-            run::<S, C, E<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, E<S>, true>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
         (_, _, None) => {
-            run::<S, C, E<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
+            run::<S, C, D, E<S>, false>(ctx, bound, Scratch::of(scratch), x0, y, out, &mut [])
         }
     }
 }
