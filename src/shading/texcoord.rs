@@ -178,13 +178,12 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
                 }
             }
         }
-        let max = tu
+        // The bit length of the largest magnitude is that of all magnitudes or-ed together.
+        let bits = tu
             .iter()
             .chain(tv.iter())
-            .map(|x| x.unsigned_abs())
-            .max()
-            .unwrap_or(0);
-        let shift = (64 - wide::clz64(max)).saturating_sub(30);
+            .fold(0u64, |m, x| m | x.unsigned_abs());
+        let shift = (64 - wide::clz64(bits)).saturating_sub(30);
         let narrow = |t: [i64; 3]| t.map(|a| wide::sar(a, shift) as i32);
         write_pair(vary, pair, narrow(tu), narrow(tv));
         TexTriangle { shift: shift as u8 }
