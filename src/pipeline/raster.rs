@@ -145,24 +145,22 @@ where
         }
     }
     let floor = target.depth_floor();
-    let ctx = SpanCtx {
-        setup,
-        shader: *shader,
-        triangle,
-        tri_lambda,
-        log2_n: params.log2_n,
-        coord_shift: S::coord_shift(&triangle),
-        kind,
-        depth_on: params.depth_on,
-    };
-    let bound = DepthBound {
-        floor,
-        lowest: u16::MAX,
-    };
     let mut w = Writer::<S, P, D, C> {
-        ctx,
+        ctx: SpanCtx {
+            setup,
+            shader: *shader,
+            triangle,
+            tri_lambda,
+            log2_n: params.log2_n,
+            coord_shift: S::coord_shift(&triangle),
+            kind,
+            depth_on: params.depth_on,
+        },
         scratch: None,
-        bound,
+        bound: DepthBound {
+            floor,
+            lowest: u16::MAX,
+        },
         rows: target.rows_mut(),
         pixels: 0,
         _stages: core::marker::PhantomData,
@@ -179,6 +177,7 @@ where
         clip,
         sink,
     );
+    // Read out before the target is borrowed again (the writer lends its rows).
     let (pixels, lowest) = (w.pixels, w.bound.lowest);
     if lowest < floor {
         target.lower_depth_floor(lowest);
