@@ -62,19 +62,23 @@ impl<V: Varyings> TriSetup<V> {
     }
 }
 
-/// Upper bound, in the units of `extent`, of the difference between affine and
-/// perspective-correct interpolation over a triangle whose normalized `1/w` values range
-/// over `[q_min, 1]` (Q30) and whose attribute spans `extent`.
+/// Whether a bound on the difference between affine and perspective-correct interpolation
+/// exceeds `budget` (units of `extent`), over a triangle whose normalized `1/w` values range
+/// over `[q_min, 1]` (Q30) and whose attribute spans `extent` (`0..2^32`).
 ///
 /// With barycentrics `b` and perspective ones `b' = b q / sum(b q)`, the difference is
 /// `sum((b - b') a)`, at most `extent` times the positive part of `b - b'`, which is largest
 /// for two groups of vertices at `q = 1` and `q = rho`: `(1 - sqrt(rho)) / (1 + sqrt(rho))`.
 /// Since `sqrt(rho) >= rho` this is below `(1 - rho) / (1 + rho)`, used here (no square root).
-pub(crate) fn affine_error_bound(extent: i64, q_min: i64) -> i64 {
+///
+/// The test is `floor(extent (1 - rho) / (1 + rho)) > budget`, evaluated without the
+/// division as `extent (1 - rho) >= (budget + 1) (1 + rho)` (a 64-bit division is a library
+/// call on 32-bit cores: about 4 instructions per pixel on the sphere).
+pub(crate) fn affine_error_exceeds(extent: i64, q_min: i64, budget: i64) -> bool {
     let one = i64::from(Q_ONE);
     let q = q_min.clamp(0, one);
-    // extent < 2^33, (one - q) <= 2^30: the product fits i64.
-    extent.saturating_mul(one - q) / (one + q)
+    // extent < 2^33, (one - q) <= 2^30: the product fits i64; budget < 2^31.
+    extent.saturating_mul(one - q) >= budget.saturating_add(1).saturating_mul(one + q)
 }
 
 /// One screen vertex as the set-up reads it: `x, y` in 1/4096 pixel (unsnapped: see
@@ -156,10 +160,10 @@ pub(crate) fn setup<V: Varyings>(
                 Some((a, b)) if a < V::N && b < V::N => {
                     let extent = span(value(a)).max(span(value(b)));
                     // Shifted coordinates (extents near 2^30) stay perspective.
-                    extent >= 1 << 29 || affine_error_bound(extent, q_min) > adaptive_budget
+                    extent >= 1 << 29 || affine_error_exceeds(extent, q_min, adaptive_budget)
                 }
                 // No texture: every varying against one RGB565 step of a Q8.16 colour.
-                _ => (0..V::N).any(|k| affine_error_bound(span(value(k)), q_min) > (1 << 19)),
+                _ => (0..V::N).any(|k| affine_error_exceeds(span(value(k)), q_min, 1 << 19)),
             }
         }
     };
@@ -193,4 +197,39 @@ pub(crate) fn setup<V: Varyings>(
         dy,
         affine: !perspective,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+
+    /// The division-free test decides as the bound it replaced, `floor(extent (1 - rho) /
+    /// (1 + rho)) > budget`, for extents across the whole range, `q` from 0 to one, and
+    /// budgets from 0 to the largest a draw can give (`u16` texels / 256).
+    #[test]
+    fn the_error_test_equals_the_rounded_bound() {
+        let one = i64::from(Q_ONE);
+        let bound = |extent: i64, q: i64| extent * (one - q) / (one + q);
+        let mut rng = Rng(0x5eed_a11e);
+        let edges = [0, 1, 2, one - 1, one, one + 5, -3];
+        for i in 0..200_000 {
+            let extent = (rng.next() >> (31 + i % 32)) as i64;
+            let q = if i % 5 == 0 {
+                edges[i % edges.len()]
+            } else {
+                (rng.next() % (one as u64 + 1)) as i64
+            };
+            let budget = match i % 3 {
+                0 => (rng.next() % (1 << 24)) as i64,
+                1 => 1 << 19,
+                _ => bound(extent, q.clamp(0, one)) - (i % 2) as i64,
+            };
+            assert_eq!(
+                affine_error_exceeds(extent, q, budget),
+                bound(extent, q.clamp(0, one)) > budget,
+                "extent {extent}, q {q}, budget {budget}"
+            );
+        }
+    }
 }

@@ -37,7 +37,7 @@ pub enum Projection {
         log2_n: u8,
     },
     /// Chosen per triangle: affine when a bound on the affine error (see
-    /// `affine_error_bound` in the set-up) is within `budget` (texels, Q8: 256 = one texel),
+    /// `affine_error_exceeds` in the set-up) is within `budget` (texels, Q8: 256 = one texel),
     /// exact otherwise. Small or nearly screen-parallel triangles then cost no reciprocal.
     Adaptive {
         /// Largest accepted affine error, 1/256 texel.
