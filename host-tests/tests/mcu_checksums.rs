@@ -152,6 +152,23 @@ fn mcu_frames() {
         (r.checksum, r.stats.pixels),
         "sphere: bands differ from the whole frame"
     );
+    // The same frame in the adaptive projection (whole frame only).
+    let wa = scenes::sphere_as::<scenes::LitSphereAdaptive, 0, 0, 0>(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    let w = whole::<scenes::LitSphereAdaptive>(tex, &mesh, &demo::sphere_model(0), 20, true);
+    assert_eq!(
+        w,
+        (wa.checksum, wa.stats.pixels),
+        "sphere, adaptive: the whole-frame walker differs from the plain draw"
+    );
+    print("whole_sphere_adaptive", &wa);
 
     // Anti-aliasing (rotated grid through 4-row bands) and transparency.
     let t128b = texture(128, 128);

@@ -63,22 +63,19 @@ impl<V: Varyings> TriSetup<V> {
 }
 
 /// Whether a bound on the difference between affine and perspective-correct interpolation
-/// exceeds `budget` (units of `extent`), over a triangle whose normalized `1/w` values range
-/// over `[q_min, 1]` (Q30) and whose attribute spans `extent` (`0..2^32`).
+/// exceeds `budget` (units of `extent`), over a triangle whose clip `w` values range over
+/// `[w_min, w_max]` (positive) and whose attribute spans `extent` (`0..2^33`).
 ///
-/// With barycentrics `b` and perspective ones `b' = b q / sum(b q)`, the difference is
-/// `sum((b - b') a)`, at most `extent` times the positive part of `b - b'`, which is largest
-/// for two groups of vertices at `q = 1` and `q = rho`: `(1 - sqrt(rho)) / (1 + sqrt(rho))`.
-/// Since `sqrt(rho) >= rho` this is below `(1 - rho) / (1 + rho)`, used here (no square root).
-///
-/// The test is `floor(extent (1 - rho) / (1 + rho)) > budget`, evaluated without the
-/// division as `extent (1 - rho) >= (budget + 1) (1 + rho)` (a 64-bit division is a library
-/// call on 32-bit cores: about 4 instructions per pixel on the sphere).
-pub(crate) fn affine_error_exceeds(extent: i64, q_min: i64, budget: i64) -> bool {
-    let one = i64::from(Q_ONE);
-    let q = q_min.clamp(0, one);
-    // extent < 2^33, (one - q) <= 2^30: the product fits i64; budget < 2^31.
-    extent.saturating_mul(one - q) >= budget.saturating_add(1).saturating_mul(one + q)
+/// With barycentrics `b` and perspective ones `b' = b q / sum(b q)` (`q = 1 / w`), the
+/// difference is `sum((b - b') a)`, at most `extent` times the positive part of `b - b'`,
+/// which is largest for two groups of vertices at `q = 1` and `q = rho = w_min / w_max`:
+/// `(1 - sqrt(rho)) / (1 + sqrt(rho))`. Since `sqrt(rho) >= rho` this is below
+/// `(1 - rho) / (1 + rho) = (w_max - w_min) / (w_max + w_min)`, used here: the test
+/// `extent (w_max - w_min) > budget (w_max + w_min)` needs no square root and no division
+/// (a 64-bit division is a library call on 32-bit cores).
+pub(crate) fn affine_error_exceeds(extent: i64, w_min: i64, w_max: i64, budget: i64) -> bool {
+    // A saturated product is above any right-hand side (budget < 2^31, w < 2^31).
+    extent.saturating_mul(w_max - w_min) > budget.saturating_mul(w_max + w_min)
 }
 
 /// One screen vertex as the set-up reads it: `x, y` in 1/4096 pixel (unsnapped: see
@@ -133,39 +130,37 @@ pub(crate) fn setup<V: Varyings>(
     } else {
         Plane::default()
     };
-    // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain.
-    let q = if proj != ProjKind::Affine {
-        let wmin = i64::from(pos[0].3.min(pos[1].3).min(pos[2].3).max(1));
-        pos.map(|v| {
-            let w = i64::from(v.3.max(1));
-            if w == wmin {
+    let value = |k: usize| vary.each_ref().map(|v| i64::from(v.as_slice()[k]));
+    let span = |a: [i64; 3]| a[0].max(a[1]).max(a[2]) - a[0].min(a[1]).min(a[2]);
+    let w = pos.map(|v| i64::from(v.3.max(1)));
+    let (w_min, w_max) = (w[0].min(w[1]).min(w[2]), w[0].max(w[1]).max(w[2]));
+    let perspective = match proj {
+        ProjKind::Affine => false,
+        ProjKind::Exact | ProjKind::Subdivided | ProjKind::Quadratic | ProjKind::Dynamic => true,
+        ProjKind::Adaptive => match texcoords {
+            Some((a, b)) if a < V::N && b < V::N => {
+                let extent = span(value(a)).max(span(value(b)));
+                // Shifted coordinates (extents near 2^30) stay perspective.
+                extent >= 1 << 29 || affine_error_exceeds(extent, w_min, w_max, adaptive_budget)
+            }
+            // No texture: every varying against one RGB565 step of a Q8.16 colour.
+            _ => (0..V::N).any(|k| affine_error_exceeds(span(value(k)), w_min, w_max, 1 << 19)),
+        },
+    };
+    // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain (perspective
+    // triangles only: an adaptive triangle drawn affinely needs no division).
+    let q = if perspective {
+        w.map(|w| {
+            if w == w_min {
                 // The nearest vertex: exactly 1.0, no division.
                 return i64::from(Q_ONE);
             }
             // Both positive: the exact 32-bit-path division of `math::div`.
-            (div_u64((wmin << 30) as u64, w as u64) as i64)
+            (div_u64((w_min << 30) as u64, w as u64) as i64)
                 .clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
         })
     } else {
         [i64::from(Q_ONE); 3]
-    };
-    let value = |k: usize| vary.each_ref().map(|v| i64::from(v.as_slice()[k]));
-    let span = |a: [i64; 3]| a[0].max(a[1]).max(a[2]) - a[0].min(a[1]).min(a[2]);
-    let perspective = match proj {
-        ProjKind::Affine => false,
-        ProjKind::Exact | ProjKind::Subdivided | ProjKind::Quadratic | ProjKind::Dynamic => true,
-        ProjKind::Adaptive => {
-            let q_min = q[0].min(q[1]).min(q[2]);
-            match texcoords {
-                Some((a, b)) if a < V::N && b < V::N => {
-                    let extent = span(value(a)).max(span(value(b)));
-                    // Shifted coordinates (extents near 2^30) stay perspective.
-                    extent >= 1 << 29 || affine_error_exceeds(extent, q_min, adaptive_budget)
-                }
-                // No texture: every varying against one RGB565 step of a Q8.16 colour.
-                _ => (0..V::N).any(|k| affine_error_exceeds(span(value(k)), q_min, 1 << 19)),
-            }
-        }
     };
     let q_plane = if perspective {
         ps.plane([q[0] as i32, q[1] as i32, q[2] as i32])
@@ -204,31 +199,37 @@ mod tests {
     use super::*;
     use crate::test_rng::Rng;
 
-    /// The division-free test decides as the bound it replaced, `floor(extent (1 - rho) /
-    /// (1 + rho)) > budget`, for extents across the whole range, `q` from 0 to one, and
-    /// budgets from 0 to the largest a draw can give (`u16` texels / 256).
+    /// The test decides as the bound in exact rational arithmetic,
+    /// `extent (1 - rho) / (1 + rho) > budget` with `rho = w_min / w_max`, for extents across
+    /// the whole range, `w` over all positive `i32` and budgets up to a draw's largest.
     #[test]
-    fn the_error_test_equals_the_rounded_bound() {
-        let one = i64::from(Q_ONE);
-        let bound = |extent: i64, q: i64| extent * (one - q) / (one + q);
+    fn the_error_test_equals_the_exact_bound() {
         let mut rng = Rng(0x5eed_a11e);
-        let edges = [0, 1, 2, one - 1, one, one + 5, -3];
-        for i in 0..200_000 {
-            let extent = (rng.next() >> (31 + i % 32)) as i64;
-            let q = if i % 5 == 0 {
-                edges[i % edges.len()]
-            } else {
-                (rng.next() % (one as u64 + 1)) as i64
+        for i in 0..200_000u32 {
+            let extent = (rng.next() >> (31 + i % 33)) as i64;
+            let w_max = ((rng.next() >> (33 + i % 31)) as i64).max(1);
+            let w_min = match i % 4 {
+                0 => w_max,
+                1 => (w_max - (i % 3) as i64).max(1),
+                _ => (rng.next() as i64).rem_euclid(w_max) + 1,
             };
             let budget = match i % 3 {
                 0 => (rng.next() % (1 << 24)) as i64,
                 1 => 1 << 19,
-                _ => bound(extent, q.clamp(0, one)) - (i % 2) as i64,
+                // At and around the bound itself.
+                _ => {
+                    let b =
+                        i128::from(extent) * i128::from(w_max - w_min) / i128::from(w_max + w_min);
+                    (b as i64) - i64::from(i % 2)
+                }
             };
+            // (1 - rho) / (1 + rho) = (w_max - w_min) / (w_max + w_min), in i128.
+            let exact = i128::from(extent) * i128::from(w_max - w_min)
+                > i128::from(budget) * i128::from(w_max + w_min);
             assert_eq!(
-                affine_error_exceeds(extent, q, budget),
-                bound(extent, q.clamp(0, one)) > budget,
-                "extent {extent}, q {q}, budget {budget}"
+                affine_error_exceeds(extent, w_min, w_max, budget),
+                exact,
+                "extent {extent}, w {w_min}..{w_max}, budget {budget}"
             );
         }
     }

@@ -8,7 +8,8 @@ use core::convert::Infallible;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
 use fixel::pipeline::{
-    DepthLess, ModulateFacet, ModulateIntensity, Pipeline, QuadraticBy, Replace, SubdividedBy,
+    Adaptive, DepthLess, ModulateFacet, ModulateIntensity, Pipeline, QuadraticBy, Replace,
+    SubdividedBy,
 };
 use fixel::prelude::*;
 use fixel::scene::{
@@ -55,6 +56,11 @@ pub type LitSub4 =
 /// against exact's 45.3 in `docs/report`).
 pub type LitSphere =
     Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+/// `sphere` in the adaptive projection (per triangle affine when a bound on the affine error
+/// is within a quarter texel, exact otherwise): `whole_sphere_adaptive`, the report's
+/// balanced mode for the sphere.
+pub type LitSphereAdaptive =
+    Pipeline<Adaptive, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 /// `floor` with nearest filtering (unlit).
 pub type FloorNearest = Pipeline<SubdividedBy<6>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).
@@ -298,7 +304,22 @@ pub fn sphere<const R: usize, const V: usize, const B: usize>(
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    render::<LitSphere, R, V, B>(
+    sphere_as::<LitSphere, R, V, B>(buf, texture, mesh, i, pause, resume)
+}
+
+/// [`sphere`] drawn with the stages `M` (a lit, bilinear mode of the sphere).
+pub fn sphere_as<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
+    texture: Texture<'_>,
+    mesh: &Mesh<'_>,
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error>
+where
+    M: fixel::pipeline::Stages + 'static,
+{
+    render::<M, R, V, B>(
         buf,
         MipTexture::single(texture),
         mesh,
