@@ -218,6 +218,36 @@ pub fn clip_and_project_varyings<const N: usize>(
     }
 }
 
+/// Projects and culls a classic [`ClipVertex`] triangle that needs no clipping, as
+/// [`clip_and_project`] would (the same screen triangle, bit for bit), without linking the
+/// clipper. Returns `false`, emitting nothing, when the triangle crosses a plane of the view
+/// volume or guard band (it would have to be clipped); a triangle wholly outside one plane
+/// is dropped and counts as handled (`true`).
+pub fn project_unclipped(
+    tri: &[ClipVertex; 3],
+    vp: &Viewport,
+    cull: Cull,
+    emit: &mut impl FnMut(&ScreenTriangle<CLASSIC_VARYINGS>),
+) -> bool {
+    let a = [
+        attr(&tri[0].to_vertex()),
+        attr(&tri[1].to_vertex()),
+        attr(&tri[2].to_vertex()),
+    ];
+    let codes = a.each_ref().map(|a| outcode(a, vp.guard));
+    if codes[0] & codes[1] & codes[2] != 0 {
+        return true; // wholly outside one plane: nothing to draw
+    }
+    if codes[0] | codes[1] | codes[2] != 0 {
+        return false; // it would be clipped
+    }
+    let t = a.each_ref().map(|a| project_attr(a, vp));
+    if keeps(&t, cull) {
+        emit(&t);
+    }
+    true
+}
+
 /// Perspective divide and viewport mapping of one clip-space vertex (`w` raised to
 /// [`W_MIN_BITS`]).
 fn project_attr<const N: usize>(a: &Attr<N>, vp: &Viewport) -> ScreenVertex<N> {
@@ -355,6 +385,51 @@ mod tests {
                 assert!(s.w >= W_MIN_BITS && s.z >= 0 && s.z <= 65535 << 14);
             }
         }
+    }
+
+    /// Without the clipper: the same screen triangles for triangles in view, `false` and
+    /// nothing for those that cross a plane, `true` and nothing for those wholly outside.
+    #[test]
+    fn unclipped_projection_is_the_clippers_for_triangles_in_view() {
+        let vp = Viewport::new(0, 0, 320, 240).unwrap();
+        let mut rng = crate::test_rng::Rng(0xc11f_0ff5);
+        let mut coord = |span: f64| (rng.unit01() * 2.0 - 1.0) * span;
+        let (mut inside, mut crossing, mut outside) = (0, 0, 0);
+        for i in 0..4000 {
+            let span = [0.9, 1.5, 40.0][i % 3];
+            let mut c = [[0.0f32; 4]; 3];
+            for p in c.iter_mut() {
+                let w = 0.3 + coord(1.0).abs() * 4.0;
+                *p = [
+                    (coord(span) * w) as f32,
+                    (coord(span) * w) as f32,
+                    (coord(1.2) * w) as f32,
+                    if i % 7 == 0 { -w as f32 } else { w as f32 },
+                ];
+            }
+            let tri = c.map(|[x, y, z, w]| v(x, y, z, w));
+            for cull in [Cull::None, Cull::Back] {
+                let mut clipped = Vec::new();
+                clip_and_project(&tri, &vp, cull, false, &mut |t| clipped.push(*t));
+                let mut direct = Vec::new();
+                let handled = project_unclipped(&tri, &vp, cull, &mut |t| direct.push(*t));
+                if handled {
+                    assert_eq!(direct, clipped, "{tri:?}");
+                    if clipped.is_empty() {
+                        outside += 1;
+                    } else {
+                        inside += 1;
+                    }
+                } else {
+                    assert!(direct.is_empty());
+                    crossing += 1;
+                }
+            }
+        }
+        assert!(
+            inside > 500 && crossing > 500 && outside > 500,
+            "{inside} {crossing} {outside}"
+        );
     }
 
     #[test]

@@ -15,7 +15,9 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::*;
 use crate::color::TargetColor;
-use crate::geometry::{clip_and_project, ClipVertex, Cull, ScreenTriangle, Viewport};
+use crate::geometry::{
+    clip_and_project, project_unclipped, ClipVertex, Cull, ScreenTriangle, Viewport,
+};
 use crate::shading::builtin::Classic;
 use crate::shading::TexBinding;
 use crate::surface::RenderTarget;
@@ -277,6 +279,47 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     /// triangle to `emit` (for binning).
     pub fn project(&self, tri: &[ClipVertex; 3], emit: &mut impl FnMut(&ScreenTriangle)) {
         clip_and_project(tri, &self.viewport, self.mode.cull, self.affine(), emit);
+    }
+
+    /// [`project`](Self::project) for geometry that stays in view: projects and culls one
+    /// clip-space triangle as `project` does (the same screen triangle), but never clips.
+    /// Returns `false`, emitting nothing, for a triangle that crosses the near or far plane
+    /// or the guard band (`project` would have clipped it); count those to know the scene
+    /// left the view. A firmware that calls only this links no clipper: about 1.8 KB less
+    /// flash on Cortex-M4F (`cargo xtask size`, `size_affine_unclipped`).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use fixel::geometry::{ClipVertex, Cull, Viewport};
+    /// use fixel::math::Fx;
+    /// use fixel::pipeline::*;
+    /// use fixel::texture::{Nearest, Repeat, Texture};
+    /// use fixel::Error;
+    /// static TEXELS: [Rgb565; 16] = [Rgb565::new(31, 0, 0); 16];
+    /// let tex = Texture::new(&TEXELS, 4, 4)?;
+    /// let vp = Viewport::new(0, 0, 320, 240)?;
+    /// type Tiny = Pipeline<Affine, Nearest, Repeat, Repeat, Replace, NoDepth>;
+    /// let draw = Draw::<Rgb565>::new::<Tiny>(Some(tex), vp, Cull::None)?;
+    /// let at = |x: f32, y: f32, w: f32| {
+    ///     let p = [x, y, 0.0, w].map(Fx::from_num);
+    ///     ClipVertex::new(p, [Fx::ZERO, Fx::ZERO])
+    /// };
+    /// let mut screen = 0;
+    /// // In view: one screen triangle.
+    /// let near = [at(-0.5, -0.5, 1.0), at(0.5, -0.5, 1.0), at(0.0, 0.5, 1.0)];
+    /// assert!(draw.project_unclipped(&near, &mut |_| screen += 1));
+    /// // One corner behind the camera: it would need clipping, so it is refused.
+    /// let behind = [at(-0.5, -0.5, 1.0), at(0.5, -0.5, 1.0), at(0.0, 0.5, -1.0)];
+    /// assert!(!draw.project_unclipped(&behind, &mut |_| screen += 1));
+    /// assert_eq!(screen, 1);
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn project_unclipped(
+        &self,
+        tri: &[ClipVertex; 3],
+        emit: &mut impl FnMut(&ScreenTriangle),
+    ) -> bool {
+        project_unclipped(tri, &self.viewport, self.mode.cull, emit)
     }
 
     /// Affine draws interpolate clipped vertices' attributes as GL's `noperspective`.

@@ -189,9 +189,13 @@ fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, Strin
 }
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 10] = [
+const SIZES: [(&str, &str); 11] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
+    (
+        "size_affine_unclipped",
+        "the same, no clipper (Draw::project_unclipped: geometry stays in view)",
+    ),
     ("size_perspective", "+ perspective-correct"),
     ("size_bilinear", "+ bilinear"),
     ("size_lighting", "+ lighting"),

@@ -47,7 +47,10 @@ pub static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
 /// Draws the triangle with `draw` in bands (depth band only when `depth`), lit when `LIT`;
 /// returns (checksum, pixels). The light is a constant inside the geometry closure, as a
 /// firmware writes it: an unlit firmware passes `None` and links no lighting.
-fn frame<const LIT: bool>(draw: &Draw<'_, Rgb565>, depth: bool) -> Option<(u32, u32)> {
+fn frame<const LIT: bool, const CLIP: bool>(
+    draw: &Draw<'_, Rgb565>,
+    depth: bool,
+) -> Option<(u32, u32)> {
     let mut color = [Rgb565::new(0, 0, 0); BAND];
     let mut zbuf = [0u16; BAND];
     let mut bins = [Binned::default(); 4];
@@ -67,7 +70,12 @@ fn frame<const LIT: bool>(draw: &Draw<'_, Rgb565>, depth: bool) -> Option<(u32, 
             |sink| {
                 let light = if LIT { Some(&sun) } else { None };
                 mesh_triangles(&mesh, &Mat4::IDENTITY, &camera, light, |t| {
-                    draw.project(t, &mut |s| sink.push(0, s))
+                    if CLIP {
+                        draw.project(t, &mut |s| sink.push(0, s));
+                    } else {
+                        // The triangle stays in view: nothing is ever refused here.
+                        draw.project_unclipped(t, &mut |s| sink.push(0, s));
+                    }
                 })
             },
             |band| {
@@ -95,13 +103,29 @@ pub fn typed<M, const LIT: bool, const DEPTH: bool>() -> bool
 where
     M: Stages + 'static,
 {
+    typed_clip::<M, LIT, DEPTH, true>()
+}
+
+/// [`typed`] for geometry that stays in view: triangles through
+/// `Draw::project_unclipped`, so no clipper is linked.
+pub fn typed_unclipped<M, const LIT: bool, const DEPTH: bool>() -> bool
+where
+    M: Stages + 'static,
+{
+    typed_clip::<M, LIT, DEPTH, false>()
+}
+
+fn typed_clip<M, const LIT: bool, const DEPTH: bool, const CLIP: bool>() -> bool
+where
+    M: Stages + 'static,
+{
     let Ok(vp) = Viewport::new(0, 0, W, H) else {
         return false;
     };
     let Ok(draw) = Draw::new::<M>(Some(core::hint::black_box(data::T8)), vp, Cull::Back) else {
         return false;
     };
-    print(frame::<LIT>(&draw, DEPTH))
+    print(frame::<LIT, CLIP>(&draw, DEPTH))
 }
 
 /// One draw whose mode is chosen at run time: every span loop is linked ("everything"),
@@ -115,9 +139,9 @@ pub fn dynamic(mode: DrawMode, lit: bool) -> bool {
         return false;
     };
     print(if core::hint::black_box(lit) {
-        frame::<true>(&draw, true)
+        frame::<true, true>(&draw, true)
     } else {
-        frame::<false>(&draw, true)
+        frame::<false, true>(&draw, true)
     })
 }
 
