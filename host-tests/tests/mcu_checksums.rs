@@ -89,6 +89,17 @@ fn print_whole(scene: &str, r: &FrameResult, w: &FrameResult) {
     print(&format!("whole_{scene}"), w);
 }
 
+/// The sphere's frame 0 drawn by the whole-frame firmware's path in mode `M`.
+fn whole_sphere<M: fixel::pipeline::Stages + 'static>(
+    buf: &mut Whole,
+    tex: Texture<'_>,
+    mesh: &fixel::scene::Mesh<'_>,
+) -> FrameResult {
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    scenes::sphere_as::<M, 0, 0, 0>(WholeTarget::Whole(buf), tex, mesh, 0, &mut nop1, &mut nop2)
+        .unwrap()
+}
+
 #[test]
 fn mcu_frames() {
     let mut buf = Box::new(SphereBuffers::with_storage());
@@ -136,15 +147,7 @@ fn mcu_frames() {
     .unwrap();
     print("sphere", &r);
     assert!(r.stats.reprojected && !r.stats.rewalked, "{:?}", r.stats);
-    let wr = scenes::sphere(
-        WholeTarget::Whole(&mut whole_buf),
-        tex,
-        &mesh,
-        0,
-        &mut nop1,
-        &mut nop2,
-    )
-    .unwrap();
+    let wr = whole_sphere::<scenes::LitSphere>(&mut whole_buf, tex, &mesh);
     print_whole("sphere", &r, &wr);
     let w = whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true);
     assert_eq!(
@@ -153,15 +156,7 @@ fn mcu_frames() {
         "sphere: bands differ from the whole frame"
     );
     // The same frame in the adaptive projection (whole frame only).
-    let wa = scenes::sphere_as::<scenes::LitSphereAdaptive, 0, 0, 0>(
-        WholeTarget::Whole(&mut whole_buf),
-        tex,
-        &mesh,
-        0,
-        &mut nop1,
-        &mut nop2,
-    )
-    .unwrap();
+    let wa = whole_sphere::<scenes::LitSphereAdaptive>(&mut whole_buf, tex, &mesh);
     let w = whole::<scenes::LitSphereAdaptive>(tex, &mesh, &demo::sphere_model(0), 20, true);
     assert_eq!(
         w,

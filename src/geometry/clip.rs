@@ -64,6 +64,22 @@ fn outcode<const N: usize>(a: &Attr<N>, guard: (i64, i64)) -> u8 {
     c
 }
 
+/// A triangle's vertices as integers, and the planes each violates (shared by the clipper
+/// and [`project_unclipped`], so both classify a triangle alike).
+#[inline(always)]
+fn attrs_and_codes<const N: usize>(
+    tri: &[Vertex<N>; 3],
+    guard: (i64, i64),
+) -> ([Attr<N>; 3], [u8; 3]) {
+    let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
+    let codes = [
+        outcode(&a[0], guard),
+        outcode(&a[1], guard),
+        outcode(&a[2], guard),
+    ];
+    (a, codes)
+}
+
 /// `a + (b - a) t` for Q30 `t` in `[0, 1]`, rounded; exact in `i64` for any `i32` ends.
 #[inline]
 fn lerp_q30(a: i32, b: i32, t: i64) -> i32 {
@@ -147,12 +163,7 @@ pub fn clip_and_project_varyings<const N: usize>(
     emit: &mut impl FnMut(&ScreenTriangle<N>),
 ) {
     let guard = vp.guard;
-    let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
-    let codes = [
-        outcode(&a[0], guard),
-        outcode(&a[1], guard),
-        outcode(&a[2], guard),
-    ];
+    let (a, codes) = attrs_and_codes(tri, guard);
     if codes[0] & codes[1] & codes[2] != 0 {
         return; // wholly outside one plane
     }
@@ -229,12 +240,8 @@ pub fn project_unclipped(
     cull: Cull,
     emit: &mut impl FnMut(&ScreenTriangle<CLASSIC_VARYINGS>),
 ) -> bool {
-    let a = [
-        attr(&tri[0].to_vertex()),
-        attr(&tri[1].to_vertex()),
-        attr(&tri[2].to_vertex()),
-    ];
-    let codes = a.each_ref().map(|a| outcode(a, vp.guard));
+    let tri = [tri[0].to_vertex(), tri[1].to_vertex(), tri[2].to_vertex()];
+    let (a, codes) = attrs_and_codes(&tri, vp.guard);
     if codes[0] & codes[1] & codes[2] != 0 {
         return true; // wholly outside one plane: nothing to draw
     }
