@@ -13,6 +13,7 @@
 
 pub(crate) mod clip;
 pub(crate) mod homography;
+mod project_recip;
 pub(crate) mod vertex;
 pub(crate) mod viewport;
 

@@ -8,7 +8,9 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
+use super::project_recip::depth_recip;
 use crate::math::div::HW_DIVIDE;
+use crate::math::recip32::Recip32;
 use crate::math::{div_floor_i64, div_round_i64};
 use crate::raster::{
     Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
@@ -98,9 +100,33 @@ impl Viewport {
     /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)`, their
     /// attribute offsets (see [`project_xy`](Self::project_xy)) and a depth in
     /// `0..=65535 << 14`.
+    ///
+    /// Without a divide instruction, through one reciprocal of `w` (the same integers, see
+    /// `project_recip`).
     pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
-        let (sx, sy, sub) = self.project_xy(x, y, w);
+        if !HW_DIVIDE {
+            if let Some(p) = self.project_recip(x, y, z, w) {
+                return p;
+            }
+        }
+        self.project_div(x, y, z, w)
+    }
+
+    /// [`project`](Self::project) by division.
+    pub(crate) fn project_div(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
+        let (sx, sy, sub) = self.project_xy_div(x, y, w);
         (sx, sy, sub, depth(z, i64::from(w.max(1))))
+    }
+
+    /// Half the viewport's width and height and its centre, in 1/16 pixel.
+    #[inline(always)]
+    pub(crate) fn scales(&self) -> (i64, i64, i64, i64) {
+        let one = i64::from(SUBPIXEL_ONE);
+        let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
+        let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
+        let cx = i64::from(self.rect.x0) * one + hw;
+        let cy = i64::from(self.rect.y0) * one + hh;
+        (hw, hh, cx, cy)
     }
 
     /// The screen `(x, y)` part of [`project`](Self::project): the window position rounded
@@ -114,17 +140,22 @@ impl Viewport {
     /// small division (32-bit while `w < 2^23`, that is `w < 128.0`). Both are the exact
     /// roundings of the exact position.
     pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
+        if !HW_DIVIDE {
+            if let Some(p) =
+                Recip32::new(w.max(1) as u32).and_then(|r| self.project_xy_recip(x, y, &r))
+            {
+                return p;
+            }
+        }
+        self.project_xy_div(x, y, w)
+    }
+
+    /// [`project_xy`](Self::project_xy) by division.
+    fn project_xy_div(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));
-        let one = i64::from(SUBPIXEL_ONE);
-        let hw = i64::from(self.rect.x1 - self.rect.x0) * one / 2;
-        let hh = i64::from(self.rect.y1 - self.rect.y0) * one / 2;
-        let cx = i64::from(self.rect.x0) * one + hw;
-        let cy = i64::from(self.rect.y0) * one + hh;
-        // A constant, not a captured local: the closure below may be out of line, and its
-        // clamp must still see `-lim <= lim` (else it links a panic with i64 formatting).
-        const LIM: i64 = GUARD_BAND_PX as i64 * SUBPIXEL_ONE as i64;
-        const R: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
-        const HALF: i64 = 1 << (R - 1);
+        let (hw, hh, cx, cy) = self.scales();
+        const R: u32 = OFFSET_BITS;
+        const HALF: i64 = HALF_OFFSET;
         // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
         // of the window coordinate: rounding them away from the viewport centre instead
         // would snap a mesh moved by whole pixels to a different shape.
@@ -156,15 +187,32 @@ impl Viewport {
     /// The depth part of [`project`](Self::project) alone (the walker's binning pass
     /// needs only rows and winding, and completes the depth when a band needs it).
     pub(crate) fn project_z(&self, z: i32, w: i32) -> i32 {
+        if !HW_DIVIDE {
+            if let Some(d) = Recip32::new(w.max(1) as u32).and_then(|r| depth_recip(z, &r)) {
+                return d;
+            }
+        }
         depth(z, i64::from(w.max(1)))
     }
 }
+
+/// The guard band's half-extent in 1/16 pixel: window positions beyond it are clamped
+/// (only vertices the clipper will cut). A constant, not a captured local: the closure
+/// that uses it may be out of line, and its clamp must still see `-LIM <= LIM` (else it
+/// links a panic with i64 formatting).
+pub(crate) const LIM: i64 = GUARD_BAND_PX as i64 * SUBPIXEL_ONE as i64;
+/// Bits of the attribute offset below the 1/16-pixel position.
+pub(crate) const OFFSET_BITS: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
+/// The offset's bound, half a 1/16 pixel in 1/4096-pixel units.
+pub(crate) const HALF_OFFSET: i64 = 1 << (OFFSET_BITS - 1);
+/// `65535 * 2^13`: depth `(z/w + 1)/2 * 65535` with 14 fraction bits is `k (z/w + 1)`.
+pub(crate) const DEPTH_K: i64 = 65535i64 << 13;
 
 /// Window depth of clip `z` at `w > 0`: `(z/w + 1)/2 * 65535` with 14 fraction bits,
 /// `65535 * 2^13 * (z/w + 1)`, rounded and clamped to `0..=65535 << 14`.
 #[inline]
 fn depth(z: i32, w: i64) -> i32 {
-    let k = 65535i64 << 13;
+    let k = DEPTH_K;
     (div_round(mul_i32_i64(z, k), w) + k).clamp(0, 65535 << 14) as i32
 }
 
@@ -194,7 +242,7 @@ fn fraction_offset<const R: u32>(r: u32, w: u32) -> i64 {
 /// 16-bit-split product instead of an `__aeabi_lmul` call; elsewhere, and for a larger `b`,
 /// the `i64` product. Exact either way.
 #[inline(always)]
-fn mul_i32_i64(a: i32, b: i64) -> i64 {
+pub(crate) fn mul_i32_i64(a: i32, b: i64) -> i64 {
     if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
         if let Ok(b) = i32::try_from(b) {
             return crate::math::div::mul_wide_signed(a, b);

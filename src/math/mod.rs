@@ -36,6 +36,7 @@ mod acc;
 pub(crate) mod div;
 pub(crate) mod mat;
 pub(crate) mod recip;
+pub(crate) mod recip32;
 pub(crate) mod trig;
 pub(crate) mod unit;
 pub(crate) mod vec;

@@ -171,19 +171,34 @@ mod split {
         (u64::from(hi) << 32) | u64::from(lo)
     }
 
+    const fn clz8_table() -> [u8; 256] {
+        let mut t = [8u8; 256];
+        let mut i = 1;
+        while i < 256 {
+            t[i] = (i as u8).leading_zeros() as u8;
+            i += 1;
+        }
+        t
+    }
+
+    /// Leading zeros of a byte.
+    static CLZ8: [u8; 256] = clz8_table();
+
+    /// Two halving steps, then the top byte's count from a 256-byte table (three steps
+    /// fewer than the plain binary search; the set-up takes about five per triangle).
     #[inline(always)]
     pub fn clz32(a: u32) -> u32 {
         if a == 0 {
             return 32;
         }
         let (mut a, mut n) = (a, 0);
-        for s in [16u32, 8, 4, 2, 1] {
+        for s in [16u32, 8] {
             if a >> (32 - s) == 0 {
                 a <<= s;
                 n += s;
             }
         }
-        n
+        n + u32::from(CLZ8[(a >> 24) as usize])
     }
 }
 
@@ -289,5 +304,15 @@ mod tests {
         }
         assert_eq!(clz64(0), 64);
         assert_eq!(split::clz32(0), 32);
+        for b in 0..32 {
+            for v in [
+                1u32 << b,
+                (1 << b) | ((1 << b) - 1),
+                (1 << b) | 1,
+                (1 << b) | ((1 << b) / 2),
+            ] {
+                assert_eq!(split::clz32(v), v.leading_zeros(), "{v:#x}");
+            }
+        }
     }
 }

@@ -16,7 +16,9 @@
 use super::recip::{Q_FLOOR, Q_ONE};
 use super::stages::ProjKind;
 use crate::math::div::mul_wide_signed;
+use crate::math::div::HW_DIVIDE;
 use crate::math::div_u64;
+use crate::math::recip32::Recip32;
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{Plane, Rect, ATTR_SUBPIXEL_BITS};
 use crate::shading::Varyings;
@@ -155,9 +157,14 @@ pub(crate) fn setup<V: Varyings>(
                 // The nearest vertex: exactly 1.0, no division.
                 return i64::from(Q_ONE);
             }
-            // Both positive: the exact 32-bit-path division of `math::div`.
-            (div_u64((w_min << 30) as u64, w as u64) as i64)
-                .clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
+            // Both positive: the exact 32-bit-path division of `math::div`, or without a
+            // divide instruction the same floor from a reciprocal of `w` (w_min < w).
+            let q = match (HW_DIVIDE, w < 1 << 28) {
+                (false, true) => Recip32::new(w as u32)
+                    .map_or(0, |r| i64::from(r.fraction_of(w_min as u32, 1 << 30, 0))),
+                _ => div_u64((w_min << 30) as u64, w as u64) as i64,
+            };
+            q.clamp(i64::from(Q_FLOOR), i64::from(Q_ONE))
         })
     } else {
         [i64::from(Q_ONE); 3]

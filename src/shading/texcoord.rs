@@ -255,8 +255,10 @@ fn periodic(w: Wrap) -> bool {
 /// below 2^30 (so no clamp or shift applies): the same integers in `i32`; `None` otherwise.
 #[inline(always)]
 fn texel_coords_small(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> Option<[i32; 3]> {
-    let lim = 1i32 << 29u32.saturating_sub(log2_size);
-    if uv.iter().any(|&x| x >= lim || x <= -lim) {
+    // Every |x| below the power of two `lim` exactly when their or is (one test instead of
+    // two compares per value; `i32::MIN`'s magnitude is 2^31).
+    let lim = 1u32 << 29u32.saturating_sub(log2_size);
+    if uv.iter().fold(0, |m, x| m | x.unsigned_abs()) >= lim {
         return None;
     }
     // |x| < 2^(29 - log2_size): the shifted values are below 2^29 in magnitude.
@@ -271,7 +273,7 @@ fn texel_coords_small(uv: [i32; 3], log2_size: u32, wrap: Wrap) -> Option<[i32; 
         let base = (min >> period_log2) << period_log2;
         t = t.map(|x| x - base);
     }
-    t.iter().all(|x| x.unsigned_abs() < 1 << 30).then_some(t)
+    (t.iter().fold(0, |m, x| m | x.unsigned_abs()) < 1 << 30).then_some(t)
 }
 
 /// Texel coordinates (I16F16 bits) of the three vertices on one axis, rebased.
