@@ -99,23 +99,18 @@ impl Viewport {
 
     /// Maps a clip-space point (I16F16 bits, `w` > 0) to sub-pixel screen `(x, y)`, their
     /// attribute offsets (see [`project_xy`](Self::project_xy)) and a depth in
-    /// `0..=65535 << 14`.
-    ///
-    /// Without a divide instruction, through one reciprocal of `w` (the same integers, see
-    /// `project_recip`).
+    /// `0..=65535 << 14`: the exact roundings of the exact values, by division where the
+    /// core has a divide instruction, through one reciprocal of `w` where it has not (see
+    /// `project_recip`; the same integers).
     pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
-        if !HW_DIVIDE {
-            if let Some(p) = self.project_recip(x, y, z, w) {
-                return p;
-            }
+        if HW_DIVIDE {
+            let (sx, sy, sub) = self.project_xy_div(x, y, w);
+            (sx, sy, sub, depth_div(z, w))
+        } else {
+            let r = Recip32::at_least_one(w);
+            let (sx, sy, sub) = self.project_xy_recip(x, y, &r);
+            (sx, sy, sub, depth_recip(z, &r))
         }
-        self.project_div(x, y, z, w)
-    }
-
-    /// [`project`](Self::project) by division.
-    pub(crate) fn project_div(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
-        let (sx, sy, sub) = self.project_xy_div(x, y, w);
-        (sx, sy, sub, depth(z, i64::from(w.max(1))))
     }
 
     /// Half the viewport's width and height and its centre, in 1/16 pixel.
@@ -134,50 +129,39 @@ impl Viewport {
     /// rounded to `2^-ATTR_SUBPIXEL_BITS` pixel from it, in that unit (at most half a
     /// sub-pixel either way).
     ///
-    /// One division per axis gives the 1/16-pixel position `s = floor(n / w + 1/2)` and its
+    /// One quotient per axis gives the 1/16-pixel position `s = floor(n / w + 1/2)` and its
     /// remainder `r` (`n / w = s + (r - w) / 2w`); the offset is
     /// `floor(2^R (r - w) / 2w + 1/2)`, `R = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS`, a second,
-    /// small division (32-bit while `w < 2^23`, that is `w < 128.0`). Both are the exact
-    /// roundings of the exact position.
+    /// small quotient. Both are the exact roundings of the exact position: divisions where
+    /// the core has a divide instruction, a reciprocal of `w` where it has not.
     pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
-        if !HW_DIVIDE {
-            if let Some(p) =
-                Recip32::new(w.max(1) as u32).and_then(|r| self.project_xy_recip(x, y, &r))
-            {
-                return p;
-            }
+        if HW_DIVIDE {
+            self.project_xy_div(x, y, w)
+        } else {
+            self.project_xy_recip(x, y, &Recip32::at_least_one(w))
         }
-        self.project_xy_div(x, y, w)
     }
 
-    /// [`project_xy`](Self::project_xy) by division.
-    fn project_xy_div(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
+    /// [`project_xy`](Self::project_xy) by division (two per axis; one instruction each
+    /// on cores with a divide instruction).
+    pub(crate) fn project_xy_div(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));
         let (hw, hh, cx, cy) = self.scales();
-        const R: u32 = OFFSET_BITS;
-        const HALF: i64 = HALF_OFFSET;
         // Ties round towards +x and +y (down) everywhere on the screen, as `floor(v + 1/2)`
         // of the window coordinate: rounding them away from the viewport centre instead
         // would snap a mesh moved by whole pixels to a different shape.
         let axis = |n: i64, c: i64| -> (i32, i16) {
             let num = 2 * n + w;
             let s = div_floor_i64(num, 2 * w);
-            // 0 <= r < 2w < 2^32: exact modulo 2^32, so one 32-bit product (an
-            // `__aeabi_lmul` call on Cortex-M0+ as an `i64` product).
+            // 0 <= r < 2w < 2^32: exact modulo 2^32, so one 32-bit product.
             let r = i64::from((num as u32).wrapping_sub((s as u32).wrapping_mul(2 * w as u32)));
-            let off = if HW_DIVIDE || w >= 1 << 30 {
-                div_floor_i64(((r - w) << R) + w, 2 * w)
-            } else {
-                // No divide instruction: the same quotient bit by bit (R + 1 steps of a
-                // compare and a subtract), see `fraction_offset`.
-                fraction_offset::<R>(r as u32, w as u32)
-            };
+            let off = div_floor_i64(((r - w) << OFFSET_BITS) + w, 2 * w);
             let s = c + s;
             if s.abs() > LIM {
                 // Clamped into the guard band (only vertices the clipper will cut).
                 return (s.clamp(-LIM, LIM) as i32, 0);
             }
-            (s as i32, off.clamp(-HALF, HALF) as i16)
+            (s as i32, off.clamp(-HALF_OFFSET, HALF_OFFSET) as i16)
         };
         let (sx, ox) = axis(mul_i32_i64(x, hw), cx);
         let (sy, oy) = axis(-mul_i32_i64(y, hh), cy);
@@ -187,13 +171,21 @@ impl Viewport {
     /// The depth part of [`project`](Self::project) alone (the walker's binning pass
     /// needs only rows and winding, and completes the depth when a band needs it).
     pub(crate) fn project_z(&self, z: i32, w: i32) -> i32 {
-        if !HW_DIVIDE {
-            if let Some(d) = Recip32::new(w.max(1) as u32).and_then(|r| depth_recip(z, &r)) {
-                return d;
-            }
+        if HW_DIVIDE {
+            depth_div(z, w)
+        } else {
+            depth_recip(z, &Recip32::at_least_one(w))
         }
-        depth(z, i64::from(w.max(1)))
     }
+}
+
+/// Window depth of clip `z` at `w` (raised to 1) by division: `(z/w + 1)/2 * 65535` with
+/// 14 fraction bits, `k (z/w + 1)` with `k = 65535 * 2^13`, `z k / w` rounded to nearest
+/// (ties away from zero), clamped to `0..=65535 << 14`.
+#[inline]
+pub(crate) fn depth_div(z: i32, w: i32) -> i32 {
+    let d = div_round_i64(mul_i32_i64(z, DEPTH_K), i64::from(w.max(1)));
+    (d + DEPTH_K).clamp(0, 65535 << 14) as i32
 }
 
 /// The guard band's half-extent in 1/16 pixel: window positions beyond it are clamped
@@ -208,36 +200,6 @@ pub(crate) const HALF_OFFSET: i64 = 1 << (OFFSET_BITS - 1);
 /// `65535 * 2^13`: depth `(z/w + 1)/2 * 65535` with 14 fraction bits is `k (z/w + 1)`.
 pub(crate) const DEPTH_K: i64 = 65535i64 << 13;
 
-/// Window depth of clip `z` at `w > 0`: `(z/w + 1)/2 * 65535` with 14 fraction bits,
-/// `65535 * 2^13 * (z/w + 1)`, rounded and clamped to `0..=65535 << 14`.
-#[inline]
-fn depth(z: i32, w: i64) -> i32 {
-    let k = DEPTH_K;
-    (div_round(mul_i32_i64(z, k), w) + k).clamp(0, 65535 << 14) as i32
-}
-
-/// `floor((2^R (r - w) + w) / 2w)` for `0 <= r < 2w` and `0 < w < 2^30`, without a
-/// division: it equals `floor((2^R r + w) / 2w) - 2^(R-1)`, and `floor(2^R r / 2w)` is R
-/// steps of restoring long division on `r < 2w` (each remainder stays below `2w < 2^31`, so
-/// doubling it fits `u32`); adding `w < 2w` to the final remainder carries at most one.
-#[inline(always)]
-fn fraction_offset<const R: u32>(r: u32, w: u32) -> i64 {
-    let d = 2 * w;
-    let (mut rem, mut t) = (r, 0u32);
-    for _ in 0..R {
-        rem <<= 1;
-        t <<= 1;
-        if rem >= d {
-            rem -= d;
-            t |= 1;
-        }
-    }
-    if rem + w >= d {
-        t += 1;
-    }
-    i64::from(t) - (1 << (R - 1))
-}
-
 /// `a b` for a `b` that is normally within `i32` (viewport scales): on ARMv6-M a
 /// 16-bit-split product instead of an `__aeabi_lmul` call; elsewhere, and for a larger `b`,
 /// the `i64` product. Exact either way.
@@ -249,12 +211,6 @@ pub(crate) fn mul_i32_i64(a: i32, b: i64) -> i64 {
         }
     }
     i64::from(a) * b
-}
-
-/// `n / d` rounded to nearest, ties away from zero; `d > 0`.
-#[inline]
-pub(crate) fn div_round(n: i64, d: i64) -> i64 {
-    div_round_i64(n, d)
 }
 
 #[cfg(test)]
@@ -346,33 +302,6 @@ mod tests {
             let (gx, gy) = vp.guard;
             assert!((gx + 1) * i64::from(w) / 2 <= i64::from(GUARD_BAND_PX) + 1);
             assert!((gy + 1) * i64::from(h) / 2 <= i64::from(GUARD_BAND_PX) + 1);
-        }
-    }
-
-    #[test]
-    fn fraction_offset_matches_the_division() {
-        const R: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
-        for i in 0..1_000_000u64 {
-            let w = match i % 3 {
-                0 => next() % 1000 + 1,
-                1 => next() % (1 << 24) + 1,
-                _ => next() % ((1 << 30) - 1) + 1,
-            } as i64;
-            let r = (next() % (2 * w as u64)) as i64;
-            let r = [r, 0, 2 * w - 1, w, w - 1][(i % 5) as usize];
-            let want = div_floor_i64(((r - w) << R) + w, 2 * w);
-            assert_eq!(
-                fraction_offset::<R>(r as u32, w as u32),
-                want,
-                "r {r} w {w}"
-            );
         }
     }
 }

@@ -1,12 +1,13 @@
-//! Several exact quotients by one 32-bit divisor through one reciprocal, for cores without a
-//! divide instruction (Cortex-M0+), where a 32-bit division is a library call of about 120
-//! instructions and a 64-by-32-bit one about 220 (both measured on the projection of the
-//! sphere's vertices, which divides three numerators by the same `w`).
+//! Several exact quotients by one 32-bit divisor through one reciprocal: the projection
+//! divides three numerators by the same `w`, the set-up two by each vertex's `w`. On
+//! Cortex-M0+, which has no divide instruction, a 32-bit division is a library call of
+//! about 120 instructions and a 64-by-32-bit one about 220; elsewhere a multiply and a
+//! correction are still shorter than the divisions' range and sign handling.
 //!
-//! [`Recip32::new`] normalizes the divisor `d` to `v = d 2^s` (`2^31 <= v < 2^32`) and
-//! takes `y ~ 2^63 / v` from the interpolated mantissa table and one Newton-Raphson step,
-//! as `div_64_32` does per call (on ARMv6-M from high words only, three 16-bit products
-//! each): `y` never exceeds `2^63 / v` and is within a relative 2^-28 of it. Each quotient
+//! [`RecipForm::at_least_one`] normalizes the divisor `d` to `v = d 2^s` (`2^31 <= v < 2^32`) and
+//! takes `y ~ 2^63 / v` from a seed (the interpolated mantissa table on ARMv6-M, one 32-bit
+//! division by `v`'s top half elsewhere) and one Newton-Raphson step (on ARMv6-M from high
+//! words only, three 16-bit products each): `y` never exceeds `2^63 / v` and is within a relative 2^-28 of it. Each quotient
 //! is then an estimate from `y` that is at most the true quotient and a few units below
 //! it, stepped up by an exact remainder test. The results are the exact floors (tested against `/` on random
 //! and edge operands), so a caller's output does not depend on which core computed it.
@@ -68,17 +69,31 @@ impl<const SPLIT: bool> RecipForm<SPLIT> {
         Some(Self::normalized(d, d << s, s))
     }
 
-    /// [`Recip32::new`] for a divisor with its top bit set (`d >= 2^31`, no shift).
+    /// [`RecipForm::at_least_one`] for a divisor with its top bit set (`d >= 2^31`, no shift).
     #[inline(always)]
     pub(crate) fn new_normalized(d: u32) -> Self {
         debug_assert!(d >> 31 == 1);
         Self::normalized(d, d, 0)
     }
 
+    /// The reciprocal of `w` raised to 1 (a clip `w`).
+    #[inline]
+    pub(crate) fn at_least_one(w: i32) -> Self {
+        let d = w.max(1) as u32;
+        let s = clz32(d);
+        Self::normalized(d, d << s, s)
+    }
+
     #[inline(always)]
     fn normalized(d: u32, v: u32, s: u32) -> Self {
-        // ~2^63 / v within 2^-16, below 2^32 (2^63 / v is 2^32 itself for v = 2^31).
-        let y = recip_mantissa(v).min((1 << 31) - 1) << 1;
+        // ~2^63 / v within 2^-15, below 2^32 (2^63 / v is 2^32 itself for v = 2^31): from
+        // the interpolated mantissa table without a divide instruction, else one 32-bit
+        // division by the top half of v (at most 2^-15 above 2^63 / v, no table linked).
+        let y = if SPLIT {
+            recip_mantissa(v).min((1 << 31) - 1) << 1
+        } else {
+            (u32::MAX / (v >> 16)) << 15
+        };
         // One Newton step, y (2 - v y / 2^63), with `2^64 - v y` truncated to its high
         // word, rounded down: from below or above the seed it lands at or below 2^63 / v
         // (y (2 - v y) <= 1 / v for any y, and rounding down only lowers it), within a
@@ -156,8 +171,9 @@ impl<const SPLIT: bool> RecipForm<SPLIT> {
     }
 
     /// `n / d` rounded towards zero, exactly, for `n < d 2^32` (the quotient fits `u32`);
-    /// `None` otherwise.
-    #[inline(always)]
+    /// `None` otherwise. Out of line: the projection's rare path for 64-bit numerators
+    /// (inlined at each of its call sites it cost about 1.5 KB of flash).
+    #[inline(never)]
     pub(crate) fn div_wide(&self, n: u64) -> Option<u32> {
         if (n >> 32) >= u64::from(self.d) {
             return None;

@@ -33,7 +33,7 @@
 //!   across the viewport.
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
-use crate::math::div::{div_64_32, mul_wide, mul_wide_signed, HW_DIVIDE};
+use crate::math::div::{mul_wide, mul_wide_signed};
 use crate::math::div_u64;
 use crate::math::recip32::Recip32;
 use crate::math::wide;
@@ -217,13 +217,8 @@ fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
     if an < 1 << 31 || !(1..=62).contains(&cs) {
         return ([0; 4], 0);
     }
-    let r = if HW_DIVIDE {
-        div_64_32(u64::MAX >> 1, an)
-    } else {
-        // No divide instruction: the same floor from a reciprocal without the general
-        // division's normalization (an is normalized already).
-        Recip32::new_normalized(an).recip63()
-    };
+    // floor((2^63 - 1) / an) from a reciprocal (an is normalized: no shift).
+    let r = Recip32::new_normalized(an).recip63();
     let neg = area2 < 0;
     let c = nums.map(|n| {
         let q = wide::shr(mul_wide(n.unsigned_abs(), r).wrapping_add(1 << bn), bn + 1) as i32;
