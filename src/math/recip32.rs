@@ -1,16 +1,17 @@
 //! Several exact quotients by one 32-bit divisor through one reciprocal: the projection
 //! divides three numerators by the same `w`, the set-up two by each vertex's `w`. On
 //! Cortex-M0+, which has no divide instruction, a 32-bit division is a library call of
-//! about 120 instructions and a 64-by-32-bit one about 220; elsewhere a multiply and a
-//! correction are still shorter than the divisions' range and sign handling.
+//! about 120 instructions and a 64-by-32-bit one about 220.
 //!
-//! [`RecipForm::at_least_one`] normalizes the divisor `d` to `v = d 2^s` (`2^31 <= v < 2^32`) and
-//! takes `y ~ 2^63 / v` from a seed (the interpolated mantissa table on ARMv6-M, one 32-bit
-//! division by `v`'s top half elsewhere) and one Newton-Raphson step (on ARMv6-M from high
-//! words only, three 16-bit products each): `y` never exceeds `2^63 / v` and is within a relative 2^-28 of it. Each quotient
-//! is then an estimate from `y` that is at most the true quotient and a few units below
-//! it, stepped up by an exact remainder test. The results are the exact floors (tested against `/` on random
-//! and edge operands), so a caller's output does not depend on which core computed it.
+//! [`RecipForm::at_least_one`] normalizes the divisor `d` to `v = d 2^s`
+//! (`2^31 <= v < 2^32`) and takes `y ~ 2^63 / v` from a seed (the interpolated mantissa
+//! table on ARMv6-M, one 32-bit division by `v`'s top half elsewhere) and one Newton-Raphson
+//! step (on ARMv6-M from high words only, three 16-bit products each): `y` never exceeds
+//! `2^63 / v` and is within a relative 2^-28 of it. Each quotient is then an estimate from
+//! `y` that is at most the true quotient and a few units below it, stepped up by an exact
+//! remainder test. The results are the exact floors (tested against `/` on random and edge
+//! operands, in both forms on every target), so a caller's output does not depend on which
+//! core computed it.
 
 use super::div::mul_wide;
 use super::recip::recip_mantissa;
