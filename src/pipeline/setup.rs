@@ -182,7 +182,15 @@ pub(crate) fn setup<V: Varyings>(
         let a = if perspective {
             // a within i32, q in 0..=2^30: a 32 x 32-bit product (no 64-bit library
             // multiply on Cortex-M0+).
-            [0, 1, 2].map(|i| (mul_wide_signed(a[i] as i32, q[i] as i32) >> 30) as i32)
+            // The nearest vertex's q is exactly 1.0: on Cortex-M0+ (a 16-bit-split
+            // product of ~35 instructions) its product is skipped.
+            [0, 1, 2].map(|i| {
+                if !HW_DIVIDE && q[i] == i64::from(Q_ONE) {
+                    a[i] as i32
+                } else {
+                    (mul_wide_signed(a[i] as i32, q[i] as i32) >> 30) as i32
+                }
+            })
         } else {
             a.map(|x| x as i32)
         };
