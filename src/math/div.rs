@@ -105,42 +105,20 @@ pub(crate) fn div_64_32(n: u64, d: u32) -> u32 {
     }
 }
 
-/// [`div_64_32`] without a division: the normalized divisor `v` (`2^31 <= v < 2^32`), a
-/// reciprocal `y <= 2^63 / v` from the interpolated mantissa table
-/// ([`recip_mantissa`](super::recip), relative error below 2^-16) and one Newton-Raphson
-/// step in 32 x 32-bit products (the step never overshoots `1/v`, whichever side the seed
-/// is on: relative error ~2^-30), the quotient estimate `n y / 2^63 <= n / d`, then the
-/// exact remainder correction (a few steps up). Same result as the digit form (tested).
-/// One step from the interpolated seed instead of two from an 8-bit one: about 30
-/// instructions less per division on Cortex-M0+.
+/// [`div_64_32`] without a division: the 16-bit-product form of
+/// [`RecipForm`](super::recip32::RecipForm) (a reciprocal from the interpolated mantissa
+/// table and one Newton step, the quotient estimate, then the exact remainder correction).
+/// Same result as the digit form (tested); `d >= 2^16` and `n < d 2^32` here, so the
+/// reciprocal's quotient always exists (0 otherwise, never a panic).
 #[cfg_attr(
     not(all(target_arch = "arm", not(target_has_atomic = "32"))),
     allow(dead_code)
 )]
 #[inline]
 fn div_64_32_newton(n: u64, d: u32) -> u32 {
-    use super::recip::recip_mantissa;
-    use super::wide::{clz32, shl};
-    let s = clz32(d);
-    let v = d << s;
-    // n < d 2^32, so n << s < v 2^32 <= 2^64: no bits are lost.
-    let n = shl(n as i64, s) as u64;
-    // ~2^63 / v, within 2^-16 of it, below 2^32 (2^63 / v is 2^32 itself for v = 2^31):
-    // v y < 2^64, so the wrapping negation below is 2^64 - v y.
-    let mut y = recip_mantissa(v).min((1 << 31) - 1) << 1;
-    // v y ~ 2^63 (both < 2^32); 2^64 - v y ~ 2^63 (2 - v y / 2^63).
-    let t = mul_wide(v, y).wrapping_neg();
-    y = (mul_wide(y, (t >> 32) as u32) >> 31) as u32;
-    let (u1, u0) = ((n >> 32) as u32, n as u32);
-    // u1 < v and y <= 2^63 / v: u1 y < 2^63, no overflow.
-    let mut q = ((mul_wide(u1, y) + (mul_wide(u0, y) >> 32)) >> 31) as u32;
-    let mut r = n.wrapping_sub(mul_wide(q, v));
-    // q <= n / v: r is the true non-negative remainder of q; step up while it holds v.
-    while r >= u64::from(v) {
-        q = q.wrapping_add(1);
-        r -= u64::from(v);
-    }
-    q
+    super::recip32::RecipForm::<true>::new(d)
+        .and_then(|r| r.div_wide(n))
+        .unwrap_or(0)
 }
 
 /// The long-division form of [`div_64_32`].

@@ -63,11 +63,7 @@ impl<const SPLIT: bool> RecipForm<SPLIT> {
     /// `None` for `d == 0`.
     #[inline]
     pub(crate) fn new(d: u32) -> Option<Self> {
-        if d == 0 {
-            return None;
-        }
-        let s = clz32(d);
-        Some(Self::normalized(d, d << s, s))
+        (d != 0).then(|| Self::nonzero(d))
     }
 
     /// [`RecipForm::at_least_one`] for a divisor with its top bit set (`d >= 2^31`, no shift).
@@ -80,7 +76,12 @@ impl<const SPLIT: bool> RecipForm<SPLIT> {
     /// The reciprocal of `w` raised to 1 (a clip `w`).
     #[inline]
     pub(crate) fn at_least_one(w: i32) -> Self {
-        let d = w.max(1) as u32;
+        Self::nonzero(w.max(1) as u32)
+    }
+
+    /// `d >= 1`, normalized by its leading zeros.
+    #[inline(always)]
+    fn nonzero(d: u32) -> Self {
         let s = clz32(d);
         Self::normalized(d, d << s, s)
     }
