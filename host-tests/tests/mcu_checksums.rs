@@ -164,6 +164,25 @@ fn mcu_frames() {
         "sphere, adaptive: the whole-frame walker differs from the plain draw"
     );
     print("whole_sphere_adaptive", &wa);
+    // The same from the texture's bilinear footprints: the same pixels.
+    let f256 = footprints(&tex);
+    let fp = MipTexture::single(tex).with_footprints(&f256).unwrap();
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let wf = scenes::sphere_mip_as::<scenes::LitSphereFootprint, 0, 0, 0>(
+        WholeTarget::Whole(&mut whole_buf),
+        fp,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    assert_eq!(
+        (wf.checksum, wf.stats.pixels),
+        (wa.checksum, wa.stats.pixels),
+        "sphere: footprints differ from plain bilinear"
+    );
+    print("whole_sphere_footprint", &wf);
 
     // Anti-aliasing (rotated grid through 4-row bands) and transparency.
     let t128b = texture(128, 128);

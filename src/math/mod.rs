@@ -32,7 +32,7 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-mod acc;
+pub(crate) mod acc;
 pub(crate) mod div;
 pub(crate) mod mat;
 pub(crate) mod recip;

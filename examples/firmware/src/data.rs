@@ -65,6 +65,14 @@ texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
 footprints!(T64_FOOTPRINTS, T64_FP, T64_TEXELS, 64, 64, "t64x64.bin");
 footprints!(
+    T256X128_FOOTPRINTS,
+    T256X128_FP,
+    T256X128_TEXELS,
+    256,
+    128,
+    "t256x128.bin"
+);
+footprints!(
     T128_FOOTPRINTS,
     T128_FP,
     T128_TEXELS,

@@ -343,11 +343,41 @@ pub const FLOOR_MIP_MODES: [Mode; 30] = matrix(
     &[Filt::NearestMip, Filt::Trilinear, Filt::TrilinearSpan],
 );
 
-/// The sphere's modes on microcontrollers: its 2208 triangles overflow the bins, so the
-/// geometry runs once per band and dominates the cost (~16,000 instructions per pixel on
-/// the M4F against ~300 for the span loop); the projection and filter barely show, and
-/// each QEMU run is ~1.3 G instructions on the M0+. Three modes bracket it.
-pub const SPHERE_MCU_MODES: [Mode; 3] = [
+/// Modes of the sphere: [`LIT_SCENE_MODES`] and the lit modes reading the texture's
+/// bilinear footprints (`BilinearFootprint`: `Bilinear`'s pixels, one 64-bit load per
+/// sample; 8 bytes per texel, 256 KiB for the sphere's 256 x 128 texture).
+pub const SPHERE_MODES: [Mode; 50] = {
+    let lit_footprint: [Mode; 10] = matrix(&[true], &[Filt::BilinearFootprint]);
+    let mut out = [LIT_SCENE_MODES[0]; 50];
+    let mut k = 0;
+    while k < 50 {
+        out[k] = if k < 40 {
+            LIT_SCENE_MODES[k]
+        } else {
+            lit_footprint[k - 40]
+        };
+        k += 1;
+    }
+    out
+};
+
+/// The sphere's modes on microcontrollers (firmware `report_sphere`, 8-row bands; its 2208
+/// triangles overflow the bins, so each band re-projects the triangles it meets): unlit
+/// nearest affine (the cheapest), lit bilinear adaptive and exact, and the same two
+/// reading footprints ([`Mode::draw`] needs `data::T256X128_FP` for those).
+pub const SPHERE_MCU_MODES: [Mode; 5] = [
+    Mode {
+        lit: true,
+        facet: false,
+        filter: Filt::BilinearFootprint,
+        proj: Proj::Adaptive,
+    },
+    Mode {
+        lit: true,
+        facet: false,
+        filter: Filt::BilinearFootprint,
+        proj: Proj::Exact,
+    },
     Mode {
         lit: false,
         facet: false,

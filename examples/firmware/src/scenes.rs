@@ -61,6 +61,11 @@ pub type LitSphere =
 /// balanced mode for the sphere.
 pub type LitSphereAdaptive =
     Pipeline<Adaptive, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+/// [`LitSphereAdaptive`] reading the texture's bilinear footprints (`BilinearFootprint`:
+/// the same pixels, two loads per sample instead of four; 256 KiB of footprints for the
+/// sphere's texture): `whole_sphere_footprint`.
+pub type LitSphereFootprint =
+    Pipeline<Adaptive, BilinearFootprint, Repeat, Repeat, ModulateIntensity, DepthLess>;
 /// `floor` with nearest filtering (unlit).
 pub type FloorNearest = Pipeline<SubdividedBy<6>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).
@@ -319,9 +324,25 @@ pub fn sphere_as<M, const R: usize, const V: usize, const B: usize>(
 where
     M: fixel::pipeline::Stages + 'static,
 {
+    sphere_mip_as::<M, R, V, B>(buf, MipTexture::single(texture), mesh, i, pause, resume)
+}
+
+/// [`sphere_as`] with a texture chain (`data::T256X128_FP`, with its footprints, for
+/// [`LitSphereFootprint`]).
+pub fn sphere_mip_as<M, const R: usize, const V: usize, const B: usize>(
+    buf: Target<'_, R, V, B>,
+    texture: MipTexture<'_>,
+    mesh: &Mesh<'_>,
+    i: u32,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error>
+where
+    M: fixel::pipeline::Stages + 'static,
+{
     render::<M, R, V, B>(
         buf,
-        MipTexture::single(texture),
+        texture,
         mesh,
         &demo::sphere_model(i),
         20,

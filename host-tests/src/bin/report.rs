@@ -80,7 +80,7 @@ impl Scene {
         match self {
             Scene::Floor => &modes::FLOOR_MODES,
             Scene::Cube => &modes::CUBE_MODES,
-            Scene::Sphere => &modes::LIT_SCENE_MODES,
+            Scene::Sphere => &modes::SPHERE_MODES,
         }
     }
     fn frames(self) -> u32 {
