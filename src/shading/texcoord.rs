@@ -134,8 +134,8 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         }
     }
 
-    /// True when level 0 has texels and, for a sampler that reads footprints, on cores
-    /// other than ARMv6-M and 64-bit hosts, they are there (always, for a binding built
+    /// True when level 0 has texels and, for a sampler that reads footprints on
+    /// 32-bit cores other than ARMv6-M, they are there (always, for a binding built
     /// from fixel's textures: [`TexBinding::new`] refuses a footprint sampler on a chain
     /// without them).
     #[inline(always)]
