@@ -208,6 +208,31 @@ _start:
 "#
 );
 
+/// The body of the whole-frame sphere firmwares (`whole_sphere`, `whole_sphere_adaptive`,
+/// `whole_sphere_footprint`): frame 0 of scene `sphere` drawn with stages `M` and `texture`
+/// into one whole 320x240 frame (300 KiB on the stack: whole-frame memory layout), reported
+/// as `name`.
+pub fn whole_sphere<M>(name: &str, texture: fixel::texture::MipTexture<'_>) -> bool
+where
+    M: fixel::pipeline::Stages + 'static,
+{
+    let mut buf = scenes::Whole::new();
+    let frame = core::hint::black_box(0);
+    let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
+        return false;
+    };
+    report(name, |pause, resume| {
+        scenes::sphere_mip_as::<M, 0, 0, 0>(
+            scenes::WholeTarget::Whole(&mut buf),
+            texture,
+            &mesh,
+            frame,
+            pause,
+            resume,
+        )
+    })
+}
+
 /// Runs one benchmark frame with the counted region around the renderer (the checksum of
 /// each band is left out), prints `scene=… checksum=… pixels=…` and returns success.
 pub fn report(

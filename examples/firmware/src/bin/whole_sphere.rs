@@ -5,25 +5,13 @@
 #![no_std]
 #![no_main]
 
-use fixel_firmware::scenes::{self, WholeTarget};
-use fixel_firmware::{data, report};
+use fixel_firmware::{data, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::Whole::new();
-    let frame = core::hint::black_box(0);
-    let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
-        return false;
-    };
-    report("whole_sphere", |pause, resume| {
-        scenes::sphere(
-            WholeTarget::Whole(&mut buf),
-            data::T256X128,
-            &mesh,
-            frame,
-            pause,
-            resume,
-        )
-    })
+    fixel_firmware::whole_sphere::<scenes::LitSphere>(
+        "whole_sphere",
+        fixel::texture::MipTexture::single(data::T256X128),
+    )
 }
 
 fixel_firmware::entry!(run);

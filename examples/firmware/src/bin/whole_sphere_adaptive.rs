@@ -5,25 +5,13 @@
 #![no_std]
 #![no_main]
 
-use fixel_firmware::scenes::{self, WholeTarget};
-use fixel_firmware::{data, report};
+use fixel_firmware::{data, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::Whole::new();
-    let frame = core::hint::black_box(0);
-    let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
-        return false;
-    };
-    report("whole_sphere_adaptive", |pause, resume| {
-        scenes::sphere_as::<scenes::LitSphereAdaptive, 0, 0, 0>(
-            WholeTarget::Whole(&mut buf),
-            data::T256X128,
-            &mesh,
-            frame,
-            pause,
-            resume,
-        )
-    })
+    fixel_firmware::whole_sphere::<scenes::LitSphereAdaptive>(
+        "whole_sphere_adaptive",
+        fixel::texture::MipTexture::single(data::T256X128),
+    )
 }
 
 fixel_firmware::entry!(run);
