@@ -96,7 +96,8 @@ fn whole_sphere<M: fixel::pipeline::Stages + 'static>(
     mesh: &fixel::scene::Mesh<'_>,
 ) -> FrameResult {
     let (mut nop1, mut nop2) = (|| {}, || {});
-    scenes::sphere_as::<M, 0, 0, 0>(WholeTarget::Whole(buf), tex, mesh, 0, &mut nop1, &mut nop2)
+    let tex = MipTexture::single(tex);
+    scenes::sphere_mip_as::<M, 0, 0, 0>(WholeTarget::Whole(buf), tex, mesh, 0, &mut nop1, &mut nop2)
         .unwrap()
 }
 

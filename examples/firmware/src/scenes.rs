@@ -309,26 +309,11 @@ pub fn sphere<const R: usize, const V: usize, const B: usize>(
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    sphere_as::<LitSphere, R, V, B>(buf, texture, mesh, i, pause, resume)
+    sphere_mip_as::<LitSphere, R, V, B>(buf, MipTexture::single(texture), mesh, i, pause, resume)
 }
 
-/// [`sphere`] drawn with the stages `M` (a lit, bilinear mode of the sphere).
-pub fn sphere_as<M, const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
-    texture: Texture<'_>,
-    mesh: &Mesh<'_>,
-    i: u32,
-    pause: &mut dyn FnMut(),
-    resume: &mut dyn FnMut(),
-) -> Result<FrameResult, Error>
-where
-    M: fixel::pipeline::Stages + 'static,
-{
-    sphere_mip_as::<M, R, V, B>(buf, MipTexture::single(texture), mesh, i, pause, resume)
-}
-
-/// [`sphere_as`] with a texture chain (`data::T256X128_FP`, with its footprints, for
-/// [`LitSphereFootprint`]).
+/// [`sphere`] drawn with the stages `M` (a lit, bilinear mode of the sphere) and texture
+/// chain `texture` (`data::T256X128_FP`, with its footprints, for [`LitSphereFootprint`]).
 pub fn sphere_mip_as<M, const R: usize, const V: usize, const B: usize>(
     buf: Target<'_, R, V, B>,
     texture: MipTexture<'_>,
