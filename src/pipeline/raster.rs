@@ -8,7 +8,7 @@
 
 use super::interp::lambda_at;
 use super::setup::{centroid, setup};
-use super::span::{span, DepthBound, Scratch, SpanCtx};
+use super::span::{span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -75,17 +75,30 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
 {
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        if let Some((row, depth)) = self.rows.row(y) {
-            let n = span::<S, P, D, C>(
+        if let Some((row, mut depth)) = self.rows.row(y) {
+            // The short path inlined here; every other span through `span`, out of line.
+            let short = span_short::<S, P, D, C>(
                 &self.ctx,
                 &mut self.bound,
-                &mut self.scratch,
                 y,
                 x0,
                 x1,
                 row,
-                depth,
+                depth.as_deref_mut(),
             );
+            let n = match short {
+                Some(n) => n,
+                None => span::<S, P, D, C>(
+                    &self.ctx,
+                    &mut self.bound,
+                    &mut self.scratch,
+                    y,
+                    x0,
+                    x1,
+                    row,
+                    depth,
+                ),
+            };
             self.pixels = self.pixels.wrapping_add(n);
         }
     }
