@@ -93,6 +93,41 @@ pub(crate) fn dot_q16_split<const N: usize>(a: [i32; N], b: [i32; N]) -> i64 {
     (hh << 16) + mid + ((ll + (1 << 15)) >> 16) as i64
 }
 
+/// `fit(dot_q16(a, b) + t)`: a three-term row of a matrix plus its translation, as `Fx`,
+/// or `None` when it does not fit.
+///
+/// Where a 64-bit product is one instruction (every target but ARMv6-M) the three products
+/// are summed in wrapping `i64` (multiply-accumulate) and rounded once. That is exact
+/// whenever the result fits: each product is at most 2^62 in magnitude, so the true sum
+/// `S` is below `0.75 x 2^64`, and a wrapped sum differs from `S` only when `|S| >= 2^63`,
+/// and is then at least `2^62` in magnitude itself, far outside `Fx` after the shift (both
+/// give `None`). Four terms could wrap to a small value, so this is for three.
+#[inline(always)]
+pub(crate) fn dot3_plus_fit(a: [i32; 3], b: [i32; 3], t: i32) -> Option<Fx> {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        fit(dot_q16_split(a, b) + i64::from(t))
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        fit(dot3_wrapping(a, b) + i64::from(t))
+    }
+}
+
+/// `floor((Σ a_i b_i + 2^15) / 2^16)` with the sum wrapping modulo 2^64 ([`dot3_plus_fit`]).
+#[cfg_attr(
+    all(target_arch = "arm", not(target_has_atomic = "32")),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn dot3_wrapping(a: [i32; 3], b: [i32; 3]) -> i64 {
+    let p = |k: usize| i64::from(a[k]) * i64::from(b[k]);
+    p(0).wrapping_add(p(1))
+        .wrapping_add(p(2))
+        .wrapping_add(1 << 15)
+        >> 16
+}
+
 /// Clamps a Q16 value held in an `i64` to the `Fx` range.
 #[inline]
 pub(crate) fn saturate(bits: i64) -> Fx {
@@ -121,6 +156,16 @@ mod tests {
             -4 * (((1i64 << 31) * ((1 << 31) - 1)) >> 16)
         );
         assert_eq!(saturate(sum_q32([prod(m, m); 4])), Fx::MAX);
+        // Three extreme products wrap an i64 sum: still refused, as the exact sum is.
+        let (mb, xb) = (m.to_bits(), x.to_bits());
+        for (a, b) in [
+            ([mb; 3], [mb; 3]),
+            ([mb; 3], [xb; 3]),
+            ([xb, mb, xb], [xb, mb, mb]),
+        ] {
+            assert_eq!(fit(dot3_wrapping(a, b)), None);
+            assert_eq!(dot3_plus_fit(a, b, i32::MIN), None);
+        }
         assert_eq!(fit(sum_q32([prod(m, m); 4])), None);
         // Rounding: 0.5 ulp rounds up, -0.5 ulp rounds up (toward +inf).
         assert_eq!(sum_q32([1 << 15]), 1);
@@ -167,6 +212,14 @@ mod tests {
             let exact = sum_q32([0, 1, 2].map(|k| prod(Fx::from_bits(a[k]), Fx::from_bits(b[k]))));
             assert_eq!(dot_q16_split(a, b), exact, "{a:?} . {b:?}");
             assert_eq!(dot_q16(a, b), exact, "{a:?} . {b:?}");
+            let t = pick(i + 2, next());
+            let want = fit(exact + i64::from(t));
+            assert_eq!(dot3_plus_fit(a, b, t), want, "{a:?} . {b:?} + {t}");
+            assert_eq!(
+                fit(dot3_wrapping(a, b) + i64::from(t)),
+                want,
+                "{a:?} . {b:?} + {t}"
+            );
             assert_eq!(
                 dot_q16_split([a[0]], [b[0]]),
                 sum_q32([prod(Fx::from_bits(a[0]), Fx::from_bits(b[0]))])

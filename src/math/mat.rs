@@ -12,7 +12,7 @@
 //! `cot(fovy/2)` and quotients are computed from Q2.30 sines and correctly rounded
 //! division-free quotients, so every entry is within about one ulp of the exact value.
 
-use super::acc::{dot3_q16_shared, dot_q16, fit, prod, saturate, sum_q32};
+use super::acc::{dot3_plus_fit, dot3_q16_shared, fit, prod, saturate, sum_q32};
 use super::recip::{div_round, signed_fx};
 use super::trig::{sin_cos, sin_cos_q30};
 use super::{Angle, Fx, Vec3, Vec4};
@@ -213,11 +213,11 @@ impl Mat4 {
     pub fn transform_point(&self, p: Vec3) -> Option<Vec4> {
         let r = |i: usize| {
             let row = &self.m[i];
-            let d = dot_q16(
+            dot3_plus_fit(
                 [row[0].to_bits(), row[1].to_bits(), row[2].to_bits()],
                 [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()],
-            );
-            fit(d + i64::from(row[3].to_bits()))
+                row[3].to_bits(),
+            )
         };
         Some(Vec4::new(r(0)?, r(1)?, r(2)?, r(3)?))
     }
