@@ -729,9 +729,14 @@ fn run_short_any<S: Shader, C: TargetColor, D: DepthStage, const INLINE: bool>(
 /// [`span`]'s short path alone, inlined into the rasterizer's span writer: most spans of a
 /// finely tessellated mesh are a few pixels long, and this way they cost no call and no
 /// reload of the shader's uniforms. `None` for a span it does not take (then [`span`],
-/// out of line, draws it, with the shading loops it had). Only for depth-tested draws
-/// (meshes): a draw without a depth stage keeps one copy of its shading loop (the
-/// inlined copy measured +0.3 KB of flash on the minimal Cortex-M4F firmware).
+/// out of line, draws it, with the shading loops it had).
+///
+/// The inlined copy of the shading loop costs flash (about 2 KB for the lit footprint
+/// loop on Cortex-M4F), so only the draws it serves link it: depth-tested (meshes),
+/// without a per-pixel level of detail, and with a projection for meshes of small
+/// triangles (affine or adaptive: one piece per span). Subdivided and quadratic draws
+/// (floors, big faces) measured no gain from it, and a multi-mode report firmware of mip
+/// modes outgrew the 256 KB of flash with every mode inlined.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
@@ -743,7 +748,8 @@ pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: Target
     row: &mut [C],
     depth: Option<&mut [u16]>,
 ) -> Option<u32> {
-    if !D::TEST {
+    let small_triangles = matches!(P::KIND, ProjKind::Affine | ProjKind::Adaptive);
+    if !D::TEST || S::LOD || !small_triangles {
         return None;
     }
     let len = usize::try_from(x1.wrapping_sub(x0)).ok()?;
