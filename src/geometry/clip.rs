@@ -54,6 +54,24 @@ fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i64, i64)) -> i64 {
     }
 }
 
+/// [`dist`] for a plane known only at run time (the clipping loop), from tables rather than
+/// a seven-way match: the same integers in fewer bytes, on the rare path.
+#[inline(never)]
+fn dist_any(plane: usize, p: &[i32; 4], guard: (i64, i64)) -> i64 {
+    let w = i64::from(p[3]);
+    let Some(k) = plane.checked_sub(1).filter(|&k| k < 6) else {
+        return w - i64::from(W_MIN_BITS);
+    };
+    // Planes 1..=6: w + z, w - z, gx w - x, gx w + x, gy w - y, gy w + y.
+    let c = i64::from(p[[2, 2, 0, 0, 1, 1][k]]);
+    let g = [1, 1, guard.0, guard.0, guard.1, guard.1][k];
+    if (0b10_1001 >> k) & 1 == 1 {
+        g * w + c
+    } else {
+        g * w - c
+    }
+}
+
 fn outcode<const N: usize>(a: &Attr<N>, guard: (i64, i64)) -> u8 {
     let mut c = 0;
     for p in 0..PLANES {
@@ -81,11 +99,21 @@ fn attrs_and_codes<const N: usize>(
 }
 
 /// `a + (b - a) t` for Q30 `t` in `[0, 1]`, rounded; exact in `i64` for any `i32` ends.
-#[inline]
+/// Out of line: LLVM unrolls the loop of [`lerp_all`] into copies of its 64-bit product.
+#[inline(never)]
 fn lerp_q30(a: i32, b: i32, t: i64) -> i32 {
     let a = i64::from(a);
     let d = i64::from(b) - a;
     (a + ((d * t + (1 << 29)) >> 30)) as i32
+}
+
+/// `a[k] = lerp_q30(a[k], b[k], t)` for every `k`: one copy for the position and the
+/// varyings (the clipper is the rare path, written for flash).
+#[inline(never)]
+fn lerp_all(a: &mut [i32], b: &[i32], t: i64) {
+    for (a, &b) in a.iter_mut().zip(b) {
+        *a = lerp_q30(*a, b, t);
+    }
 }
 
 /// Point on the edge from `inside` (distance `di >= 0`) to `outside` (`do_ < 0`).
@@ -96,6 +124,7 @@ fn lerp_q30(a: i32, b: i32, t: i64) -> i32 {
 /// along the edge, so that they stay linear in screen space over the whole original
 /// triangle as GL's `noperspective` is: affine output then does not depend on where the
 /// guard band cuts. (Where an end has `w <= 0` it has no screen position, and `t` is kept.)
+#[inline(never)]
 fn intersect<const N: usize>(
     inside: &Attr<N>,
     outside: &Attr<N>,
@@ -114,9 +143,7 @@ fn intersect<const N: usize>(
     // linking the 64-bit library division.
     let t = div_u64((num.max(0) << 30) as u64, den.max(1) as u64) as i64;
     let mut out = *inside;
-    for k in 0..4 {
-        out.p[k] = lerp_q30(inside.p[k], outside.p[k], t);
-    }
+    lerp_all(&mut out.p, &outside.p, t);
     let (w_in, w_out, w_t) = (inside.p[3], outside.p[3], out.p[3]);
     let t = if noperspective && w_in > 0 && w_out > 0 && w_t > 0 {
         // t w_out < 2^61; the quotient is in [0, 2^30] up to rounding.
@@ -124,9 +151,7 @@ fn intersect<const N: usize>(
     } else {
         t
     };
-    for k in 0..N {
-        out.v[k] = lerp_q30(inside.v[k], outside.v[k], t);
-    }
+    lerp_all(&mut out.v, &outside.v, t);
     out
 }
 
@@ -190,7 +215,7 @@ pub fn clip_and_project_varyings<const N: usize>(
             let mut m = 0;
             for i in 0..n {
                 let (cur, nxt) = (&src[i], &src[(i + 1) % n]);
-                let (dc, dn) = (dist(plane, cur, guard), dist(plane, nxt, guard));
+                let (dc, dn) = (dist_any(plane, &cur.p, guard), dist_any(plane, &nxt.p, guard));
                 if dc >= 0 && m < MAX_POLY {
                     dst[m] = *cur;
                     m += 1;
@@ -437,6 +462,23 @@ mod tests {
             inside > 500 && crossing > 500 && outside > 500,
             "{inside} {crossing} {outside}"
         );
+    }
+
+    #[test]
+    fn table_distances_are_the_match_distances() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for i in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let p = [x as i32, (x >> 16) as i32, (x >> 32) as i32, (x >> 24) as i32];
+            let p = if i % 4 == 0 { p.map(|c| c >> 12) } else { p };
+            let a = Attr::<0> { p, v: [] };
+            let guard = (i64::from((x >> 40) as u16), i64::from((x >> 48) as u16));
+            for plane in 0..PLANES {
+                assert_eq!(dist_any(plane, &p, guard), dist(plane, &a, guard), "{plane}");
+            }
+        }
     }
 
     #[test]
