@@ -41,30 +41,30 @@ fn attr<const N: usize>(v: &Vertex<N>) -> Attr<N> {
 }
 
 #[inline]
-fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i64, i64)) -> i64 {
+fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i32, i32)) -> i64 {
     let [x, y, z, w] = a.p.map(i64::from);
     match plane {
         0 => w - i64::from(W_MIN_BITS),
         1 => z + w,
         2 => w - z,
-        3 => guard.0 * w - x,
-        4 => guard.0 * w + x,
-        5 => guard.1 * w - y,
-        _ => guard.1 * w + y,
+        3 => i64::from(guard.0) * w - x,
+        4 => i64::from(guard.0) * w + x,
+        5 => i64::from(guard.1) * w - y,
+        _ => i64::from(guard.1) * w + y,
     }
 }
 
 /// [`dist`] for a plane known only at run time (the clipping loop), from tables rather than
 /// a seven-way match: the same integers in fewer bytes, on the rare path.
 #[inline(never)]
-fn dist_any(plane: usize, p: &[i32; 4], guard: (i64, i64)) -> i64 {
+fn dist_any(plane: usize, p: &[i32; 4], guard: (i32, i32)) -> i64 {
     let w = i64::from(p[3]);
     let Some(k) = plane.checked_sub(1).filter(|&k| k < 6) else {
         return w - i64::from(W_MIN_BITS);
     };
     // Planes 1..=6: w + z, w - z, gx w - x, gx w + x, gy w - y, gy w + y.
     let c = i64::from(p[[2, 2, 0, 0, 1, 1][k]]);
-    let g = [1, 1, guard.0, guard.0, guard.1, guard.1][k];
+    let g = i64::from([1, 1, guard.0, guard.0, guard.1, guard.1][k]);
     if (0b10_1001 >> k) & 1 == 1 {
         g * w + c
     } else {
@@ -72,7 +72,7 @@ fn dist_any(plane: usize, p: &[i32; 4], guard: (i64, i64)) -> i64 {
     }
 }
 
-fn outcode<const N: usize>(a: &Attr<N>, guard: (i64, i64)) -> u8 {
+fn outcode<const N: usize>(a: &Attr<N>, guard: (i32, i32)) -> u8 {
     let mut c = 0;
     for p in 0..PLANES {
         if dist(p, a, guard) < 0 {
@@ -87,7 +87,7 @@ fn outcode<const N: usize>(a: &Attr<N>, guard: (i64, i64)) -> u8 {
 #[inline(always)]
 fn attrs_and_codes<const N: usize>(
     tri: &[Vertex<N>; 3],
-    guard: (i64, i64),
+    guard: (i32, i32),
 ) -> ([Attr<N>; 3], [u8; 3]) {
     let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
     let codes = [
@@ -215,7 +215,10 @@ pub fn clip_and_project_varyings<const N: usize>(
             let mut m = 0;
             for i in 0..n {
                 let (cur, nxt) = (&src[i], &src[(i + 1) % n]);
-                let (dc, dn) = (dist_any(plane, &cur.p, guard), dist_any(plane, &nxt.p, guard));
+                let (dc, dn) = (
+                    dist_any(plane, &cur.p, guard),
+                    dist_any(plane, &nxt.p, guard),
+                );
                 if dc >= 0 && m < MAX_POLY {
                     dst[m] = *cur;
                     m += 1;
@@ -471,12 +474,21 @@ mod tests {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
-            let p = [x as i32, (x >> 16) as i32, (x >> 32) as i32, (x >> 24) as i32];
+            let p = [
+                x as i32,
+                (x >> 16) as i32,
+                (x >> 32) as i32,
+                (x >> 24) as i32,
+            ];
             let p = if i % 4 == 0 { p.map(|c| c >> 12) } else { p };
             let a = Attr::<0> { p, v: [] };
-            let guard = (i64::from((x >> 40) as u16), i64::from((x >> 48) as u16));
+            let guard = (i32::from((x >> 40) as u16), i32::from((x >> 48) as u16));
             for plane in 0..PLANES {
-                assert_eq!(dist_any(plane, &p, guard), dist(plane, &a, guard), "{plane}");
+                assert_eq!(
+                    dist_any(plane, &p, guard),
+                    dist(plane, &a, guard),
+                    "{plane}"
+                );
             }
         }
     }

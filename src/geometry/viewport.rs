@@ -35,7 +35,7 @@ pub struct Viewport {
     rect: Rect,
     /// Guard-band half-extent in NDC units per axis (integer, >= 1): the clipper keeps
     /// `|x| <= gx * w` and `|y| <= gy * w`.
-    pub(crate) guard: (i64, i64),
+    pub(crate) guard: (i32, i32),
 }
 
 impl Viewport {
@@ -72,9 +72,10 @@ impl Viewport {
             y1: (y0 + height) as i32,
         };
         // Largest integer g with x0 + (g + 1) * width / 2 <= GUARD_BAND_PX, and the same on
-        // the negative side (which is looser).
+        // the negative side (which is looser); below 2 GUARD_BAND_PX, so an `i32` (one
+        // 32 x 32 -> 64-bit product per guard plane in the clipper's outcodes).
         let g = |start: u32, size: u32| {
-            ((i64::from(GUARD_BAND_PX) - i64::from(start)) * 2 / i64::from(size) - 1).max(1)
+            ((i64::from(GUARD_BAND_PX) - i64::from(start)) * 2 / i64::from(size) - 1).max(1) as i32
         };
         Ok(Viewport {
             rect,
@@ -300,8 +301,8 @@ mod tests {
         for (w, h) in [(1, 1), (320, 240), (2048, 2048), (2047, 3)] {
             let vp = Viewport::new(0, 0, w, h).unwrap();
             let (gx, gy) = vp.guard;
-            assert!((gx + 1) * i64::from(w) / 2 <= i64::from(GUARD_BAND_PX) + 1);
-            assert!((gy + 1) * i64::from(h) / 2 <= i64::from(GUARD_BAND_PX) + 1);
+            assert!((i64::from(gx) + 1) * i64::from(w) / 2 <= i64::from(GUARD_BAND_PX) + 1);
+            assert!((i64::from(gy) + 1) * i64::from(h) / 2 <= i64::from(GUARD_BAND_PX) + 1);
         }
     }
 }
