@@ -133,7 +133,7 @@ impl PlaneSetup {
     /// bounds that by half a unit (the rounded `dx`, `dy` are then within one unit of the
     /// exact path's); on the benchmark meshes it is under 2^-8 unit. Slivers and larger
     /// differences take the exactly rounded quotient ([`Self::plane_exact`]).
-    #[inline]
+    #[inline(never)]
     pub fn plane(&self, a: [i32; 3]) -> Plane {
         let cs = self.cshift;
         let (d1, o1) = a[1].overflowing_sub(a[0]);
