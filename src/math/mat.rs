@@ -197,10 +197,11 @@ impl Mat4 {
     /// saturating at the `Fx` range.
     pub fn mul(&self, o: &Mat4) -> Mat4 {
         let mut m = [[O; 4]; 4];
-        for (i, row) in m.iter_mut().enumerate() {
-            for (j, e) in row.iter_mut().enumerate() {
-                *e = product_entry(&self.m[i], &o.m, j);
-            }
+        // One loop over the 16 entries whose count LLVM cannot see: unrolled, the calls
+        // cost about 280 bytes on Cortex-M4F (matrices are multiplied once per draw).
+        for k in 0..core::hint::black_box(16usize) {
+            let (i, j) = (k / 4 % 4, k % 4);
+            m[i][j] = product_entry(&self.m[i], &o.m, j);
         }
         Mat4 { m }
     }
