@@ -40,6 +40,24 @@ fn attr<const N: usize>(v: &Vertex<N>) -> Attr<N> {
     }
 }
 
+/// `g w` exactly, for a guard-band factor `0 < g < 2^15` ([`Viewport`] keeps it below
+/// 2 x 4096). On ARMv6-M, where an `i64` product is an `__aeabi_lmul` call, two 32-bit
+/// products of `g` and the halves of `w` (each below 2^30 in magnitude).
+#[inline(always)]
+fn guard_times(g: i32, w: i32) -> i64 {
+    if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
+        guard_times_split(g, w)
+    } else {
+        i64::from(g) * i64::from(w)
+    }
+}
+
+/// The ARMv6-M form of [`guard_times`] (compiled everywhere, so the host tests it).
+#[inline(always)]
+fn guard_times_split(g: i32, w: i32) -> i64 {
+    (i64::from(g.wrapping_mul(w >> 16)) << 16) + i64::from(g.wrapping_mul(w & 0xFFFF))
+}
+
 #[inline]
 fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i32, i32)) -> i64 {
     let [x, y, z, w] = a.p.map(i64::from);
@@ -47,10 +65,10 @@ fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i32, i32)) -> i64 {
         0 => w - i64::from(W_MIN_BITS),
         1 => z + w,
         2 => w - z,
-        3 => i64::from(guard.0) * w - x,
-        4 => i64::from(guard.0) * w + x,
-        5 => i64::from(guard.1) * w - y,
-        _ => i64::from(guard.1) * w + y,
+        3 => guard_times(guard.0, a.p[3]) - x,
+        4 => guard_times(guard.0, a.p[3]) + x,
+        5 => guard_times(guard.1, a.p[3]) - y,
+        _ => guard_times(guard.1, a.p[3]) + y,
     }
 }
 
@@ -64,11 +82,11 @@ fn dist_any(plane: usize, p: &[i32; 4], guard: (i32, i32)) -> i64 {
     };
     // Planes 1..=6: w + z, w - z, gx w - x, gx w + x, gy w - y, gy w + y.
     let c = i64::from(p[[2, 2, 0, 0, 1, 1][k]]);
-    let g = i64::from([1, 1, guard.0, guard.0, guard.1, guard.1][k]);
+    let gw = guard_times([1, 1, guard.0, guard.0, guard.1, guard.1][k], p[3]);
     if (0b10_1001 >> k) & 1 == 1 {
-        g * w + c
+        gw + c
     } else {
-        g * w - c
+        gw - c
     }
 }
 
@@ -465,6 +483,27 @@ mod tests {
             inside > 500 && crossing > 500 && outside > 500,
             "{inside} {crossing} {outside}"
         );
+    }
+
+    #[test]
+    fn split_guard_products_are_exact() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for i in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let w = match i % 5 {
+                0 => i32::MIN,
+                1 => i32::MAX,
+                _ => x as i32,
+            };
+            let g = 1 + ((x >> 40) as i32 & 0x7FFE);
+            assert_eq!(
+                guard_times_split(g, w),
+                i64::from(g) * i64::from(w),
+                "{g} {w}"
+            );
+        }
     }
 
     #[test]

@@ -251,19 +251,32 @@ impl ExactDivisor {
         (area_n != 0).then_some(ExactDivisor { area_n, norm })
     }
 
+    /// `n / area_n` rounded to nearest, ties away from zero.
+    fn div_round(&self, n: i64) -> i64 {
+        let d = self.area_n.unsigned_abs();
+        let q = div_u64(n.unsigned_abs().wrapping_add(d / 2), d) as i64;
+        if (n < 0) == (self.area_n < 0) {
+            q
+        } else {
+            q.wrapping_neg()
+        }
+    }
+
     /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
-    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n` by one long division (a single step of it
-    /// whenever the shifted numerator fits 63 bits); for huge triangles (`norm > SHIFT`) the
-    /// numerator is shifted right instead, rounded. Wraps modulo 2^64 where the result does
-    /// not fit. Out of line: one copy for both axes.
+    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`: one division when the shifted numerator
+    /// fits `i64`, else a long division; for huge triangles (`norm > SHIFT`) the numerator
+    /// is shifted right instead. Wraps modulo 2^64 where the result does not fit. Out of
+    /// line: one copy for both axes.
     #[inline(never)]
     fn gradient(&self, n: i64) -> i64 {
-        let (n, k) = if self.norm > SHIFT {
+        if self.norm > SHIFT {
             let k = (self.norm - SHIFT).min(62);
-            ((n >> k) + ((n >> (k - 1)) & 1), 0)
-        } else {
-            (n, SHIFT - self.norm)
-        };
+            return self.div_round((n >> k) + ((n >> (k - 1)) & 1));
+        }
+        let k = SHIFT - self.norm;
+        if n.unsigned_abs() < 1 << (62 - k) {
+            return self.div_round(n << k);
+        }
         let d = self.area_n.unsigned_abs();
         long_div_round(n, self.area_n, k, |x| div_u64(x, d))
     }
