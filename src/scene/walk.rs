@@ -47,6 +47,10 @@ const LIT: u8 = 2;
 const FAILED: u8 = 3;
 /// Placed without the depth division (binning): `z` holds the clip-space `z`.
 const NO_DEPTH: u8 = 4;
+/// The outcode bit of a [`FAILED`] vertex (the clipper's planes use bits 0 to 6): a
+/// triangle's one test of its corners' outcodes or-ed together then also finds failed
+/// corners, which the common case (all inside, none failed) no longer tests apart.
+const FAILED_CODE: u8 = 0x80;
 
 /// Bits of the attribute offset below the sub-pixel grid.
 const SUB_BITS: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
@@ -280,14 +284,12 @@ pub fn walk_mesh<C: TargetColor>(
                 }
             };
         }
-        if v.iter().any(|c| c.state == FAILED) {
-            continue;
-        }
-        if v[0].outcode & v[1].outcode & v[2].outcode != 0 {
-            continue; // wholly outside one plane
-        }
-        if v[0].outcode | v[1].outcode | v[2].outcode != 0 {
-            clipped(draw, &ctx, idx, lit, id, out);
+        let any = v[0].outcode | v[1].outcode | v[2].outcode;
+        if any != 0 {
+            // A failed corner (FAILED_CODE), wholly outside one plane, or to be clipped.
+            if any & FAILED_CODE == 0 && v[0].outcode & v[1].outcode & v[2].outcode == 0 {
+                clipped(draw, &ctx, idx, lit, id, out);
+            }
             continue;
         }
         // Cull from the cached positions: a culled triangle builds no screen vertices.
@@ -355,7 +357,10 @@ fn place(
             c.set_screen(&screen);
             c.state = if depth { PLACED } else { NO_DEPTH };
         }
-        None => c.state = FAILED,
+        None => {
+            c.state = FAILED;
+            c.outcode = FAILED_CODE;
+        }
     }
 }
 
@@ -369,7 +374,10 @@ fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
             c.color = q;
             c.state = LIT;
         }
-        None => c.state = FAILED,
+        None => {
+            c.state = FAILED;
+            c.outcode |= FAILED_CODE;
+        }
     }
 }
 
