@@ -487,11 +487,9 @@ mod tests {
 
     #[test]
     fn split_guard_products_are_exact() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::test_rng::Rng(0x9E37_79B9_7F4A_7C15);
         for i in 0..100_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next();
             let w = match i % 5 {
                 0 => i32::MIN,
                 1 => i32::MAX,
@@ -508,11 +506,9 @@ mod tests {
 
     #[test]
     fn table_distances_are_the_match_distances() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = crate::test_rng::Rng(0x2545_F491_4F6C_DD1D);
         for i in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = rng.next();
             let p = [
                 x as i32,
                 (x >> 16) as i32,
