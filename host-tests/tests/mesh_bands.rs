@@ -214,3 +214,111 @@ fn bad_meshes_are_errors() {
     let e = Mesh::new(&big, None, &big_uv, &[[0, 1, 2]]).unwrap_err();
     assert!(e.to_string().contains("65537 vertices"), "{e}");
 }
+
+/// Vertices whose position or normal overflows the fixed-point range skip their triangles
+/// on every path, also when a later triangle meets such a vertex again through the walker's
+/// cache (the walker marks it with an outcode bit): the walker draws what `draw_mesh`
+/// draws, and the triangles without such a vertex are still drawn.
+#[test]
+fn overflowing_vertices_skip_their_triangles_on_every_path() {
+    let f = |x: f64, y: f64, z: f64| Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z));
+    // 0..4: an ordinary quad; 4: a position that overflows clip space; 5: a normal that
+    // overflows view space (its position is ordinary).
+    let positions = [
+        f(-1.5, -1.0, 0.0),
+        f(1.5, -1.0, 0.0),
+        f(1.5, 1.0, 0.0),
+        f(-1.5, 1.0, 0.0),
+        f(30000.0, 30000.0, -30000.0),
+        f(0.0, 1.8, 0.0),
+    ];
+    // Turned by an eighth about y below, so one view-space component reaches 42,426.
+    let big = f(30000.0, 0.0, 30000.0);
+    let normals = [
+        f(0.0, 0.0, 1.0),
+        f(0.0, 0.0, 1.0),
+        f(0.0, 0.0, 1.0),
+        f(0.0, 0.0, 1.0),
+        f(0.0, 0.0, 1.0),
+        big,
+    ];
+    let uvs = [
+        [Fx::ZERO; 2],
+        [Fx::ONE, Fx::ZERO],
+        [Fx::ONE; 2],
+        [Fx::ZERO, Fx::ONE],
+        [Fx::ONE; 2],
+        [Fx::ONE; 2],
+    ];
+    // The overflowing vertices are each used twice, so the second use comes from the cache.
+    let indices = [
+        [0, 1, 4],
+        [0, 1, 2],
+        [4, 2, 3],
+        [2, 3, 5],
+        [0, 2, 3],
+        [5, 1, 2],
+    ];
+    let mesh = Mesh::new(&positions, Some(&normals), &uvs, &indices).unwrap();
+    let tex = noise_texture(8, 16, 5);
+    let texels = host_tests::adapter::texels(&tex);
+    let (w, h) = (64usize, 48usize);
+    let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+    let camera = demo::camera(20);
+    let model =
+        Mat4::translation(Vec3::from_num(0, 0, -5)) * Mat4::rotation_y(Angle::from_turns(8192));
+    let xf = MeshTransform::new(&model, &camera);
+    let light = DirectionalLight::default();
+    for shading in [Shading::Modulate, Shading::ModulateIntensity] {
+        let mode = DrawMode {
+            shading,
+            cull: Cull::None,
+            ..DrawMode::default()
+        };
+        let d = Draw::dynamic(mode, Some(texture(&tex, &texels)), vp).unwrap();
+        for lit in [false, true] {
+            let light = lit.then_some(&light);
+            let mut color = vec![Rgb565::default(); w * h];
+            let mut depth = vec![0u16; w * h];
+            let mut fr = Frame::new(&mut color, w as u32, h as u32)
+                .unwrap()
+                .with_depth(&mut depth)
+                .unwrap();
+            fr.clear(raw(0x1234));
+            let px_ref = draw_mesh(&d, &mesh, &model, &camera, light, &mut fr).unwrap();
+            let expected: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+            assert!(px_ref > 0, "the ordinary triangles are drawn");
+            // The marked vertices do overflow: their triangles alone draw nothing (vertex
+            // 5 only when lit; unlit, its triangle is ordinary).
+            let only = |tris: &[[u16; 3]]| {
+                let m = Mesh::new(&positions, Some(&normals), &uvs, tris).unwrap();
+                let mut color = vec![Rgb565::default(); w * h];
+                let mut depth = vec![0u16; w * h];
+                let mut fr = Frame::new(&mut color, w as u32, h as u32)
+                    .unwrap()
+                    .with_depth(&mut depth)
+                    .unwrap();
+                draw_mesh(&d, &m, &model, &camera, light, &mut fr).unwrap()
+            };
+            assert_eq!(only(&[[0, 1, 4], [4, 2, 3]]), 0);
+            assert_eq!(only(&[[2, 3, 5]]) == 0, lit, "lit {lit}");
+            for cache_len in [0usize, 1, 4, 8] {
+                let mut cache = vec![CachedVertex::default(); cache_len];
+                let mut color = vec![Rgb565::default(); w * h];
+                let mut depth = vec![0u16; w * h];
+                let mut fr = Frame::new(&mut color, w as u32, h as u32)
+                    .unwrap()
+                    .with_depth(&mut depth)
+                    .unwrap();
+                fr.clear(raw(0x1234));
+                let px = draw_mesh_walked(&d, &mesh, &xf, light, &mut cache, &mut fr).unwrap();
+                let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+                assert_eq!(px, px_ref, "{shading:?} lit {lit} cache {cache_len}");
+                assert!(
+                    walked == expected,
+                    "{shading:?} lit {lit} cache {cache_len}"
+                );
+            }
+        }
+    }
+}
