@@ -97,8 +97,15 @@ fn whole_sphere<M: fixel::pipeline::Stages + 'static>(
 ) -> FrameResult {
     let (mut nop1, mut nop2) = (|| {}, || {});
     let tex = MipTexture::single(tex);
-    scenes::sphere_mip_as::<M, 0, 0, 0>(WholeTarget::Whole(buf), tex, mesh, 0, &mut nop1, &mut nop2)
-        .unwrap()
+    scenes::sphere_mip_as::<M, 0, 0, 0, 0>(
+        WholeTarget::Whole(buf),
+        tex,
+        mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -169,7 +176,7 @@ fn mcu_frames() {
     let f256 = footprints(&tex);
     let fp = MipTexture::single(tex).with_footprints(&f256).unwrap();
     let (mut nop1, mut nop2) = (|| {}, || {});
-    let wf = scenes::sphere_mip_as::<scenes::LitSphereFootprint, 0, 0, 0>(
+    let wf = scenes::sphere_mip_as::<scenes::LitSphereFootprint, 0, 0, 0, 0>(
         WholeTarget::Whole(&mut whole_buf),
         fp,
         &mesh,
@@ -250,7 +257,7 @@ fn mcu_frames() {
     let tex = Texture::new(&t64, 64, 64).unwrap();
     let floor = demo::floor();
     let fm = floor.mesh().unwrap();
-    let r = scenes::floor::<scenes::FloorNearest, _, _, _>(
+    let r = scenes::floor::<scenes::FloorNearest, _, _, _, _>(
         Target::Bands(&mut *small),
         MipTexture::single(tex),
         &mut nop1,
@@ -258,7 +265,7 @@ fn mcu_frames() {
     )
     .unwrap();
     print("floor", &r);
-    let wr = scenes::floor::<scenes::FloorNearest, _, _, _>(
+    let wr = scenes::floor::<scenes::FloorNearest, _, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
         MipTexture::single(tex),
         &mut nop1,
@@ -275,7 +282,7 @@ fn mcu_frames() {
 
     let f64s = footprints(&tex);
     let fp = MipTexture::single(tex).with_footprints(&f64s).unwrap();
-    let r = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _>(
+    let r = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _, _>(
         Target::Bands(&mut *small),
         fp,
         &mut nop1,
@@ -283,7 +290,7 @@ fn mcu_frames() {
     )
     .unwrap();
     print("floor_bilinear", &r);
-    let wr = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _>(
+    let wr = scenes::floor::<scenes::FloorBilinearFootprint, _, _, _, _>(
         WholeTarget::Whole(&mut whole_buf),
         fp,
         &mut nop1,

@@ -5,9 +5,9 @@
 //! * whole-frame through `draw_mesh` (clip-space triangles, the reference path),
 //! * whole-frame through the prepared-vertex walker `draw_mesh_walked`, with a vertex cache
 //!   of any length (none, direct-mapped, one per vertex),
-//! * in bands of any height through `BandRenderer::render_spans`, with bins, band ranges
-//!   and vertex cache of any length: bins big enough (geometry once), ranges big enough
-//!   (re-projection per band), ranges too short (partial re-walk), none at all;
+//! * in bands of any height through `BandRenderer::render_spans`, with bins, band ranges,
+//!   vertex cache and kept set-ups of any length: bins big enough (geometry once), ranges
+//!   big enough (re-projection per band), ranges too short (partial re-walk), none at all;
 //!
 //! must agree bit for bit, and the storage flags must say which rung was used.
 
@@ -18,7 +18,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::Viewport;
 use fixel::math::{Angle, Fx, Mat4, Vec3};
-use fixel::pipeline::{Draw, DrawMode, Projection, Shading};
+use fixel::pipeline::{Draw, DrawMode, KeptSetup, Projection, Shading};
 use fixel::prelude::Cull;
 use fixel::scene::{
     draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
@@ -118,6 +118,7 @@ proptest! {
         bins_len in 0usize..24,
         ranges_len in prop_oneof![Just(0usize), 0usize..200, Just(10_000)],
         cache_len in prop_oneof![Just(0usize), 1usize..70, Just(100)],
+        setups_len in prop_oneof![Just(0usize), 1usize..8, Just(64)],
         lit in any::<bool>(),
     ) {
         let tex = noise_texture(8, 16, 5);
@@ -165,10 +166,12 @@ proptest! {
         let mut ranges = vec![BandRange::EMPTY; ranges_len];
         let mut cbuf = vec![Rgb565::default(); w * rows as usize];
         let mut dbuf = vec![0u16; w * rows as usize];
+        let mut setups = vec![KeptSetup::EMPTY; setups_len];
         let mut band = BandRenderer::new(&mut cbuf, w as u32, rows, h as u32)
             .unwrap()
             .with_depth(&mut dbuf)
-            .unwrap();
+            .unwrap()
+            .with_setup_cache(&mut setups);
         let mut got = vec![0u16; w * h];
         let stats = band
             .render_spans(

@@ -14,6 +14,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::*;
+use super::SetupSlot;
 use crate::color::TargetColor;
 use crate::geometry::{
     clip_and_project, project_unclipped, ClipVertex, Cull, ScreenTriangle, Viewport,
@@ -30,7 +31,8 @@ use crate::Error;
 /// a texture").
 static NO_TEXELS: [Rgb565; 1] = [Rgb565::new(0, 0, 0)];
 
-type RasterFn<'a, C> = fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>) -> u32;
+type RasterFn<'a, C> =
+    fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>, SetupSlot<'_>) -> u32;
 
 /// A ready-to-use draw: mode, texture, viewport and the span loop chosen for them.
 pub struct Draw<'a, C: TargetColor> {
@@ -268,7 +270,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
                 self.mode.cull,
                 self.affine(),
                 &mut |s| {
-                    pixels = pixels.wrapping_add((self.raster)(self, s, target));
+                    pixels = pixels.wrapping_add((self.raster)(self, s, target, SetupSlot::Build));
                 },
             );
         }
@@ -335,7 +337,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         target: &mut dyn RenderTarget<Color = C>,
     ) -> Result<u32, Error> {
         self.check_target(target)?;
-        Ok((self.raster)(self, tri, target))
+        Ok((self.raster)(self, tri, target, SetupSlot::Build))
     }
 
     /// [`screen_triangle`](Self::screen_triangle) for callers that checked the target once.
@@ -344,7 +346,18 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         tri: &ScreenTriangle,
         target: &mut dyn RenderTarget<Color = C>,
     ) -> u32 {
-        (self.raster)(self, tri, target)
+        (self.raster)(self, tri, target, SetupSlot::Build)
+    }
+
+    /// [`screen_triangle_checked`](Self::screen_triangle_checked) with the set-up taken
+    /// from, or kept in, a band renderer's cache (`slot`).
+    pub(crate) fn screen_triangle_slot(
+        &self,
+        tri: &ScreenTriangle,
+        target: &mut dyn RenderTarget<Color = C>,
+        slot: SetupSlot<'_>,
+    ) -> u32 {
+        (self.raster)(self, tri, target, slot)
     }
 }
 
@@ -353,6 +366,7 @@ fn raster_triangle<'a, M, C>(
     draw: &Draw<'a, C>,
     tri: &ScreenTriangle,
     target: &mut dyn RenderTarget<Color = C>,
+    slot: SetupSlot<'_>,
 ) -> u32
 where
     M: Stages,
@@ -378,6 +392,7 @@ where
         <M::S as ShadingStage>::Shader::<'_, M::F, M::WU, M::WV>::from_classic,
         &params,
         target,
+        slot,
     )
 }
 

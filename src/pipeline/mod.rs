@@ -14,12 +14,15 @@ mod quadratic;
 mod raster;
 pub mod recip;
 mod setup;
+mod setup_cache;
 mod shaded;
 mod span;
 pub(crate) mod stages;
 
 pub use depth_only::DepthOnlyDraw;
 pub use draw::Draw;
+pub(crate) use setup_cache::SetupSlot;
+pub use setup_cache::{KeptSetup, KEPT_VARYINGS};
 pub use shaded::ShadedDraw;
 pub use stages::{
     Adaptive, Affine, DepthLess, DepthStage, DepthTest, DrawMode, DynProjection, Exact, Flat,

@@ -8,6 +8,7 @@
 
 use super::interp::lambda_at;
 use super::setup::{centroid, setup};
+use super::setup_cache::SetupSlot;
 use super::span::{span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
@@ -112,6 +113,7 @@ pub(crate) fn raster_shaded<S, P, D, C, const N: usize>(
     varyings: impl Fn(&[i32; N]) -> S::Varyings,
     params: &RasterParams,
     target: &mut dyn RenderTarget<Color = C>,
+    slot: SetupSlot<'_>,
 ) -> u32
 where
     S: Shader,
@@ -144,8 +146,19 @@ where
         let (x, y) = v.attr_position();
         (x, y, v.z, v.w)
     });
-    // Kept where the call writes it and lent to the span loop (see `setup`).
-    let built = setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
+    // Kept where the call writes it and lent to the span loop (see `setup`); taken from a
+    // band renderer's cache when an earlier band built it (the set-up depends on the
+    // triangle, the draw and the viewport only).
+    let build = || setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
+    let built = match slot {
+        SetupSlot::Build => build(),
+        SetupSlot::Take(kept) => kept.load::<S::Varyings>().or_else(build),
+        SetupSlot::Keep(entry) => {
+            let built = build();
+            entry.store(built.as_ref());
+            built
+        }
+    };
     // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {
         return 0;

@@ -17,6 +17,7 @@ pub(crate) mod band;
 pub(crate) mod depth_map;
 pub(crate) mod frame;
 pub(crate) mod resample;
+mod setup_queue;
 pub(crate) mod smooth;
 pub(crate) mod spans;
 

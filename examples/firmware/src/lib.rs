@@ -222,7 +222,7 @@ where
         return false;
     };
     report(name, |pause, resume| {
-        scenes::sphere_mip_as::<M, 0, 0, 0>(
+        scenes::sphere_mip_as::<M, 0, 0, 0, 0>(
             scenes::WholeTarget::Whole(&mut buf),
             texture,
             &mesh,

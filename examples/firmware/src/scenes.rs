@@ -7,6 +7,7 @@
 use core::convert::Infallible;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::demo;
+use fixel::pipeline::KeptSetup;
 use fixel::pipeline::{
     Adaptive, DepthLess, ModulateFacet, ModulateIntensity, Pipeline, QuadraticBy, Replace,
     SubdividedBy,
@@ -31,9 +32,16 @@ pub const BINS: usize = 16;
 /// Band ranges of the sphere firmware: one per sphere triangle (2 B each, 4.4 KB).
 pub const RANGES: usize = demo::SPHERE_TRIANGLES;
 /// Prepared-vertex cache of the sphere band firmware (32 B each, direct-mapped, kept across
-/// the band passes): 128 entries hold the visible vertices of the rings a band meets
-/// (64: 5/px more on M4F, 2 KB less RAM).
-pub const CACHE: usize = 128;
+/// the band passes). 64 entries, 2 KB: the 2 KB that 128 entries took hold 23 more kept
+/// set-ups ([`SETUPS`]), which save more (sphere in bands, M0+: 128 vertices + 12 set-ups
+/// 621.6 instructions per pixel, 64 + 36 589.7; M4F 336.0, 325.3).
+pub const CACHE: usize = 64;
+/// Raster set-ups kept from one band for the next (`BandRenderer::with_setup_cache`, 88 B
+/// each, 3.1 KB) in the firmwares that re-project their mesh per band: a triangle that
+/// crosses into the next band is not set up again there. About 50 sphere triangles cross
+/// each band boundary; the first 36 are kept (40: 2 instructions per pixel less on M0+,
+/// 350 B more RAM).
+pub const SETUPS: usize = 36;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
@@ -101,7 +109,12 @@ impl Fnv1a {
 
 /// Buffers a band renderer needs: colour band, depth band, triangle bins, `R` band ranges
 /// and a cache of `V` prepared vertices.
-pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE, const B: usize = BINS> {
+pub struct Buffers<
+    const R: usize = RANGES,
+    const V: usize = CACHE,
+    const B: usize = BINS,
+    const S: usize = SETUPS,
+> {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
     /// Depth band.
@@ -112,13 +125,16 @@ pub struct Buffers<const R: usize = RANGES, const V: usize = CACHE, const B: usi
     pub ranges: [BandRange; R],
     /// Prepared-vertex cache.
     pub cache: [CachedVertex; V],
+    /// Set-ups kept from one band for the next.
+    pub setups: [KeptSetup; S],
 }
 
 /// Buffers of the scenes whose triangles fit the bins (cube, floor): no band ranges.
-pub type SmallBuffers = Buffers<0, 32>;
-/// Buffers of the sphere firmware: band ranges and a vertex cache, no bins (its ~650
-/// screen triangles would need 68 KB of them). 10 KiB band + 4.4 KB ranges + 2.5 KB cache.
-pub type SphereBuffers = Buffers<RANGES, CACHE, 0>;
+pub type SmallBuffers = Buffers<0, 32, BINS, 0>;
+/// Buffers of the sphere firmware: band ranges, a vertex cache and kept set-ups, no bins (its
+/// ~650 screen triangles would need 68 KB of them). 10 KiB band + 4.4 KB ranges + 2 KB
+/// vertex cache + 3.1 KB set-ups.
+pub type SphereBuffers = Buffers<RANGES, CACHE, 0, SETUPS>;
 
 impl Default for Buffers {
     fn default() -> Self {
@@ -133,7 +149,7 @@ impl Buffers {
     }
 }
 
-impl<const R: usize, const V: usize, const B: usize> Buffers<R, V, B> {
+impl<const R: usize, const V: usize, const B: usize, const S: usize> Buffers<R, V, B, S> {
     /// Zeroed buffers.
     pub fn with_storage() -> Self {
         Buffers {
@@ -142,6 +158,7 @@ impl<const R: usize, const V: usize, const B: usize> Buffers<R, V, B> {
             bins: [Binned::default(); B],
             ranges: [BandRange::EMPTY; R],
             cache: [CachedVertex::EMPTY; V],
+            setups: [KeptSetup::EMPTY; S],
         }
     }
 }
@@ -175,12 +192,13 @@ impl Default for Whole {
 }
 
 /// A whole-frame [`Target`] (its band storage parameters are unused).
-pub type WholeTarget<'b> = Target<'b, 0, 0, 0>;
+pub type WholeTarget<'b> = Target<'b, 0, 0, 0, 0>;
 
 /// Where a frame is drawn: in bands through `Buffers`, or whole.
-pub enum Target<'b, const R: usize, const V: usize, const B: usize = BINS> {
+pub enum Target<'b, const R: usize, const V: usize, const B: usize = BINS, const S: usize = SETUPS>
+{
     /// Band by band.
-    Bands(&'b mut Buffers<R, V, B>),
+    Bands(&'b mut Buffers<R, V, B, S>),
     /// One whole frame.
     Whole(&'b mut Whole),
 }
@@ -198,8 +216,8 @@ pub struct FrameResult {
 /// before each band's checksum and `resume` after it, so an instruction counter can leave
 /// the (harness-only) checksum out of the renderer's count.
 #[allow(clippy::too_many_arguments)]
-pub fn render<M, const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn render<M, const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: MipTexture<'_>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -222,8 +240,8 @@ pub fn viewport() -> Result<Viewport, Error> {
 
 /// Like [`render`] with a ready draw (any mode: see `modes.rs`).
 #[allow(clippy::too_many_arguments)]
-pub fn render_draw<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -255,7 +273,9 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
             });
         }
     };
-    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?
+        .with_depth(&mut buf.depth)?
+        .with_setup_cache(&mut buf.setups);
     let cache = &mut buf.cache;
     let stats = bands.render_spans(
         &[draw],
@@ -280,15 +300,15 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize>(
 
 /// Scene `cube`, frame `i`: `texture` must be `T(128, 128)` with its footprints
 /// (`MipTexture::with_footprints`, [`data::T128_FP`]; drawn with [`LitFootprint`]).
-pub fn cube<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn cube<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: MipTexture<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let m = demo::cube();
-    render::<LitFootprint, R, V, B>(
+    render::<LitFootprint, R, V, B, S>(
         buf,
         texture,
         &m.mesh()?,
@@ -301,21 +321,21 @@ pub fn cube<const R: usize, const V: usize, const B: usize>(
 }
 
 /// Scene `sphere`, frame `i`: `texture` must be `T(256, 128)`, `mesh` the demo sphere.
-pub fn sphere<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn sphere<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    sphere_mip_as::<LitSphere, R, V, B>(buf, MipTexture::single(texture), mesh, i, pause, resume)
+    sphere_mip_as::<LitSphere, R, V, B, S>(buf, MipTexture::single(texture), mesh, i, pause, resume)
 }
 
 /// [`sphere`] drawn with the stages `M` (a lit, bilinear mode of the sphere) and texture
 /// chain `texture` (`data::T256X128_FP`, with its footprints, for [`LitSphereFootprint`]).
-pub fn sphere_mip_as<M, const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn sphere_mip_as<M, const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: MipTexture<'_>,
     mesh: &Mesh<'_>,
     i: u32,
@@ -325,7 +345,7 @@ pub fn sphere_mip_as<M, const R: usize, const V: usize, const B: usize>(
 where
     M: fixel::pipeline::Stages + 'static,
 {
-    render::<M, R, V, B>(
+    render::<M, R, V, B, S>(
         buf,
         texture,
         mesh,
@@ -349,15 +369,15 @@ pub fn teapot_model(i: u32) -> Mat4 {
 /// Scene `teapot`, frame `i`: the Utah teapot baked by `cargo xtask bake-obj` (`mesh`, 1560
 /// triangles with cylindrical texture coordinates) with `texture` `T(256, 128)`, lit,
 /// bilinear, perspective-correct, as the sphere.
-pub fn teapot<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn teapot<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: Texture<'_>,
     mesh: &Mesh<'_>,
     i: u32,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
-    render::<LitSphere, R, V, B>(
+    render::<LitSphere, R, V, B, S>(
         buf,
         MipTexture::single(texture),
         mesh,
@@ -371,8 +391,8 @@ pub fn teapot<const R: usize, const V: usize, const B: usize>(
 
 /// Scene `floor` (camera fixed, so every frame is frame 0): `texture` must be `T(64, 64)`
 /// (with its footprints, [`data::T64_FP`], for [`FloorBilinearFootprint`]).
-pub fn floor<M, const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn floor<M, const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: MipTexture<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
@@ -381,7 +401,7 @@ where
     M: fixel::pipeline::Stages + 'static,
 {
     let m = demo::floor();
-    render::<M, R, V, B>(
+    render::<M, R, V, B, S>(
         buf,
         texture,
         &m.mesh()?,
@@ -394,8 +414,8 @@ where
 }
 
 /// Scene `cube`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(128, 128)`).
-pub fn cube_with<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn cube_with<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     draw: &Draw<'_, Rgb565>,
     lit: bool,
     i: u32,
@@ -417,8 +437,8 @@ pub fn cube_with<const R: usize, const V: usize, const B: usize>(
 
 /// Scene `sphere`, frame `i`, drawn with `draw` (lit when `lit`; texture `T(256, 128)`).
 #[allow(clippy::too_many_arguments)]
-pub fn sphere_with<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn sphere_with<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     draw: &Draw<'_, Rgb565>,
     mesh: &Mesh<'_>,
     lit: bool,
@@ -440,8 +460,8 @@ pub fn sphere_with<const R: usize, const V: usize, const B: usize>(
 
 /// Scene `floor` drawn with `draw` (unlit; texture `T(64, 64)`, with its mip chain for the
 /// mipmapped filters).
-pub fn floor_with<const R: usize, const V: usize, const B: usize>(
-    buf: Target<'_, R, V, B>,
+pub fn floor_with<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     draw: &Draw<'_, Rgb565>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),

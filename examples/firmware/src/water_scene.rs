@@ -19,8 +19,13 @@ pub const WATER_TRIANGLES: usize = 288;
 /// Side of the swell height map.
 pub const WAVE_SIDE: u32 = 64;
 
-/// The band buffers: ranges for the grid's triangles, a 64-entry vertex cache.
-pub type WaterBuffers = Buffers<WATER_TRIANGLES, 64, 0>;
+/// Set-ups kept across bands (88 B each): fewer than the sphere's, the water firmware keeps
+/// its displaced mesh in RAM.
+pub const WATER_SETUPS: usize = 20;
+
+/// The band buffers: ranges for the grid's triangles, a 64-entry vertex cache,
+/// [`WATER_SETUPS`] kept set-ups.
+pub type WaterBuffers = Buffers<WATER_TRIANGLES, 64, 0, WATER_SETUPS>;
 
 /// The swell of frame `i`: scale 0.6 units per 256 steps about mid-grey, the offset moving
 /// `(i, 2 i) / 128` of the map per frame.
@@ -71,7 +76,7 @@ pub fn water(
 ) -> Result<FrameResult, Error> {
     let d = water_displacement(heights, i)?;
     let mesh = displace(&d, base, None, positions, normals)?;
-    render::<LitSphere, WATER_TRIANGLES, 64, 0>(
+    render::<LitSphere, WATER_TRIANGLES, 64, 0, WATER_SETUPS>(
         Target::Bands(buf),
         MipTexture::single(texture),
         &mesh,

@@ -7,7 +7,7 @@ use fixel_firmware::{data, report, scenes};
 fn run() -> bool {
     let mut buf = scenes::SmallBuffers::with_storage();
     report("floor", |pause, resume| {
-        scenes::floor::<scenes::FloorNearest, _, _, _>(
+        scenes::floor::<scenes::FloorNearest, _, _, _, _>(
             scenes::Target::Bands(&mut buf),
             fixel::texture::MipTexture::single(core::hint::black_box(data::T64)),
             pause,

@@ -13,7 +13,7 @@ fn run() -> bool {
     let frame = core::hint::black_box(0);
     let _ = frame;
     report("whole_floor", |pause, resume| {
-        scenes::floor::<scenes::FloorNearest, 0, 0, 0>(
+        scenes::floor::<scenes::FloorNearest, 0, 0, 0, 0>(
             WholeTarget::Whole(&mut buf),
             fixel::texture::MipTexture::single(data::T64),
             pause,

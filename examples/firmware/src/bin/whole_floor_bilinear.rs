@@ -13,7 +13,7 @@ fn run() -> bool {
     let frame = core::hint::black_box(0);
     let _ = frame;
     report("whole_floor_bilinear", |pause, resume| {
-        scenes::floor::<scenes::FloorBilinearFootprint, 0, 0, 0>(
+        scenes::floor::<scenes::FloorBilinearFootprint, 0, 0, 0, 0>(
             WholeTarget::Whole(&mut buf),
             data::T64_FP,
             pause,

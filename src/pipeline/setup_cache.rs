@@ -1,0 +1,205 @@
+//! Raster set-ups kept from one band for the next.
+//!
+//! A band renderer draws a triangle that crosses a band boundary once per band it meets,
+//! and each time builds the same set-up: the set-up depends on the screen triangle, the
+//! draw and the viewport, never on the band (see [`setup`](super::setup)). On the
+//! benchmark sphere in 8-row bands half of the set-ups are such repeats, about 2,900
+//! instructions each on Cortex-M0+. A [`KeptSetup`] holds one built set-up (up to
+//! [`KEPT_VARYINGS`] varyings) so the next band can take it instead of building it again;
+//! the band renderer decides which ones to keep
+//! ([`BandRenderer::with_setup_cache`](crate::surface::BandRenderer::with_setup_cache)).
+//!
+//! A kept set-up is a copy of the one the triangle would build, so the pixels are the same
+//! with or without it.
+
+use super::setup::TriSetup;
+use crate::raster::Plane;
+use crate::shading::Varyings;
+
+/// Varyings a [`KeptSetup`] holds at most: shaders with more always build their set-up.
+pub const KEPT_VARYINGS: usize = 4;
+
+/// `held` of an entry that holds no set-up (zero, so arrays of empty entries start
+/// zeroed in place rather than copied from a template).
+const NONE: u8 = 0;
+
+/// One raster set-up kept across bands, 88 bytes on 32-bit targets. `Default` and
+/// [`KeptSetup::EMPTY`] are an empty entry (all zero bits); give a band renderer an array
+/// of them.
+#[derive(Clone, Copy, Debug)]
+pub struct KeptSetup {
+    /// Which screen triangle: its id times 256 plus its index among the screen triangles
+    /// its mesh triangle produced (clipped pieces), set by the band renderer.
+    pub(crate) key: u32,
+    /// The band (counted modulo 256) that stored it.
+    pub(crate) band: u8,
+    /// The index of its draw in the band renderer's list.
+    pub(crate) draw: u8,
+    /// Varyings held plus one, or [`NONE`].
+    held: u8,
+    affine: bool,
+    px_ref: i32,
+    py_ref: i32,
+    z: Plane,
+    q: Plane,
+    at_ref: [i32; KEPT_VARYINGS],
+    dx: [i32; KEPT_VARYINGS],
+    dy: [i32; KEPT_VARYINGS],
+}
+
+impl Default for KeptSetup {
+    fn default() -> Self {
+        KeptSetup::EMPTY
+    }
+}
+
+impl KeptSetup {
+    /// An entry holding nothing.
+    pub const EMPTY: KeptSetup = KeptSetup {
+        key: 0,
+        band: 0,
+        draw: 0,
+        held: NONE,
+        affine: false,
+        px_ref: 0,
+        py_ref: 0,
+        z: Plane {
+            at_ref: 0,
+            dx: 0,
+            dy: 0,
+        },
+        q: Plane {
+            at_ref: 0,
+            dx: 0,
+            dy: 0,
+        },
+        at_ref: [0; KEPT_VARYINGS],
+        dx: [0; KEPT_VARYINGS],
+        dy: [0; KEPT_VARYINGS],
+    };
+
+    /// The kept set-up, when it holds one with `V`'s number of varyings. Out of line, as
+    /// [`store`](Self::store): one copy per varying count, not one per span loop.
+    #[inline(never)]
+    pub(crate) fn load<V: Varyings>(&self) -> Option<TriSetup<V>> {
+        if usize::from(self.held) != V::N + 1 {
+            return None;
+        }
+        let (mut at_ref, mut dx, mut dy) = (V::zero(), V::zero(), V::zero());
+        at_ref
+            .as_mut_slice()
+            .copy_from_slice(self.at_ref.get(..V::N)?);
+        dx.as_mut_slice().copy_from_slice(self.dx.get(..V::N)?);
+        dy.as_mut_slice().copy_from_slice(self.dy.get(..V::N)?);
+        Some(TriSetup {
+            px_ref: self.px_ref,
+            py_ref: self.py_ref,
+            z: self.z,
+            q: self.q,
+            at_ref,
+            dx,
+            dy,
+            affine: self.affine,
+        })
+    }
+
+    /// Keeps `setup` (`None`, a triangle that builds none, or too many varyings: empties
+    /// the entry).
+    #[inline(never)]
+    pub(crate) fn store<V: Varyings>(&mut self, setup: Option<&TriSetup<V>>) {
+        self.held = NONE;
+        let Some(s) = setup.filter(|_| V::N <= KEPT_VARYINGS) else {
+            return;
+        };
+        for (to, from) in [
+            (&mut self.at_ref, &s.at_ref),
+            (&mut self.dx, &s.dx),
+            (&mut self.dy, &s.dy),
+        ] {
+            for (t, f) in to.iter_mut().zip(from.as_slice()) {
+                *t = *f;
+            }
+        }
+        (self.px_ref, self.py_ref, self.z, self.q, self.affine) =
+            (s.px_ref, s.py_ref, s.z, s.q, s.affine);
+        self.held = V::N as u8 + 1;
+    }
+
+    /// Marks the entry empty.
+    pub(crate) fn clear(&mut self) {
+        self.held = NONE;
+    }
+}
+
+/// What the raster stage does with a triangle's set-up.
+#[derive(Debug)]
+pub(crate) enum SetupSlot<'s> {
+    /// Build it (no band cache, or nothing kept for this triangle).
+    Build,
+    /// Take it from an earlier band (built when the entry cannot be read).
+    Take(&'s KeptSetup),
+    /// Build it and keep it here for the next band.
+    Keep(&'s mut KeptSetup),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample<const N: usize>(seed: i32) -> TriSetup<[i32; N]> {
+        let plane = |k: i32| Plane {
+            at_ref: seed.wrapping_mul(7).wrapping_add(k),
+            dx: k.wrapping_sub(seed),
+            dy: seed ^ k,
+        };
+        TriSetup {
+            px_ref: seed,
+            py_ref: seed.wrapping_neg(),
+            z: plane(1),
+            q: plane(2),
+            at_ref: core::array::from_fn(|i| seed.wrapping_add(i as i32)),
+            dx: core::array::from_fn(|i| seed.wrapping_mul(3).wrapping_sub(i as i32)),
+            dy: core::array::from_fn(|i| (seed << 4).wrapping_add(i as i32)),
+            affine: seed % 2 == 0,
+        }
+    }
+
+    fn same<const N: usize>(a: &TriSetup<[i32; N]>, b: &TriSetup<[i32; N]>) -> bool {
+        (a.px_ref, a.py_ref, a.z, a.q, a.at_ref, a.dx, a.dy, a.affine)
+            == (b.px_ref, b.py_ref, b.z, b.q, b.at_ref, b.dx, b.dy, b.affine)
+    }
+
+    #[test]
+    fn a_kept_set_up_loads_as_it_was_stored() {
+        let mut k = KeptSetup::default();
+        assert!(k.load::<[i32; 3]>().is_none());
+        for seed in [0, 1, -5, i32::MAX, i32::MIN] {
+            let s3 = sample::<3>(seed);
+            k.store(Some(&s3));
+            assert!(same(&k.load::<[i32; 3]>().unwrap(), &s3));
+            // Another varying count is not this entry's.
+            assert!(k.load::<[i32; 2]>().is_none());
+            let s4 = sample::<4>(seed);
+            k.store(Some(&s4));
+            assert!(same(&k.load::<[i32; 4]>().unwrap(), &s4));
+            let s0 = sample::<0>(seed);
+            k.store(Some(&s0));
+            assert!(same(&k.load::<[i32; 0]>().unwrap(), &s0));
+        }
+    }
+
+    #[test]
+    fn nothing_or_too_many_varyings_empties_the_entry() {
+        let mut k = KeptSetup::default();
+        k.store(Some(&sample::<3>(9)));
+        k.store::<[i32; 3]>(None);
+        assert!(k.load::<[i32; 3]>().is_none());
+        k.store(Some(&sample::<3>(9)));
+        k.store(Some(&sample::<5>(9)));
+        assert!(k.load::<[i32; 5]>().is_none());
+        assert!(k.load::<[i32; 3]>().is_none());
+        k.store(Some(&sample::<3>(9)));
+        k.clear();
+        assert!(k.load::<[i32; 3]>().is_none());
+    }
+}
