@@ -270,7 +270,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
                 self.mode.cull,
                 self.affine(),
                 &mut |s| {
-                    pixels = pixels.wrapping_add((self.raster)(self, s, target, SetupSlot::Build));
+                    pixels = pixels.wrapping_add((self.raster)(self, s, target, None));
                 },
             );
         }
@@ -337,7 +337,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         target: &mut dyn RenderTarget<Color = C>,
     ) -> Result<u32, Error> {
         self.check_target(target)?;
-        Ok((self.raster)(self, tri, target, SetupSlot::Build))
+        Ok((self.raster)(self, tri, target, None))
     }
 
     /// [`screen_triangle`](Self::screen_triangle) for callers that checked the target once.
@@ -346,7 +346,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         tri: &ScreenTriangle,
         target: &mut dyn RenderTarget<Color = C>,
     ) -> u32 {
-        (self.raster)(self, tri, target, SetupSlot::Build)
+        (self.raster)(self, tri, target, None)
     }
 
     /// [`screen_triangle_checked`](Self::screen_triangle_checked) with the set-up taken

@@ -149,16 +149,14 @@ where
     // Kept where the call writes it and lent to the span loop (see `setup`); taken from a
     // band renderer's cache when an earlier band built it (the set-up depends on the
     // triangle, the draw and the viewport only).
-    let build = || setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget);
-    let built = match slot {
-        SetupSlot::Build => build(),
-        SetupSlot::Take(kept) => kept.load::<S::Varyings>().or_else(build),
-        SetupSlot::Keep(entry) => {
-            let built = build();
-            entry.store(built.as_ref());
-            built
-        }
+    // Both arms return into `built` (no copy of the set-up on either path).
+    let built = match &slot {
+        Some(kept) if kept.holds::<S::Varyings>() => kept.load::<S::Varyings>(),
+        _ => setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget),
     };
+    if let Some(entry) = slot.filter(|e| e.is_empty()) {
+        entry.store(built.as_ref());
+    }
     // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {
         return 0;

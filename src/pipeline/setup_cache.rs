@@ -78,11 +78,17 @@ impl KeptSetup {
         dy: [0; KEPT_VARYINGS],
     };
 
+    /// Whether the entry holds a set-up with `V`'s number of varyings.
+    #[inline]
+    pub(crate) fn holds<V: Varyings>(&self) -> bool {
+        usize::from(self.held) == V::N + 1
+    }
+
     /// The kept set-up, when it holds one with `V`'s number of varyings. Out of line, as
     /// [`store`](Self::store): one copy per varying count, not one per span loop.
     #[inline(never)]
     pub(crate) fn load<V: Varyings>(&self) -> Option<TriSetup<V>> {
-        if usize::from(self.held) != V::N + 1 {
+        if !self.holds::<V>() {
             return None;
         }
         let (mut at_ref, mut dx, mut dy) = (V::zero(), V::zero(), V::zero());
@@ -129,18 +135,24 @@ impl KeptSetup {
     pub(crate) fn clear(&mut self) {
         self.held = NONE;
     }
+
+    /// Whether the entry holds a set-up.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.held == NONE
+    }
+
+    /// Marks the entry as holding a set-up without varyings (tests of the band queue).
+    #[cfg(test)]
+    pub(crate) fn fill_for_test(&mut self) {
+        self.held = 1;
+    }
 }
 
-/// What the raster stage does with a triangle's set-up.
-#[derive(Debug)]
-pub(crate) enum SetupSlot<'s> {
-    /// Build it (no band cache, or nothing kept for this triangle).
-    Build,
-    /// Take it from an earlier band (built when the entry cannot be read).
-    Take(&'s KeptSetup),
-    /// Build it and keep it here for the next band.
-    Keep(&'s mut KeptSetup),
-}
+/// What the raster stage does with a triangle's set-up: `None`, build it; an entry that
+/// holds a set-up, take it (an earlier band built it); an empty entry, build it and keep it
+/// there for the next band. One word, so the raster function's argument costs no register
+/// pressure worth measuring.
+pub(crate) type SetupSlot<'s> = Option<&'s mut KeptSetup>;
 
 #[cfg(test)]
 mod tests {

@@ -185,13 +185,6 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
         S: Shader<Varyings = [i32; N]>,
     {
         let params = RasterParams::new(&self.viewport, self.projection, true);
-        raster_shaded::<S, P, D, C, N>(
-            &self.shader,
-            tri,
-            |v| *v,
-            &params,
-            target,
-            super::setup_cache::SetupSlot::Build,
-        )
+        raster_shaded::<S, P, D, C, N>(&self.shader, tri, |v| *v, &params, target, None)
     }
 }

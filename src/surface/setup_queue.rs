@@ -87,7 +87,7 @@ impl<'s> SetupQueue<'s> {
             let from = self.state.head;
             self.pop();
             if !goes_on {
-                return SetupSlot::Take(&self.slots[from]);
+                return Some(&mut self.slots[from]);
             }
             // Moved to the tail for the next band (the same place when the ring is full).
             let to = self.at(self.state.len);
@@ -97,16 +97,18 @@ impl<'s> SetupQueue<'s> {
             self.state.len += 1;
             let entry = &mut self.slots[to];
             entry.band = self.band;
-            return SetupSlot::Take(entry);
+            return Some(entry);
         }
         if goes_on && self.state.len < cap {
             let to = self.at(self.state.len);
             self.state.len += 1;
             let entry = &mut self.slots[to];
+            // Empty: the raster stage builds the set-up and keeps it here.
+            entry.clear();
             (entry.key, entry.draw, entry.band) = (key, draw, self.band);
-            return SetupSlot::Keep(entry);
+            return Some(entry);
         }
-        SetupSlot::Build
+        None
     }
 }
 
@@ -133,9 +135,13 @@ mod tests {
 
     fn ask(q: &mut SetupQueue<'_>, key: u32, goes_on: bool) -> Said {
         match q.slot(key, 0, goes_on) {
-            SetupSlot::Build => Said::Build,
-            SetupSlot::Take(e) => Said::Take(e.key),
-            SetupSlot::Keep(_) => Said::Keep,
+            None => Said::Build,
+            Some(e) if e.is_empty() => {
+                // As the raster stage does: builds the set-up and keeps it.
+                e.fill_for_test();
+                Said::Keep
+            }
+            Some(e) => Said::Take(e.key),
         }
     }
 

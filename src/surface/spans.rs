@@ -47,7 +47,7 @@ use super::setup_queue::{self, QueueState, SetupQueue};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
-use crate::pipeline::{Draw, SetupSlot};
+use crate::pipeline::Draw;
 use crate::Error;
 
 /// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
@@ -342,7 +342,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                     // Kept while the triangle goes on below this band.
                     let slot = match setup_queue::key(id, piece) {
                         Some(key) => setups.slot(key, draw, r1 > end),
-                        None => SetupSlot::Build,
+                        None => None,
                     };
                     *pixels += d.screen_triangle_slot(tri, *band, slot);
                 }
