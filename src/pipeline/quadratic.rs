@@ -312,6 +312,7 @@ mod tests {
             false,
             Some((0, 1)),
             0,
+            None,
         )
         .expect("a triangle")
     }

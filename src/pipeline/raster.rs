@@ -146,17 +146,18 @@ where
         let (x, y) = v.attr_position();
         (x, y, v.z, v.w)
     });
-    // Kept where the call writes it and lent to the span loop (see `setup`); taken from a
-    // band renderer's cache when an earlier band built it (the set-up depends on the
-    // triangle, the draw and the viewport only).
-    // Both arms return into `built` (no copy of the set-up on either path).
-    let built = match &slot {
-        Some(kept) if kept.holds::<S::Varyings>() => kept.load::<S::Varyings>(),
-        _ => setup(pos, &vary, vp, kind, D::TEST, S::TEXCOORDS, params.budget),
-    };
-    if let Some(entry) = slot.filter(|e| e.is_empty()) {
-        entry.store(built.as_ref());
-    }
+    // Kept where the call writes it and lent to the span loop (see `setup`, which also takes
+    // it from, or keeps it in, a band renderer's cache: `slot`).
+    let built = setup(
+        pos,
+        &vary,
+        vp,
+        kind,
+        D::TEST,
+        S::TEXCOORDS,
+        params.budget,
+        slot,
+    );
     // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {
         return 0;

@@ -14,6 +14,7 @@
 //! coordinates to texel units: see [`TexBinding`](crate::shading::TexBinding)).
 
 use super::recip::{Q_FLOOR, Q_ONE};
+use super::setup_cache::SetupSlot;
 use super::stages::ProjKind;
 use crate::math::div::mul_wide_signed;
 use crate::math::div::HW_DIVIDE;
@@ -108,6 +109,10 @@ pub(crate) fn centroid(pos: &[SetupVertex; 3], viewport: Rect) -> (i32, i32) {
 /// moved into the span context, the set-up (about 70 bytes for three varyings) cost two
 /// `memcpy` calls per triangle on Cortex-M0+ (~90 instructions each), and zero-filled there
 /// to be written in place, one `memclr` call (~40).
+///
+/// `slot` is a band renderer's kept set-up for this triangle (see
+/// [`SetupSlot`]): one that holds it is returned as is, an empty one receives the set-up
+/// built here. Handled here, once per varying count, rather than in every raster function.
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn setup<V: Varyings>(
@@ -118,7 +123,13 @@ pub(crate) fn setup<V: Varyings>(
     depth: bool,
     texcoords: Option<(usize, usize)>,
     adaptive_budget: i64,
+    slot: SetupSlot<'_>,
 ) -> Option<TriSetup<V>> {
+    if let Some(kept) = &slot {
+        if kept.holds::<V>() {
+            return kept.load::<V>();
+        }
+    }
     let ps = PlaneSetup::new(
         [
             (pos[0].0, pos[0].1),
@@ -199,7 +210,7 @@ pub(crate) fn setup<V: Varyings>(
         dx.as_mut_slice()[k] = p.dx;
         dy.as_mut_slice()[k] = p.dy;
     }
-    Some(TriSetup {
+    let built = TriSetup {
         px_ref: ps.px_ref,
         py_ref: ps.py_ref,
         z,
@@ -208,7 +219,11 @@ pub(crate) fn setup<V: Varyings>(
         dx,
         dy,
         affine: !perspective,
-    })
+    };
+    if let Some(entry) = slot {
+        entry.store(Some(&built));
+    }
+    Some(built)
 }
 
 #[cfg(test)]

@@ -84,9 +84,8 @@ impl KeptSetup {
         usize::from(self.held) == V::N + 1
     }
 
-    /// The kept set-up, when it holds one with `V`'s number of varyings. Out of line, as
-    /// [`store`](Self::store): one copy per varying count, not one per span loop.
-    #[inline(never)]
+    /// The kept set-up, when it holds one with `V`'s number of varyings.
+    #[inline]
     pub(crate) fn load<V: Varyings>(&self) -> Option<TriSetup<V>> {
         if !self.holds::<V>() {
             return None;
@@ -111,7 +110,7 @@ impl KeptSetup {
 
     /// Keeps `setup` (`None`, a triangle that builds none, or too many varyings: empties
     /// the entry).
-    #[inline(never)]
+    #[inline]
     pub(crate) fn store<V: Varyings>(&mut self, setup: Option<&TriSetup<V>>) {
         self.held = NONE;
         let Some(s) = setup.filter(|_| V::N <= KEPT_VARYINGS) else {
@@ -137,6 +136,7 @@ impl KeptSetup {
     }
 
     /// Whether the entry holds a set-up.
+    #[cfg(test)]
     pub(crate) fn is_empty(&self) -> bool {
         self.held == NONE
     }
