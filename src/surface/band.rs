@@ -277,7 +277,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     /// ([`render_spans`](Self::render_spans) when it re-projects a mesh per band). A
     /// triangle that crosses a band boundary is drawn in both bands; with this, the second
     /// band takes the set-up the first one built instead of building it again (about 2,900
-    /// instructions on Cortex-M0+, 1,000 on Cortex-M4F). Each entry holds one triangle
+    /// instructions on Cortex-M0+, 830 on Cortex-M4F). Each entry holds one triangle
     /// (88 bytes, shaders of up to [`KEPT_VARYINGS`](crate::pipeline::KEPT_VARYINGS)
     /// varyings); the first `setups.len()` triangles crossing each boundary are kept. The
     /// pixels are the same with any length, empty included (the default).
