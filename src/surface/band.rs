@@ -274,9 +274,9 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     }
 
     /// Adds room for raster set-ups kept from one band for the next
-    /// ([`render_spans`](Self::render_spans) when it re-projects a mesh per band). A
-    /// triangle that crosses a band boundary is drawn in both bands; with this, the second
-    /// band takes the set-up the first one built instead of building it again (about 2,900
+    /// ([`render_spans`](Self::render_spans), from its bins or re-projecting a mesh per
+    /// band). A triangle that crosses a band boundary is drawn in both bands; with this, the
+    /// second band takes the set-up the first one built instead of building it again (about 2,900
     /// instructions on Cortex-M0+, 830 on Cortex-M4F). Each entry holds one triangle
     /// (88 bytes, shaders of up to [`KEPT_VARYINGS`](crate::pipeline::KEPT_VARYINGS)
     /// varyings); the first `setups.len()` triangles crossing each boundary are kept. The

@@ -458,11 +458,19 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             } else {
                 let (r0, r1) = band.row_range();
                 let mut pixels = 0;
-                for b in bins[..len].iter().filter(|b| b.meets(r0, r1)) {
+                // Bins in index order in every band: the index is the set-up key.
+                let mut kept = SetupQueue::new(&mut *setups, queue, index as u8);
+                for (i, b) in bins[..len].iter().enumerate() {
+                    if !b.meets(r0, r1) {
+                        continue;
+                    }
                     if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels += d.screen_triangle_checked(&b.tri, band);
+                        let slot = setup_queue::key(i, 0)
+                            .and_then(|key| kept.slot(key, b.draw, i32::from(b.rows.1) > r1));
+                        pixels += d.screen_triangle_slot(&b.tri, band, slot);
                     }
                 }
+                queue = kept.state();
                 pixels
             }
         });

@@ -129,8 +129,9 @@ pub struct Buffers<
     pub setups: [KeptSetup; S],
 }
 
-/// Buffers of the scenes whose triangles fit the bins (cube, floor): no band ranges.
-pub type SmallBuffers = Buffers<0, 32, BINS, 0>;
+/// Buffers of the scenes whose triangles fit the bins (cube, floor): no band ranges, a
+/// kept set-up per bin (a floor or cube triangle meets up to 30 bands).
+pub type SmallBuffers = Buffers<0, 32, BINS, BINS>;
 /// Buffers of the sphere firmware: band ranges, a vertex cache and kept set-ups, no bins (its
 /// ~650 screen triangles would need 68 KB of them). 10 KiB band + 4.4 KB ranges + 2 KB
 /// vertex cache + 3.1 KB set-ups.
