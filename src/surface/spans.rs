@@ -12,7 +12,7 @@
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
 //! instead of one per band; with [`BandRenderer::with_setup_cache`] the raster set-up of a
 //! triangle crossing into the next band is built once for both (the benchmark sphere on
-//! Cortex-M0+: 646.0 -> 588.1 instructions per pixel, 1.18 times the whole frame).
+//! Cortex-M0+: 646.0 -> 587.1 instructions per pixel, 1.18 times the whole frame).
 //!
 //! Ladder of storage (same pixels on every rung, tested):
 //!
@@ -32,7 +32,7 @@
 //!
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
 //! |---|---:|---|---:|---:|
-//! | cube | 12 (6 on screen) | bins (16) | 1,664 + cache 32 x 32 = 1,024 | 18.0 KB |
+//! | cube | 12 (6 on screen) | bins (16) | 1,664 + cache 32 x 32 = 1,024 + set-ups 16 x 88 = 1,408 | 19.2 KB |
 //! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 36 x 88 = 3,168 | 23.4 KB |
 //! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
 //! | any | n | bins | 104 per screen triangle | |
