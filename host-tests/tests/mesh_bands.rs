@@ -281,41 +281,22 @@ fn overflowing_vertices_skip_their_triangles_on_every_path() {
         let d = Draw::dynamic(mode, Some(texture(&tex, &texels)), vp).unwrap();
         for lit in [false, true] {
             let light = lit.then_some(&light);
-            let mut color = vec![Rgb565::default(); w * h];
-            let mut depth = vec![0u16; w * h];
-            let mut fr = Frame::new(&mut color, w as u32, h as u32)
-                .unwrap()
-                .with_depth(&mut depth)
-                .unwrap();
-            fr.clear(raw(0x1234));
-            let px_ref = draw_mesh(&d, &mesh, &model, &camera, light, &mut fr).unwrap();
-            let expected: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+            let (px_ref, expected) =
+                drawn(w, h, |fr| draw_mesh(&d, &mesh, &model, &camera, light, fr));
             assert!(px_ref > 0, "the ordinary triangles are drawn");
             // The marked vertices do overflow: their triangles alone draw nothing (vertex
             // 5 only when lit; unlit, its triangle is ordinary).
             let only = |tris: &[[u16; 3]]| {
                 let m = Mesh::new(&positions, Some(&normals), &uvs, tris).unwrap();
-                let mut color = vec![Rgb565::default(); w * h];
-                let mut depth = vec![0u16; w * h];
-                let mut fr = Frame::new(&mut color, w as u32, h as u32)
-                    .unwrap()
-                    .with_depth(&mut depth)
-                    .unwrap();
-                draw_mesh(&d, &m, &model, &camera, light, &mut fr).unwrap()
+                drawn(w, h, |fr| draw_mesh(&d, &m, &model, &camera, light, fr)).0
             };
             assert_eq!(only(&[[0, 1, 4], [4, 2, 3]]), 0);
             assert_eq!(only(&[[2, 3, 5]]) == 0, lit, "lit {lit}");
             for cache_len in [0usize, 1, 4, 8] {
                 let mut cache = vec![CachedVertex::default(); cache_len];
-                let mut color = vec![Rgb565::default(); w * h];
-                let mut depth = vec![0u16; w * h];
-                let mut fr = Frame::new(&mut color, w as u32, h as u32)
-                    .unwrap()
-                    .with_depth(&mut depth)
-                    .unwrap();
-                fr.clear(raw(0x1234));
-                let px = draw_mesh_walked(&d, &mesh, &xf, light, &mut cache, &mut fr).unwrap();
-                let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+                let (px, walked) = drawn(w, h, |fr| {
+                    draw_mesh_walked(&d, &mesh, &xf, light, &mut cache, fr)
+                });
                 assert_eq!(px, px_ref, "{shading:?} lit {lit} cache {cache_len}");
                 assert!(
                     walked == expected,
@@ -324,4 +305,22 @@ fn overflowing_vertices_skip_their_triangles_on_every_path() {
             }
         }
     }
+}
+
+/// Draws with `draw` into a cleared `w` x `h` frame with depth; returns the pixel count it
+/// reports and the frame's RGB565 bits.
+fn drawn(
+    w: usize,
+    h: usize,
+    draw: impl FnOnce(&mut Frame<'_, Rgb565>) -> Result<u32, fixel::Error>,
+) -> (u32, Vec<u16>) {
+    let mut color = vec![Rgb565::default(); w * h];
+    let mut depth = vec![0u16; w * h];
+    let mut fr = Frame::new(&mut color, w as u32, h as u32)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    fr.clear(raw(0x1234));
+    let px = draw(&mut fr).unwrap();
+    (px, color.iter().map(|&c| bits(c)).collect())
 }
