@@ -138,26 +138,38 @@ impl PlaneSetup {
         let cs = self.cshift;
         let (d1, o1) = a[1].overflowing_sub(a[0]);
         let (d2, o2) = a[2].overflowing_sub(a[0]);
-        if cs != 0 && !(o1 | o2) && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
-            let c = &self.bary;
-            // Each product is below 2^62 in magnitude: the sums fit i64.
-            let gxw = wide::dot2(d1, d2, c[0], c[1]);
-            let gyw = wide::dot2(d1, d2, c[2], c[3]);
-            let round = self.bary_round;
-            let gx = wide::sar(gxw.wrapping_add(round), cs);
-            let gy = wide::sar(gyw.wrapping_add(round), cs);
-            return self.finish(a[0], gx, gy);
-        }
-        self.plane_exact(a)
+        let (gx, gy) =
+            if cs != 0 && !(o1 | o2) && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
+                let c = &self.bary;
+                // Each product is below 2^62 in magnitude: the sums fit i64.
+                let gxw = wide::dot2(d1, d2, c[0], c[1]);
+                let gyw = wide::dot2(d1, d2, c[2], c[3]);
+                let round = self.bary_round;
+                (
+                    wide::sar(gxw.wrapping_add(round), cs),
+                    wide::sar(gyw.wrapping_add(round), cs),
+                )
+            } else {
+                self.exact_gradients(a)
+            };
+        self.finish(a[0], gx, gy)
     }
 
     /// [`Self::plane`] with the gradient as the exactly rounded quotient `n 2^SHIFT / area2`
     /// (the path for slivers and attribute differences beyond the barycentric path's bound;
     /// also the reference the tests hold that path to).
-    #[inline(never)]
     pub fn plane_exact(&self, a: [i32; 3]) -> Plane {
+        let (gx, gy) = self.exact_gradients(a);
+        self.finish(a[0], gx, gy)
+    }
+
+    /// The gradients of [`Self::plane_exact`] (per pixel, `EXTRA` more fraction bits), `(0,
+    /// 0)` for zero area. Out of line, apart from [`Self::finish`]: [`Self::plane`] shares
+    /// its copy of that with the fast path.
+    #[inline(never)]
+    fn exact_gradients(&self, a: [i32; 3]) -> (i64, i64) {
         let Some(div) = ExactDivisor::new(self.area2) else {
-            return Plane::default();
+            return (0, 0);
         };
         let da1 = i64::from(a[1]) - i64::from(a[0]);
         let da2 = i64::from(a[2]) - i64::from(a[0]);
@@ -171,7 +183,7 @@ impl PlaneSetup {
         let nx = mul(da1, dy2) - mul(da2, dy1);
         let ny = mul(da2, dx1) - mul(da1, dx2);
         // Per pixel (<< ATTR_SUBPIXEL_BITS) with EXTRA more fraction bits.
-        self.finish(a[0], div.gradient(nx), div.gradient(ny))
+        (div.gradient(nx), div.gradient(ny))
     }
 
     /// The plane from its gradient `gx, gy` (per pixel, `EXTRA` more fraction bits) and its
@@ -251,62 +263,31 @@ impl ExactDivisor {
         (area_n != 0).then_some(ExactDivisor { area_n, norm })
     }
 
-    /// `n / area_n` rounded to nearest, ties away from zero.
-    fn div_round(&self, n: i64) -> i64 {
+    /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
+    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`. On magnitudes, with `k = SHIFT - norm`:
+    /// `m = q1 area_n + r1` (one division), then `m 2^k / area_n = q1 2^k + r1 2^k /
+    /// area_n`, whose rounding is `q1 2^k` plus the rounded second quotient (a second
+    /// division: `r1 < 2^31`, so `r1 2^k < 2^52`). Exact for every `n`, wrapping modulo 2^64
+    /// where the quotient does not fit. For huge triangles (`norm > SHIFT`) the numerator is
+    /// shifted right (rounded) instead and `k = 0`. Out of line: one copy for both axes.
+    #[inline(never)]
+    fn gradient(&self, n: i64) -> i64 {
+        let (n, k) = if self.norm > SHIFT {
+            let j = (self.norm - SHIFT).min(62);
+            ((n >> j) + ((n >> (j - 1)) & 1), 0)
+        } else {
+            (n, SHIFT - self.norm)
+        };
         let d = self.area_n.unsigned_abs();
-        let q = div_u64(n.unsigned_abs().wrapping_add(d / 2), d) as i64;
+        let m = n.unsigned_abs();
+        let q1 = div_u64(m, d);
+        let r1 = m - q1 * d;
+        let q = (q1 << k).wrapping_add(div_u64((r1 << k) + d / 2, d)) as i64;
         if (n < 0) == (self.area_n < 0) {
             q
         } else {
             q.wrapping_neg()
         }
-    }
-
-    /// `n 2^SHIFT / area2` rounded (ties away from zero), `SHIFT = ATTR_SUBPIXEL_BITS +
-    /// EXTRA`, as `n 2^(SHIFT - norm) / area_n`: one division when the shifted numerator
-    /// fits `i64`, else a long division; for huge triangles (`norm > SHIFT`) the numerator
-    /// is shifted right instead. Wraps modulo 2^64 where the result does not fit. Out of
-    /// line: one copy for both axes.
-    #[inline(never)]
-    fn gradient(&self, n: i64) -> i64 {
-        if self.norm > SHIFT {
-            let k = (self.norm - SHIFT).min(62);
-            return self.div_round((n >> k) + ((n >> (k - 1)) & 1));
-        }
-        let k = SHIFT - self.norm;
-        if n.unsigned_abs() < 1 << (62 - k) {
-            return self.div_round(n << k);
-        }
-        let d = self.area_n.unsigned_abs();
-        long_div_round(n, self.area_n, k, |x| div_u64(x, d))
-    }
-}
-
-/// `n 2^shift / d` rounded to nearest, ties away from zero (`d != 0`), by long division on
-/// magnitudes: truncated quotients of `r 2^k / |d|` with every partial remainder
-/// `r < |d|` and `r 2^k < 2^63`. The result wraps modulo 2^64 when it does not fit.
-fn long_div_round(n: i64, d: i64, shift: u32, div_u64: impl Fn(u64) -> u64) -> i64 {
-    let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
-    let step = 63u32.saturating_sub(64 - dm.leading_zeros()).max(1);
-    let mut q = div_u64(nm);
-    let mut r = nm - q.wrapping_mul(dm);
-    let mut left = shift;
-    while left > 0 {
-        let k = left.min(step);
-        let t = r << k;
-        let qq = div_u64(t);
-        r = t - qq * dm;
-        q = q.wrapping_shl(k).wrapping_add(qq);
-        left -= k;
-    }
-    if 2 * r >= dm {
-        q = q.wrapping_add(1);
-    }
-    let q = q as i64;
-    if (n < 0) == (d < 0) {
-        q
-    } else {
-        q.wrapping_neg()
     }
 }
 
@@ -481,38 +462,6 @@ mod tests {
         }
         assert!(fast > 20_000, "barycentric path taken {fast} times");
         assert!(worst <= 1, "reference value off by {worst} near vertex 0");
-    }
-
-    #[test]
-    fn long_division_matches_wide_arithmetic() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        for _ in 0..100_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            let n = (x as i64) >> (x % 30);
-            let d = ((x.rotate_left(17) as i64) >> (14 + x % 40)).max(1)
-                * if x & 1 == 0 { 1 } else { -1 };
-            for shift in [1, 12, 20, 28] {
-                let wide = (i128::from(n) << shift) as f64 / d as f64;
-                let exact = {
-                    let (nn, dd) = (i128::from(n) << shift, i128::from(d));
-                    let q = nn / dd;
-                    let r = nn - q * dd;
-                    let away = if (nn < 0) == (dd < 0) { 1 } else { -1 };
-                    if 2 * r.abs() >= dd.abs() {
-                        q + away
-                    } else {
-                        q
-                    }
-                };
-                assert_eq!(
-                    long_div_round(n, d, shift, |x| x / d.unsigned_abs()),
-                    exact as i64,
-                    "{n} << {shift} / {d} (~{wide})"
-                );
-            }
-        }
     }
 
     #[test]
