@@ -744,35 +744,37 @@ pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: Target
     bound: &mut DepthBound,
     y: i32,
     x0: i32,
-    x1: i32,
-    row: &mut [C],
+    out: &mut [C],
     depth: Option<&mut [u16]>,
 ) -> Option<u32> {
     let small_triangles = matches!(P::KIND, ProjKind::Affine | ProjKind::Adaptive);
     if !D::TEST || S::LOD || !small_triangles {
         return None;
     }
-    let len = usize::try_from(x1.wrapping_sub(x0)).ok()?;
-    let affine = short_piece::<S, P>(ctx, len)?;
-    let (Ok(a), Ok(b)) = (usize::try_from(x0), usize::try_from(x1)) else {
-        return Some(0);
-    };
-    let Some(out) = row.get_mut(a..b) else {
-        return Some(0);
-    };
-    let zrow = if D::TEST && ctx.depth_on {
-        depth.and_then(|d| d.get_mut(a..b))
-    } else {
-        None
-    };
+    let affine = short_piece::<S, P>(ctx, out.len())?;
+    let zrow = if D::TEST && ctx.depth_on { depth } else { None };
     Some(run_short_any::<S, C, D, true>(
         ctx, bound, x0, y, out, zrow, affine,
     ))
 }
 
-/// Draws pixels `x0..x1` of row `y` into `row` (and `depth`), for a span the rasterizer
-/// emitted, and returns the pixels written. Out-of-range spans are ignored (they cannot
-/// happen; this keeps it panic-free).
+/// The span's depths when the draw tests depth, cut to the span's length (they are the
+/// same pixels: this only lets the loops know both slices are as long).
+#[inline(always)]
+fn span_depth<'z, S: Shader, D: DepthStage>(
+    ctx: &SpanCtx<'_, S>,
+    depth: Option<&'z mut [u16]>,
+    len: usize,
+) -> Option<&'z mut [u16]> {
+    if D::TEST && ctx.depth_on {
+        depth.and_then(|d| d.get_mut(..len))
+    } else {
+        None
+    }
+}
+
+/// Draws the span `out` (pixels `x0..` of row `y`) and its depths `depth` (the same
+/// pixels), sliced out of the target by the writer, and returns the pixels written.
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
@@ -781,21 +783,10 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     scratch: &mut Option<Scratch<S::Varyings>>,
     y: i32,
     x0: i32,
-    x1: i32,
-    row: &mut [C],
+    out: &mut [C],
     depth: Option<&mut [u16]>,
 ) -> u32 {
-    let (Ok(a), Ok(b)) = (usize::try_from(x0), usize::try_from(x1)) else {
-        return 0;
-    };
-    let Some(out) = row.get_mut(a..b) else {
-        return 0;
-    };
-    let zrow = if D::TEST && ctx.depth_on {
-        depth.and_then(|d| d.get_mut(a..b))
-    } else {
-        None
-    };
+    let zrow = span_depth::<S, D>(ctx, depth, out.len());
     type E<S> = ExactInterp<<S as Shader>::Varyings>;
     type L<S, const SUB: bool> = Linear<<S as Shader>::Varyings, SUB>;
     type Q<S> = Quadratic<<S as Shader>::Varyings, false>;

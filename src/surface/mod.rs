@@ -66,6 +66,27 @@ impl<'r, C> Rows<'r, C> {
         Some((color, depth))
     }
 
+    /// Pixels `x0..x1` of row `y` (frame coordinates), colour and depth: the span the
+    /// writer fills. `None` outside the rows, for columns outside `0..width` or `x0 > x1`,
+    /// or where either slice is too short. Never panics.
+    #[inline(always)]
+    pub fn span(&mut self, y: i32, x0: i32, x1: i32) -> Option<Row<'_, C>> {
+        let (start, _) = self.range(y)?;
+        let (Ok(a), Ok(b)) = (usize::try_from(x0), usize::try_from(x1)) else {
+            return None;
+        };
+        if b > self.width {
+            return None;
+        }
+        let (a, b) = (start.wrapping_add(a), start.wrapping_add(b));
+        let color = self.color.get_mut(a..b)?;
+        let depth = match self.depth.as_deref_mut() {
+            Some(d) => Some(d.get_mut(a..b)?),
+            None => None,
+        };
+        Some((color, depth))
+    }
+
     /// [`row`](Self::row), keeping the whole borrow.
     #[inline]
     pub fn into_row(self, y: i32) -> Option<Row<'r, C>> {
