@@ -11,6 +11,9 @@
 //! 3. shading (not inlined, so it gets its own registers): the shader for each visible
 //!    pixel, and the store.
 //!
+//! This module picks the loop for a span and runs its chunks and pieces; the depth pass is
+//! [`depth_pass`], the shading loops [`shade_loop`].
+//!
 //! A span that is one chunk and one linear piece (affine, or subdivided with `N >= 16` and
 //! at most `N` pixels: the spans of finely tessellated meshes, a few pixels long) skips the
 //! chunk and piece bookkeeping: its piece comes from its two ends, then the depth mask and
@@ -22,12 +25,12 @@
 //! falls back to the untested loop).
 
 use super::dyn_interp::DynInterp;
-use super::interp::{step, ExactInterp, Fill, FillSpec, Linear};
+use super::interp::{ExactInterp, Fill, FillSpec, Linear};
 use super::quadratic::Quadratic;
 use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage};
 use crate::color::TargetColor;
-use crate::shading::{Fragment, Shader, Varyings};
+use crate::shading::{Shader, Varyings};
 use crate::texture::LodGranularity;
 
 /// Per-draw, per-triangle state the span loop reads.
@@ -88,315 +91,16 @@ impl<V: Varyings> Scratch<V> {
     }
 }
 
-/// The mask with the low `n` bits set (`n <= 32`).
-#[inline(always)]
-fn low_bits(n: usize) -> u32 {
-    if n >= 32 {
-        u32::MAX
-    } else {
-        (1u32 << n) - 1
-    }
-}
+// Declared here, after the span context and before the loops that use them, where their
+// code stood when it was one file: rustc emits a crate's functions in definition order, and
+// LLVM's choices follow it (declared at the top of `pipeline`, the same code cost the
+// Cortex-M4F whole sphere 0.34 instructions per pixel more).
+mod depth_pass;
+mod shade_loop;
 
-/// Depth test of one chunk (`GL_LESS`, depth `z >> 14` saturated to 16 bits): bit `k` of
-/// the result is set when pixel `k` passes. With `WRITE`, passing depths are written.
-#[inline(always)]
-fn depth_chunk<const WRITE: bool>(z0: i32, dz: i32, zrow: &mut [u16]) -> u32 {
-    if in_depth_range(z0, dz, zrow.len()) {
-        depth_chunk_with::<WRITE, false>(z0, dz, zrow)
-    } else {
-        depth_chunk_with::<WRITE, true>(z0, dz, zrow)
-    }
-}
-
-#[inline(always)]
-fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
-    z0: i32,
-    dz: i32,
-    zrow: &mut [u16],
-) -> u32 {
-    let mut z = z0;
-    let mut m = 0u32;
-    let mut bit = 1u32;
-    for zb in zrow.iter_mut() {
-        let d = depth_of::<CLAMP>(z);
-        if d < i32::from(*zb) {
-            if WRITE {
-                *zb = d as u16;
-            }
-            m |= bit;
-        }
-        bit <<= 1;
-        z = z.wrapping_add(dz);
-    }
-    m
-}
-
-/// The shader's colour for one pixel whose current value is `o`: over it for a blending
-/// shader, alone otherwise (decided at compile time).
-#[inline(always)]
-fn color<S: Shader, C: TargetColor>(
-    shader: &S,
-    f: &Fragment<S::Varyings, S::Triangle>,
-    o: &C,
-) -> Option<u16> {
-    if S::BLENDS {
-        shader.shade_over(f, o.to_rgb565())
-    } else {
-        shader.shade(f)
-    }
-}
-
-/// Where a chunk starts, for the fragments' position fields and the level of detail.
-#[derive(Clone, Copy, Debug)]
-struct Pos {
-    x: i32,
-    y: i32,
-    z: i32,
-    dz: i32,
-    /// The level of detail when it is not per pixel.
-    lambda: i32,
-    /// Read `lambdas` instead of `lambda`.
-    per_pixel: bool,
-}
-
-/// Shades the pixels of `out` whose bit is set in `mask` (bit 0 = first pixel) from the
-/// filled `vals`; with `ZW` (a shader that discards) writes their depth to `zrow` as well.
-/// Returns the pixels written. Not inlined: its registers are allocated on their own, so
-/// the shader's uniforms stay in registers through the loop. As [`shade_linear`], a draw
-/// without a depth stage (`D`) links only one of the two loops.
-#[inline(never)]
-#[allow(clippy::too_many_arguments)]
-fn shade_chunk<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
-    shader: &S,
-    triangle: S::Triangle,
-    vals: &[S::Varyings],
-    lambdas: &[i32],
-    out: &mut [C],
-    zrow: &mut [u16],
-    mask: u32,
-    pos: Pos,
-) -> u32 {
-    let shader = *shader;
-    if !shader.can_draw() {
-        return 0;
-    }
-    let frag = |v: S::Varyings, k: usize| Fragment {
-        varyings: v,
-        x: pos.x.wrapping_add(k as i32),
-        y: pos.y,
-        depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
-        lambda: if pos.per_pixel {
-            lambdas.get(k).copied().unwrap_or(0)
-        } else {
-            pos.lambda
-        },
-        triangle,
-    };
-    let mut written = 0u32;
-    if !S::SMALL && !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
-        for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
-            if let Some(c) = color(&shader, &frag(*v, k), o) {
-                *o = C::from_rgb565(c);
-            }
-        }
-        return out.len().min(vals.len()) as u32;
-    }
-    let mut m = mask;
-    for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
-        if m & 1 != 0 {
-            let f = frag(*v, k);
-            if let Some(c) = color(&shader, &f, o) {
-                *o = C::from_rgb565(c);
-                if ZW {
-                    if let Some(zb) = zrow.get_mut(k) {
-                        *zb = f.depth;
-                    }
-                }
-                written += 1;
-            }
-        }
-        m >>= 1;
-    }
-    written
-}
-
-/// Defines a linear-piece shading loop (`shade_linear` and its inlined twin): one body,
-/// two inlining decisions. A body that is itself `#[inline(always)]` inside the
-/// out-of-line function measured one instruction per pixel more on Cortex-M4F (LLVM
-/// inlines its callees in another order), so the two are expanded separately.
-macro_rules! shade_linear_fn {
-    ($(#[$attr:meta])* $name:ident) => {
-        $(#[$attr])*
-        #[allow(clippy::too_many_arguments)]
-        fn $name<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
-            shader: &S,
-            triangle: S::Triangle,
-            start: &S::Varyings,
-            slope: &S::Varyings,
-            out: &mut [C],
-            zrow: &mut [u16],
-            mask: u32,
-            pos: Pos,
-        ) -> u32 {
-            let shader = *shader;
-            if !shader.can_draw() {
-                return 0;
-            }
-            let slope = *slope;
-            let mut v = *start;
-            let frag = |v: S::Varyings, k: usize| Fragment {
-                varyings: v,
-                x: pos.x.wrapping_add(k as i32),
-                y: pos.y,
-                depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
-                lambda: pos.lambda,
-                triangle,
-            };
-            let mut written = 0u32;
-            if !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
-                for (k, o) in out.iter_mut().enumerate() {
-                    if let Some(c) = color(&shader, &frag(v, k), o) {
-                        *o = C::from_rgb565(c);
-                    }
-                    step(&mut v, &slope);
-                }
-                return out.len() as u32;
-            }
-            let mut m = mask;
-            for (k, o) in out.iter_mut().enumerate() {
-                if m & 1 != 0 {
-                    let f = frag(v, k);
-                    if let Some(c) = color(&shader, &f, o) {
-                        *o = C::from_rgb565(c);
-                        if ZW {
-                            if let Some(zb) = zrow.get_mut(k) {
-                                *zb = f.depth;
-                            }
-                        }
-                        written += 1;
-                    }
-                }
-                m >>= 1;
-                step(&mut v, &slope);
-            }
-            written
-        }
-    };
-}
-
-shade_linear_fn!(
-    /// Like [`shade_chunk`] for a linear piece: the varyings start at `start` and change by
-    /// `slope` per pixel, stepped here in registers. For a draw without a depth stage (`D`)
-    /// and a shader that never discards, every mask is full: only the unmasked loop is
-    /// linked (about 0.7 KB less on Cortex-M4F).
-    #[inline(never)]
-    shade_linear
-);
-
-shade_linear_fn!(
-    /// [`shade_linear`] inlined, for the short path ([`span_short`]): a short span then
-    /// costs no call and no reload of the shader's uniforms.
-    #[inline(always)]
-    shade_linear_inline
-);
-
-/// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels).
-#[inline(always)]
-fn chunk_mask<S: Shader, const Z: bool>(
-    z: i32,
-    dz: i32,
-    zc: &mut [u16],
-    n: usize,
-    bound: &mut DepthBound,
-) -> u32 {
-    if !Z {
-        return low_bits(n);
-    }
-    // Depth is linear along the chunk: its extremes are at the ends.
-    let z_end = z.wrapping_add(dz.wrapping_mul(n as i32 - 1));
-    let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
-    let (d_lo, d_hi) = (d(z.min(z_end)), d(z.max(z_end)));
-    let mask = if S::DISCARDS || S::BLENDS {
-        // Test only: depth is written for the pixels a discarding shader keeps, and never
-        // for a blending one.
-        depth_chunk::<false>(z, dz, zc) & low_bits(n)
-    } else if d_hi < bound.floor {
-        // Nearer than everything stored: every pixel passes, no depth is read.
-        depth_fill(z, dz, zc);
-        low_bits(n)
-    } else {
-        depth_chunk::<true>(z, dz, zc) & low_bits(n)
-    };
-    if mask != 0 {
-        bound.lowest = bound.lowest.min(d_lo);
-    }
-    mask
-}
-
-/// Writes the chunk's depths (all of them pass the test).
-#[inline(always)]
-fn depth_fill(z0: i32, dz: i32, zrow: &mut [u16]) {
-    if in_depth_range(z0, dz, zrow.len()) {
-        depth_fill_with::<false>(z0, dz, zrow)
-    } else {
-        depth_fill_with::<true>(z0, dz, zrow)
-    }
-}
-
-#[inline(always)]
-fn depth_fill_with<const CLAMP: bool>(z0: i32, dz: i32, zrow: &mut [u16]) {
-    let mut z = z0;
-    for zb in zrow.iter_mut() {
-        *zb = depth_of::<CLAMP>(z) as u16;
-        z = z.wrapping_add(dz);
-    }
-}
-
-/// Whether the `n` depths `z0 + k dz` of a chunk are all within the 16-bit depth range
-/// (`z >> 14` in `0..=0xFFFF`, so `z` in `0..2^30`). Depth is linear along the chunk, so it
-/// is enough that both ends are, provided nothing wraps: with `n <= 32` and `|dz| < 2^25`,
-/// `|dz (n - 1)| < 2^30` and the end is exact in `i32`. Then the loops skip the clamp (four
-/// instructions per pixel on x86-64). Always false on Arm ([`SKIP_CLAMP`]).
-#[inline(always)]
-fn in_depth_range(z0: i32, dz: i32, n: usize) -> bool {
-    const TOP: u32 = 1 << 30;
-    let z_end = z0.wrapping_add(dz.wrapping_mul(n as i32 - 1));
-    SKIP_CLAMP
-        && n <= 32
-        && dz.unsigned_abs() < 1 << 25
-        && (z0 as u32) < TOP
-        && (z_end as u32) < TOP
-}
-
-/// Whether depth loops test for a chunk they need not clamp ([`in_depth_range`]): on x86-64
-/// (callgrind: nearest floor 41.4 -> 39.4, cube 145.2 -> 143.0 instructions per pixel) and
-/// RV32 (floor 43.8 -> 39.3, cube 151.8 -> 148.0). Not on Arm. Armv7-M clamps in one `usat`,
-/// and the second loop cost the Cortex-M4F cube 125.9 -> 128.7 (the floor 29.9 -> 31.4). On
-/// Cortex-M0+ the large-span scenes gain (floor 54.0 -> 51.3) but the meshes of small
-/// triangles lose (sphere 706.7 -> 708.8 in bands, 545.0 -> 546.5 whole).
-const SKIP_CLAMP: bool = !cfg!(target_arch = "arm");
-
-/// The 16-bit depth of `z` (Q14 above the depth), `0..=0xFFFF`: clamped with `CLAMP`, else
-/// `z` must be in range (see [`in_depth_range`]).
-#[inline(always)]
-fn depth_of<const CLAMP: bool>(z: i32) -> i32 {
-    if CLAMP {
-        (z >> 14).clamp(0, 0xFFFF)
-    } else {
-        z >> 14
-    }
-}
-
-/// The target's depth floor for one span (see `RenderTarget::depth_floor`) and the lowest
-/// depth the span may have written.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct DepthBound {
-    /// Every stored depth is at least this when the span starts.
-    pub floor: u16,
-    /// A lower bound of the depths this span wrote (`u16::MAX` when none).
-    pub lowest: u16,
-}
+pub(crate) use depth_pass::DepthBound;
+use depth_pass::{chunk_mask, low_bits};
+use shade_loop::{shade_chunk, shade_linear, shade_linear_inline, Pos};
 
 /// Affine and subdivided spans: per chunk, the depth mask, then each linear piece of the
 /// chunk shaded with its varyings stepped in registers.
@@ -945,59 +649,5 @@ mod tests {
         same_pixels::<
             Pipeline<QuadraticBy<4>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>,
         >();
-    }
-
-    /// The depth loops that skip the clamp write and test the same bits as the clamped
-    /// ones, on chunks in range, across its edges and with steep slopes.
-    #[test]
-    fn unclamped_depth_loops_match_clamped_ones() {
-        use super::{depth_chunk, depth_chunk_with, depth_fill, depth_fill_with};
-        let mut rng = Rng(0xDE97_4C1A);
-        let r32 = |rng: &mut Rng| (rng.next() >> 32) as u32;
-        let edges = [
-            0,
-            1,
-            0x3FFF,
-            0x4000,
-            (1 << 30) - 1,
-            1 << 30,
-            i32::MAX,
-            -1,
-            i32::MIN,
-        ];
-        let pick = |rng: &mut Rng, spread: u32| {
-            let base = edges[(r32(rng) % edges.len() as u32) as usize];
-            base.wrapping_add((r32(rng) % (2 * spread + 1)) as i32 - spread as i32)
-        };
-        let mut skipped = 0;
-        for round in 0..200_000 {
-            let z0 = if round % 2 == 0 {
-                pick(&mut rng, 1 << 20)
-            } else {
-                r32(&mut rng) as i32
-            };
-            let dz = match round % 3 {
-                0 => (r32(&mut rng) as i32) >> (r32(&mut rng) % 32),
-                1 => pick(&mut rng, 1 << 12),
-                _ => r32(&mut rng) as i32,
-            };
-            let n = 1 + (r32(&mut rng) % 32) as usize;
-            skipped += usize::from(super::in_depth_range(z0, dz, n));
-            let stored: Vec<u16> = (0..n).map(|_| r32(&mut rng) as u16).collect();
-            let (mut a, mut b) = (stored.clone(), stored.clone());
-            depth_fill(z0, dz, &mut a);
-            depth_fill_with::<true>(z0, dz, &mut b);
-            assert_eq!(a, b, "fill z0 {z0} dz {dz} n {n}");
-            let (mut a, mut b) = (stored.clone(), stored.clone());
-            let ma = depth_chunk::<true>(z0, dz, &mut a);
-            let mb = depth_chunk_with::<true, true>(z0, dz, &mut b);
-            assert_eq!((ma, &a), (mb, &b), "test+write z0 {z0} dz {dz} n {n}");
-            let (mut a, mut b) = (stored.clone(), stored);
-            let ma = depth_chunk::<false>(z0, dz, &mut a);
-            let mb = depth_chunk_with::<false, true>(z0, dz, &mut b);
-            assert_eq!((ma, &a), (mb, &b), "test z0 {z0} dz {dz} n {n}");
-        }
-        // On the host (not Arm) the unclamped loops must actually have run.
-        assert!(skipped > 20_000, "only {skipped} chunks skipped the clamp");
     }
 }

@@ -1,0 +1,180 @@
+//! The shading loops of the span loop: the shader for each visible pixel of a chunk and the
+//! store, from varyings filled into the chunk's array ([`shade_chunk`]) or stepped in
+//! registers along a linear piece ([`shade_linear`], and [`shade_linear_inline`] for the
+//! short path). A blending shader reads the pixel it covers; a discarding one writes its
+//! depth here (the depth pass, [`super::depth_pass`], only tested it).
+
+use super::depth_pass::low_bits;
+use crate::color::TargetColor;
+use crate::pipeline::interp::step;
+use crate::pipeline::stages::DepthStage;
+use crate::shading::{Fragment, Shader};
+
+/// The shader's colour for one pixel whose current value is `o`: over it for a blending
+/// shader, alone otherwise (decided at compile time).
+#[inline(always)]
+pub(super) fn color<S: Shader, C: TargetColor>(
+    shader: &S,
+    f: &Fragment<S::Varyings, S::Triangle>,
+    o: &C,
+) -> Option<u16> {
+    if S::BLENDS {
+        shader.shade_over(f, o.to_rgb565())
+    } else {
+        shader.shade(f)
+    }
+}
+
+/// Where a chunk starts, for the fragments' position fields and the level of detail.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Pos {
+    pub x: i32,
+    pub y: i32,
+    pub z: i32,
+    pub dz: i32,
+    /// The level of detail when it is not per pixel.
+    pub lambda: i32,
+    /// Read `lambdas` instead of `lambda`.
+    pub per_pixel: bool,
+}
+
+/// Shades the pixels of `out` whose bit is set in `mask` (bit 0 = first pixel) from the
+/// filled `vals`; with `ZW` (a shader that discards) writes their depth to `zrow` as well.
+/// Returns the pixels written. Not inlined: its registers are allocated on their own, so
+/// the shader's uniforms stay in registers through the loop. As [`shade_linear`], a draw
+/// without a depth stage (`D`) links only one of the two loops.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn shade_chunk<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
+    shader: &S,
+    triangle: S::Triangle,
+    vals: &[S::Varyings],
+    lambdas: &[i32],
+    out: &mut [C],
+    zrow: &mut [u16],
+    mask: u32,
+    pos: Pos,
+) -> u32 {
+    let shader = *shader;
+    if !shader.can_draw() {
+        return 0;
+    }
+    let frag = |v: S::Varyings, k: usize| Fragment {
+        varyings: v,
+        x: pos.x.wrapping_add(k as i32),
+        y: pos.y,
+        depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
+        lambda: if pos.per_pixel {
+            lambdas.get(k).copied().unwrap_or(0)
+        } else {
+            pos.lambda
+        },
+        triangle,
+    };
+    let mut written = 0u32;
+    if !S::SMALL && !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
+        for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
+            if let Some(c) = color(&shader, &frag(*v, k), o) {
+                *o = C::from_rgb565(c);
+            }
+        }
+        return out.len().min(vals.len()) as u32;
+    }
+    let mut m = mask;
+    for (k, (o, v)) in out.iter_mut().zip(vals).enumerate() {
+        if m & 1 != 0 {
+            let f = frag(*v, k);
+            if let Some(c) = color(&shader, &f, o) {
+                *o = C::from_rgb565(c);
+                if ZW {
+                    if let Some(zb) = zrow.get_mut(k) {
+                        *zb = f.depth;
+                    }
+                }
+                written += 1;
+            }
+        }
+        m >>= 1;
+    }
+    written
+}
+
+/// Defines a linear-piece shading loop (`shade_linear` and its inlined twin): one body,
+/// two inlining decisions. A body that is itself `#[inline(always)]` inside the
+/// out-of-line function measured one instruction per pixel more on Cortex-M4F (LLVM
+/// inlines its callees in another order), so the two are expanded separately.
+macro_rules! shade_linear_fn {
+    ($(#[$attr:meta])* $name:ident) => {
+        $(#[$attr])*
+        #[allow(clippy::too_many_arguments)]
+        pub(super) fn $name<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
+            shader: &S,
+            triangle: S::Triangle,
+            start: &S::Varyings,
+            slope: &S::Varyings,
+            out: &mut [C],
+            zrow: &mut [u16],
+            mask: u32,
+            pos: Pos,
+        ) -> u32 {
+            let shader = *shader;
+            if !shader.can_draw() {
+                return 0;
+            }
+            let slope = *slope;
+            let mut v = *start;
+            let frag = |v: S::Varyings, k: usize| Fragment {
+                varyings: v,
+                x: pos.x.wrapping_add(k as i32),
+                y: pos.y,
+                depth: (pos.z.wrapping_add(pos.dz.wrapping_mul(k as i32)) >> 14).clamp(0, 0xFFFF) as u16,
+                lambda: pos.lambda,
+                triangle,
+            };
+            let mut written = 0u32;
+            if !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
+                for (k, o) in out.iter_mut().enumerate() {
+                    if let Some(c) = color(&shader, &frag(v, k), o) {
+                        *o = C::from_rgb565(c);
+                    }
+                    step(&mut v, &slope);
+                }
+                return out.len() as u32;
+            }
+            let mut m = mask;
+            for (k, o) in out.iter_mut().enumerate() {
+                if m & 1 != 0 {
+                    let f = frag(v, k);
+                    if let Some(c) = color(&shader, &f, o) {
+                        *o = C::from_rgb565(c);
+                        if ZW {
+                            if let Some(zb) = zrow.get_mut(k) {
+                                *zb = f.depth;
+                            }
+                        }
+                        written += 1;
+                    }
+                }
+                m >>= 1;
+                step(&mut v, &slope);
+            }
+            written
+        }
+    };
+}
+
+shade_linear_fn!(
+    /// Like [`shade_chunk`] for a linear piece: the varyings start at `start` and change by
+    /// `slope` per pixel, stepped here in registers. For a draw without a depth stage (`D`)
+    /// and a shader that never discards, every mask is full: only the unmasked loop is
+    /// linked (about 0.7 KB less on Cortex-M4F).
+    #[inline(never)]
+    shade_linear
+);
+
+shade_linear_fn!(
+    /// [`shade_linear`] inlined, for the short path ([`span_short`](super::span_short)): a short span then
+    /// costs no call and no reload of the shader's uniforms.
+    #[inline(always)]
+    shade_linear_inline
+);
