@@ -166,6 +166,7 @@ impl PlaneSetup {
     /// The gradients of [`Self::plane_exact`] (per pixel, `EXTRA` more fraction bits), `(0,
     /// 0)` for zero area. Out of line, apart from [`Self::finish`]: [`Self::plane`] shares
     /// its copy of that with the fast path.
+    #[cold]
     #[inline(never)]
     fn exact_gradients(&self, a: [i32; 3]) -> (i64, i64) {
         let Some(div) = ExactDivisor::new(self.area2) else {

@@ -462,18 +462,24 @@ pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: Target
     ))
 }
 
-/// The span's depths when the draw tests depth, cut to the span's length (they are the
-/// same pixels: this only lets the loops know both slices are as long).
+/// The span's depths when the draw tests depth. On ARMv6-M they are cut to the span's
+/// length first (they are the same pixels: the cut only tells the loops that both slices
+/// are as long), which there keeps a depth step in a register (Cortex-M0+ nearest floor
+/// 47.34 -> 46.47 instructions per pixel); on Cortex-M4F and x86-64 the cut costs (floor
+/// 27.11 -> 27.49, callgrind 39.35 -> 39.71).
 #[inline(always)]
 fn span_depth<'z, S: Shader, D: DepthStage>(
     ctx: &SpanCtx<'_, S>,
     depth: Option<&'z mut [u16]>,
     len: usize,
 ) -> Option<&'z mut [u16]> {
-    if D::TEST && ctx.depth_on {
+    const CUT: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+    if !(D::TEST && ctx.depth_on) {
+        None
+    } else if CUT {
         depth.and_then(|d| d.get_mut(..len))
     } else {
-        None
+        depth
     }
 }
 
