@@ -21,7 +21,7 @@
 //! All are linear in the world position, so the lit pass's perspective-correct
 //! interpolation gives them exactly at each pixel; the spot light divides per pixel
 //! (`s = a / w`, with the span loop's table reciprocal
-//! [`recip_q30`]) into the directional formats.
+//! [`recip_q30`](crate::pipeline::recip::recip_q30)) into the directional formats.
 //! Values saturate at `±2^30`, far outside any map.
 //!
 //! # The compare
@@ -96,232 +96,18 @@
 use super::pcf::ShadowFilter;
 use super::{Fragment, Shader, Varyings};
 use crate::color::modulate_scalar;
-use crate::math::{div_u64, Angle, Fx, Mat4, Vec3};
-use crate::pipeline::recip::{mul_q16, recip_q30};
+use crate::math::div_u64;
 use crate::surface::ShadowMap;
 use crate::Error;
 
-/// Values of light-space varyings saturate here (their differences must fit `i32`).
-const LIMIT: i64 = 1 << 30;
+mod light_space;
+
+pub use light_space::{Directional, LightKind, LightSpace, Spot};
+
 /// `1.0` of the normalized map coordinates `s, t` (Q12.20).
 pub const ST_ONE: i32 = 1 << 20;
 /// One 16-bit depth step in the lookup's depth format (Q16.4).
 pub const DEPTH_STEP: i32 = 16;
-
-/// The light's kind: how vertices carry light-space coordinates and how a pixel gets its
-/// map position from them.
-pub trait LightKind: Copy + core::fmt::Debug + 'static {
-    /// Varyings per vertex (3 or 4).
-    const VARYINGS: usize;
-    /// Name for reports.
-    const NAME: &'static str;
-    /// The light-space varyings of model-space point `p` under `m` (light clip from model);
-    /// unused trailing entries are 0.
-    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4];
-    /// Map position `(s, t)` (Q12.20) and depth `d` (Q16.4) from interpolated varyings, or
-    /// `None` outside the light's frustum.
-    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)>;
-}
-
-/// A directional light: an orthographic light space (parallel rays).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Directional;
-
-/// A spot light: a perspective light space from a point.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Spot;
-
-/// Row `r` of `m` applied to `(p, 1)`, with 32 fraction bits (saturating: each product is
-/// below 2^62, their sum may not be).
-#[inline]
-fn row(m: &Mat4, r: usize, p: Vec3) -> i64 {
-    let e = m.m[r];
-    let t = |a: Fx, b: Fx| i64::from(a.to_bits()) * i64::from(b.to_bits());
-    t(e[0], p.x)
-        .saturating_add(t(e[1], p.y))
-        .saturating_add(t(e[2], p.z))
-        .saturating_add(i64::from(e[3].to_bits()) << 16)
-}
-
-#[inline]
-fn sat(v: i64) -> i32 {
-    v.clamp(-LIMIT, LIMIT) as i32
-}
-
-/// Inside `[0, 1)` (Q12.20).
-#[inline(always)]
-fn in_map(s: i32) -> bool {
-    (s as u32) < ST_ONE as u32
-}
-
-/// Q12.20 depth `r` (1.0 = far plane) to Q16.4 window depth: `r * 65535 / 65536`.
-#[inline(always)]
-fn depth_q4(r: i32) -> i32 {
-    r - (r >> 16)
-}
-
-impl LightKind for Directional {
-    const VARYINGS: usize = 3;
-    const NAME: &'static str = "directional";
-    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
-        let one = 1i64 << 32;
-        let (x, y, z) = (row(m, 0, p), row(m, 1, p), row(m, 2, p));
-        // (x + 1) / 2 with 32 fraction bits -> 20; depth 65535 * 16 * (z + 1) / 2.
-        let d = ((z.saturating_add(one) >> 12).saturating_mul(65535)) >> 17;
-        [
-            sat(x.saturating_add(one) >> 13),
-            sat(one.saturating_sub(y) >> 13),
-            sat(d),
-            0,
-        ]
-    }
-    #[inline(always)]
-    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
-        let [s, t, d, _] = v;
-        (in_map(s) && in_map(t) && (0..=65535 * DEPTH_STEP).contains(&d)).then_some((s, t, d))
-    }
-}
-
-impl LightKind for Spot {
-    const VARYINGS: usize = 4;
-    const NAME: &'static str = "spot";
-    fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
-        let (x, y, z, w) = (row(m, 0, p), row(m, 1, p), row(m, 2, p), row(m, 3, p));
-        [
-            sat(x.saturating_add(w) >> 17),
-            sat(w.saturating_sub(y) >> 17),
-            sat(z.saturating_add(w) >> 17),
-            sat(w >> 16),
-        ]
-    }
-    #[inline(always)]
-    fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
-        let [a, b, c, w] = v;
-        // Inside the frustum without dividing: 0 <= a < w, 0 <= b < w, 0 <= c <= w.
-        if w <= 0 || !(0..w).contains(&a) || !(0..w).contains(&b) || !(0..=w).contains(&c) {
-            return None;
-        }
-        // Normalise w to [2^29, 2^30] (a Q30 value the span loop's table reciprocal takes):
-        // a, b, c shifted alike stay below 2^30, and n / w in Q30 is n r >> 16, one 32x32
-        // product (split on ARMv6-M), then Q20. Relative error below 2^-16: under 1/256
-        // texel on a 256 map, under one depth step.
-        let k = w.leading_zeros().saturating_sub(2);
-        let r = recip_q30(w << k);
-        let q = |n: i32| mul_q16(n << k, r) >> 10;
-        Some((
-            q(a).min(ST_ONE - 1),
-            q(b).min(ST_ONE - 1),
-            depth_q4(q(c).min(ST_ONE)),
-        ))
-    }
-}
-
-/// The light's world-to-clip matrix, for a light kind `K`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct LightSpace<K> {
-    matrix: Mat4,
-    _kind: core::marker::PhantomData<K>,
-}
-
-impl<K: LightKind> LightSpace<K> {
-    /// The world-to-light-clip matrix (view, then projection).
-    pub fn matrix(&self) -> &Mat4 {
-        &self.matrix
-    }
-
-    /// Light clip from model space: `matrix * model` (per mesh).
-    pub fn with_model(&self, model: &Mat4) -> Mat4 {
-        self.matrix.mul(model)
-    }
-
-    /// The light-space varyings of model-space point `p` under `with_model(model)`.
-    #[inline]
-    pub fn varyings(m: &Mat4, p: Vec3) -> [i32; 4] {
-        K::vertex(m, p)
-    }
-}
-
-impl LightSpace<Directional> {
-    /// A directional light looking from `eye` towards `target` (`up` roughly up in the
-    /// map), whose map covers a square of half-side `half` around the axis and depths
-    /// `near..far` along it (an orthographic box, world units).
-    ///
-    /// # Errors
-    /// [`Error::BadProjection`] if `half <= 0`, `far <= near`, or `look_at` refuses the
-    /// axis.
-    pub fn directional(
-        eye: Vec3,
-        target: Vec3,
-        up: Vec3,
-        half: Fx,
-        near: Fx,
-        far: Fx,
-    ) -> Result<Self, Error> {
-        if half <= Fx::ZERO {
-            return Err(Error::BadProjection(
-                "directional light: half-side must be > 0",
-            ));
-        }
-        if far <= near {
-            return Err(Error::BadProjection(
-                "directional light: far must be > near",
-            ));
-        }
-        let (o, i) = (Fx::ZERO, Fx::ONE);
-        let depth = far - near;
-        let k = Fx::from_num(2)
-            .checked_div(depth)
-            .ok_or(Error::BadProjection(
-                "directional light: depth range too small",
-            ))?;
-        let inv = i.checked_div(half).ok_or(Error::BadProjection(
-            "directional light: half-side too small",
-        ))?;
-        let c = (far + near)
-            .checked_div(depth)
-            .ok_or(Error::BadProjection("directional light: bad depth range"))?;
-        let ortho = Mat4::from_rows([[inv, o, o, o], [o, inv, o, o], [o, o, -k, -c], [o, o, o, i]]);
-        Self::from_matrix(ortho.mul(&Mat4::look_at(eye, target, up)?))
-    }
-
-    /// A directional light from any affine world-to-clip matrix.
-    ///
-    /// # Errors
-    /// [`Error::BadProjection`] unless the last row is `(0, 0, 0, 1)`.
-    pub fn from_matrix(matrix: Mat4) -> Result<Self, Error> {
-        if matrix.m[3] != [Fx::ZERO, Fx::ZERO, Fx::ZERO, Fx::ONE] {
-            return Err(Error::BadProjection(
-                "directional light: the matrix must be affine (last row 0, 0, 0, 1)",
-            ));
-        }
-        Ok(LightSpace {
-            matrix,
-            _kind: core::marker::PhantomData,
-        })
-    }
-}
-
-impl LightSpace<Spot> {
-    /// A spot light at `eye` looking at `target`, cone of full angle `fov` (a square map),
-    /// depths `near..far`.
-    ///
-    /// # Errors
-    /// As [`Mat4::perspective`] and [`Mat4::look_at`].
-    pub fn spot(
-        eye: Vec3,
-        target: Vec3,
-        up: Vec3,
-        fov: Angle,
-        near: Fx,
-        far: Fx,
-    ) -> Result<Self, Error> {
-        let proj = Mat4::perspective(fov, Fx::ONE, near, far)?;
-        Ok(LightSpace {
-            matrix: proj.mul(&Mat4::look_at(eye, target, up)?),
-            _kind: core::marker::PhantomData,
-        })
-    }
-}
 
 /// What a point outside the light's frustum gets.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

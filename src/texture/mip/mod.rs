@@ -1,0 +1,288 @@
+//! Mipmaps: a power-of-two pyramid of a texture (Williams), level selection from the
+//! screen-space derivatives of the texel coordinates (Heckbert), and GL's minification
+//! filters.
+//!
+//! # Storage
+//! A chain is one contiguous, row-major `&[Rgb565]`: level 0 (`w x h`), then level 1
+//! (`max(1, w/2) x max(1, h/2)`), and so on, down to 1 x 1 or to a chosen number of levels:
+//! at most 4/3 of the base size. [`MipTexture`] views each level as a [`Texture`]. Chains are
+//! built at compile time (`cargo xtask bake`) or at run time by [`generate_mips`] into
+//! caller-provided storage with a 2 x 2 box filter (per channel `(a + b + c + d + 2) >> 2`;
+//! where a side is already 1 the two texels along the other side are averaged,
+//! `(a + b + 1) >> 1`).
+//!
+//! # Level of detail (GL ES 3.0 §3.8.11)
+//! `lambda = log2(rho)` with Heckbert's
+//! `rho = max(sqrt(ux^2 + vx^2), sqrt(uy^2 + vy^2))` (derivatives of the level-0 texel
+//! coordinates per pixel), computed without a square root as `log2(max(...)) / 2`, with
+//! `leading_zeros` and a 64-entry table: `lambda` is Q8.8 (256 = one level), within 1/64
+//! of a level. Then `lambda' = clamp(lambda + bias, min, max)`; `lambda' <= 0` magnifies
+//! (the magnification filter on level 0); otherwise:
+//! * `*_MIPMAP_NEAREST`: level `0` when `lambda' <= 1/2`, else `ceil(lambda' + 1/2) - 1`;
+//! * `*_MIPMAP_LINEAR`: levels `floor(lambda')` and the next, blended by `frac(lambda')`
+//!   (8-bit weight, per channel, rounded).
+//!
+//! Levels beyond the chain are clamped to the last.
+
+use embedded_graphics_core::pixelcolor::raw::RawU16;
+use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
+
+use super::texture::{Texture, MAX_LOG2_SIZE};
+use crate::Error;
+
+mod lod;
+mod sampler;
+
+pub use lod::{lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
+pub use sampler::{
+    lerp565, DynMip, LinearMipmapNearest, Mipmapped, NearestMipmapLinear, NearestMipmapNearest,
+    TexSampler, Trilinear,
+};
+
+/// Most levels a chain can have (4096 down to 1).
+pub const MAX_LEVELS: usize = MAX_LOG2_SIZE as usize + 1;
+
+/// Number of texels in a chain of `levels` levels from a `width x height` base.
+pub const fn chain_len(width: u32, height: u32, levels: u32) -> usize {
+    let mut n = 0usize;
+    let mut k = 0;
+    while k < levels {
+        n += level_side(width, k) as usize * level_side(height, k) as usize;
+        k += 1;
+    }
+    n
+}
+
+/// Side of level `k` for a base side `s`: `max(1, s >> k)`.
+pub const fn level_side(s: u32, k: u32) -> u32 {
+    let v = if k >= 32 { 0 } else { s >> k };
+    if v == 0 {
+        1
+    } else {
+        v
+    }
+}
+
+/// Levels of a full chain down to 1 x 1: `log2(max(width, height)) + 1`.
+pub const fn full_levels(width: u32, height: u32) -> u32 {
+    let m = if width > height { width } else { height };
+    if m == 0 {
+        0
+    } else {
+        32 - m.leading_zeros()
+    }
+}
+
+/// A texture with a mip chain: level `k` is a [`Texture`] view into one contiguous slice.
+#[derive(Clone, Copy, Debug)]
+pub struct MipTexture<'a> {
+    levels: [Texture<'a>; MAX_LEVELS],
+    count: u8,
+    /// Level 0's bilinear footprints (see [`BilinearFootprint`](super::BilinearFootprint)),
+    /// or empty. Here, not in [`Texture`], so that textures and chains that do not carry
+    /// them pay nothing: 8 bytes per chain instead of 8 per level.
+    footprints: &'a [u64],
+}
+
+impl<'a> MipTexture<'a> {
+    /// A one-level "chain": plain sampling, no mipmapping.
+    pub const fn single(t: Texture<'a>) -> Self {
+        MipTexture {
+            levels: [t; MAX_LEVELS],
+            count: 1,
+            footprints: &[],
+        }
+    }
+
+    /// Adds level 0's bilinear footprints (word `i` holds texel `i`, its right neighbour,
+    /// and the two texels below them, built by [`footprint_texels`](super::footprint_texels)
+    /// or [`write_footprints`](super::write_footprints)), which
+    /// [`BilinearFootprint`](super::BilinearFootprint) reads: one 64-bit word per bilinear
+    /// sample instead of four texels.
+    ///
+    /// # Errors
+    /// - [`Error::WrongLength`] if `footprints.len()` is not level 0's `width * height`,
+    /// - [`Error::FootprintMismatch`] at the first word that is not texel `i`'s footprint
+    ///   (the check reads every word once).
+    pub fn with_footprints(mut self, footprints: &'a [u64]) -> Result<Self, Error> {
+        super::footprint::check_footprints(self.base(), footprints)?;
+        self.footprints = footprints;
+        Ok(self)
+    }
+
+    /// [`MipTexture::with_footprints`] for statics, checked at compile time when evaluated
+    /// in a `const`/`static` (at run time otherwise):
+    /// `static T: MipTexture = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);`.
+    ///
+    /// Only the length can be checked in a `const` (the texels are `Rgb565`, whose value a
+    /// `const fn` cannot read): build `footprints` with
+    /// [`footprint_texels`](super::footprint_texels) from the same raw texels. Words that
+    /// do not match draw their own colours under
+    /// [`BilinearFootprint`](super::BilinearFootprint); nothing panics or reads out of
+    /// bounds.
+    ///
+    /// # Panics
+    /// If `footprints.len()` is not level 0's `width * height`.
+    #[must_use]
+    pub const fn with_footprints_static(mut self, footprints: &'a [u64]) -> Self {
+        assert!(
+            footprints.len() == self.levels[0].texels().len(),
+            "footprints must hold one word per texel of level 0"
+        );
+        self.footprints = footprints;
+        self
+    }
+
+    /// Level 0's footprints, or an empty slice when none were added.
+    #[inline(always)]
+    pub const fn footprints(&self) -> &'a [u64] {
+        self.footprints
+    }
+
+    /// Views `chain` (laid out as in the module docs) as `levels` levels of a
+    /// `width x height` base. Errors: the base's [`Texture::new`] errors,
+    /// [`Error::BadSize`] for zero levels or more than the full chain has,
+    /// [`Error::WrongLength`] when `chain` is not exactly [`chain_len`] long.
+    pub fn new(chain: &'a [Rgb565], width: u32, height: u32, levels: u32) -> Result<Self, Error> {
+        let full = full_levels(width, height);
+        if levels == 0 || levels > full || levels as usize > MAX_LEVELS {
+            return Err(Error::BadSize(levels));
+        }
+        let expected = chain_len(width, height, levels);
+        if chain.len() != expected {
+            return Err(Error::WrongLength {
+                expected,
+                actual: chain.len(),
+            });
+        }
+        let mut out = MipTexture::single(Texture::new(
+            &chain[..(width * height) as usize],
+            width,
+            height,
+        )?);
+        let mut off = 0usize;
+        for k in 0..levels {
+            let (w, h) = (level_side(width, k), level_side(height, k));
+            let n = (w * h) as usize;
+            let slice = chain.get(off..off + n).ok_or(Error::WrongLength {
+                expected,
+                actual: chain.len(),
+            })?;
+            out.levels[k as usize] = Texture::new(slice, w, h)?;
+            off += n;
+        }
+        out.count = levels as u8;
+        Ok(out)
+    }
+
+    /// The same chain with border colour `c` on every level.
+    pub fn with_border(mut self, c: Rgb565) -> Self {
+        for l in self.levels.iter_mut() {
+            *l = l.with_border(c);
+        }
+        self
+    }
+
+    /// Number of levels.
+    pub fn levels(&self) -> u32 {
+        u32::from(self.count)
+    }
+
+    /// Level `k`, clamped to the last level.
+    #[inline(always)]
+    pub fn level(&self, k: u32) -> &Texture<'a> {
+        let k = (k as usize)
+            .min(usize::from(self.count).saturating_sub(1))
+            .min(MAX_LEVELS - 1);
+        &self.levels[k]
+    }
+
+    /// Level 0.
+    #[inline(always)]
+    pub fn base(&self) -> &Texture<'a> {
+        &self.levels[0]
+    }
+}
+
+/// Fills levels `1..levels` of `chain` from level 0 (which the caller has written) with a
+/// 2 x 2 box filter. Same layout and errors as [`MipTexture::new`].
+pub fn generate_mips(
+    chain: &mut [Rgb565],
+    width: u32,
+    height: u32,
+    levels: u32,
+) -> Result<(), Error> {
+    // Validates sizes and the length.
+    MipTexture::new(chain, width, height, levels)?;
+    let mut src_off = 0usize;
+    for k in 1..levels {
+        let (sw, sh) = (level_side(width, k - 1), level_side(height, k - 1));
+        let (dw, dh) = (level_side(width, k), level_side(height, k));
+        let dst_off = src_off + (sw * sh) as usize;
+        let (src_part, dst_part) = chain.split_at_mut(dst_off);
+        let src = &src_part[src_off..];
+        for j in 0..dh {
+            for i in 0..dw {
+                let (x0, y0) = (2 * i, 2 * j);
+                let (x1, y1) = ((x0 + 1).min(sw - 1), (y0 + 1).min(sh - 1));
+                let at = |x: u32, y: u32| {
+                    src.get((y * sw + x) as usize)
+                        .map_or(0, |c| c.into_storage())
+                };
+                let texels = [at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)];
+                let n = if sw == 1 || sh == 1 { 2 } else { 4 };
+                let avg = |shift: u32, mask: u16| -> u16 {
+                    let sum: u32 = if n == 4 {
+                        texels.iter().map(|t| u32::from((t >> shift) & mask)).sum()
+                    } else {
+                        // One side is 1: x1 == x0 or y1 == y0, so texels[0] and texels[3]
+                        // are the two distinct texels.
+                        2 * (u32::from((texels[0] >> shift) & mask)
+                            + u32::from((texels[3] >> shift) & mask))
+                    };
+                    ((sum + 2) >> 2) as u16 & mask
+                };
+                let c = (avg(11, 0x1F) << 11) | (avg(5, 0x3F) << 5) | avg(0, 0x1F);
+                if let Some(d) = dst_part.get_mut((j * dw + i) as usize) {
+                    *d = Rgb565::from(RawU16::new(c));
+                }
+            }
+        }
+        src_off = dst_off;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::vec;
+    #[test]
+    fn chain_layout_and_box_filter() {
+        assert_eq!(chain_len(4, 2, 3), 8 + 2 + 1);
+        assert_eq!(full_levels(64, 64), 7);
+        assert_eq!(full_levels(256, 128), 9);
+        let px = |r: u8, g: u8, b: u8| Rgb565::new(r, g, b);
+        let mut chain = vec![px(0, 0, 0); chain_len(4, 2, 3)];
+        chain[..8].copy_from_slice(&[
+            px(4, 0, 0),
+            px(8, 0, 0),
+            px(0, 4, 0),
+            px(0, 8, 0),
+            px(4, 0, 0),
+            px(8, 0, 1),
+            px(0, 4, 0),
+            px(0, 8, 3),
+        ]);
+        generate_mips(&mut chain, 4, 2, 3).unwrap();
+        assert_eq!(chain[8], px(6, 0, 0)); // (4+8+4+8+2)/4 = 6; blue (0+0+0+1+2)/4 = 0
+        assert_eq!(chain[9], px(0, 6, 1)); // blue (0+0+0+3+2)/4 = 1
+        assert_eq!(chain[10], px(3, 3, 1)); // 2x1 -> 1x1: (6+0+1)/2 = 3 (r), 3 (g), 1 (b)
+        let mip = MipTexture::new(&chain, 4, 2, 3).unwrap();
+        assert_eq!(mip.levels(), 3);
+        assert_eq!(mip.level(2).width(), 1);
+        assert!(MipTexture::new(&chain[..10], 4, 2, 3).is_err());
+        assert!(MipTexture::new(&chain, 4, 2, 4).is_err());
+    }
+}
