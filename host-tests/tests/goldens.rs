@@ -2,7 +2,7 @@
 //! compared bit for bit with `host-tests/golden/*.png`. After an intended
 //! change, `FIXEL_BLESS=1 cargo test -p host-tests --test goldens` (or
 //! `cargo xtask bless`) rewrites them; review the images before committing.
-//! The error budgets against the reference live in `budgets.rs`; goldens
+//! The error budgets against the reference live in `budgets/`; goldens
 //! only catch unintended changes.
 
 use fixel::pipeline::{DrawMode, Projection, Shading};
