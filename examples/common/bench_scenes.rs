@@ -3,7 +3,7 @@
 //!
 //! A case is a scene (cube, sphere, floor) plus a [`Mode`] (lit or not, filter, projection).
 //! The modes are those of `examples/firmware/src/modes.rs`, included here word for word
-//! (as in the report firmwares and `host-tests/src/bin/report.rs`): one mode table, one
+//! (as in the report firmwares and `host-tests/src/bin/report/`): one mode table, one
 //! [`Mode::draw`] and one [`Mode::write_name`] for the firmwares, the host report and these
 //! benchmarks. Every mode is a typed `Pipeline` built with `Draw::new_mip`: the per-pixel
 //! loop is monomorphised for exactly that combination and chosen once per draw. Lit modes

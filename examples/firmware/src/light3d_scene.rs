@@ -8,7 +8,7 @@
 //! 0.9 KB for the light-map draw's copy without the intensity). Kept out of the firmware
 //! library (the bins include it by path) so the other firmwares' code does not move. Shared
 //! with the host test `host-tests/tests/mcu_checksums.rs` and the report
-//! (`host-tests/src/bin/noise_report.rs`), which render the same frame.
+//! (`host-tests/src/bin/noise_report/`), which render the same frame.
 
 use crate::scenes::{Fnv1a, FrameResult, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;

@@ -3,7 +3,7 @@
 //! builds them: one monomorphised span loop per mode).
 //!
 //! Shared word for word by the report firmwares (`src/bin/report_*.rs`) and the host report
-//! (`host-tests/src/bin/report.rs`, included there with `#[path]`), so the mode a
+//! (`host-tests/src/bin/report/`, included there with `#[path]`), so the mode a
 //! microcontroller counts and the mode the host times and measures are the same code.
 //! Only `fixel` and `core` are used here.
 

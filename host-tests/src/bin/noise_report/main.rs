@@ -27,303 +27,45 @@
 //! Writes `noise.md`, `noise_plot.png` (cost against PSNR to the ideal) and the frames
 //! (`noise_marble.png`, `noise_light3d.png`, `noise_flame.png`, the floors).
 
-#[path = "../../../examples/firmware/src/light3d_scene.rs"]
+#[path = "../../../../examples/firmware/src/light3d_scene.rs"]
 mod light3d_scene;
-#[path = "../../../examples/firmware/src/noise.rs"]
+#[path = "../../../../examples/firmware/src/noise.rs"]
 #[allow(dead_code)]
 mod noise;
-#[path = "../../../examples/firmware/src/scenes.rs"]
+#[path = "../../../../examples/firmware/src/scenes.rs"]
 #[allow(dead_code)]
 mod scenes;
 
+mod frames;
+mod plot;
+mod rows;
+
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
-use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::geometry::{Cull, Vertex, Viewport};
-use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw, SubdividedBy};
+use fixel::geometry::Vertex;
+use fixel::pipeline::{Exact, SubdividedBy};
 use fixel::shading::noise::{
-    BandLimit, Fixed, FlameShader, LitSolid, Ramp, Ramps, Select, SolidShader, SELECT_OFFSET,
+    BandLimit, Fixed, LitSolid, Ramps, Select, SolidShader, SELECT_OFFSET,
 };
-use fixel::shading::Shader;
-use fixel::surface::Frame;
 use fixel::texture::LodGranularity;
-use host_tests::metrics::{compare_rgb565, Report};
+use host_tests::metrics::compare_rgb565;
 use host_tests::noise_scenes::{OctaveMode, SolidScene};
 use host_tests::png_io::write_png_rgb8;
 use host_tests::reference::noise::{
-    inverse_square, light_map_trilinear, render_flame, render_solid, render_solid_lit, RefLight,
-    RefOctaves, RefPattern,
+    inverse_square, light_map_trilinear, render_solid, render_solid_lit, RefLight, RefOctaves,
+    RefPattern,
 };
+
+use frames::{
+    flame_frames, flame_reference, rgb8, sphere_frame, sphere_frame_in, sphere_tris, whole_frame,
+};
+use plot::plot;
+use rows::{read_mcu, row, thousands, Row};
 
 const W: u32 = scenes::W;
 const H: u32 = scenes::H;
-
-/// One measured variant.
-struct Row {
-    name: String,
-    pixels: usize,
-    ns_px: f64,
-    m0: Option<(f64, bool)>,
-    m4: Option<(f64, bool)>,
-    vs_ref: Report,
-    vs_ideal: Report,
-}
-
-fn bits(px: &[Rgb565]) -> Vec<u16> {
-    px.iter().map(|&c| RawU16::from(c).into_inner()).collect()
-}
-
-/// The sphere's triangles, from the firmware's vertex code.
-fn sphere_tris() -> Vec<[Vertex<4>; 3]> {
-    let mut verts = [None; noise::VERTS];
-    noise::vertices(&mut verts);
-    (0..noise::TRIS)
-        .filter_map(|t| {
-            let i = noise::sphere_triangle(t);
-            let v = |k: usize| verts[usize::from(i[k])];
-            Some([v(0)?, v(1)?, v(2)?])
-        })
-        .collect()
-}
-
-/// Whole-frame pixels, coverage and FNV-1a checksum of the firmware scene with `shader`,
-/// and host ns/px of the firmware's band code (median of `runs`).
-fn sphere_frame<S: Shader<Varyings = [i32; 4]>>(
-    shader: S,
-    tris: &[[Vertex<4>; 3]],
-    runs: u32,
-) -> (Vec<u16>, Vec<bool>, u32, f64) {
-    sphere_frame_in::<S, Exact>(shader, tris, runs)
-}
-
-/// [`sphere_frame`] with projection `J`.
-fn sphere_frame_in<S: Shader<Varyings = [i32; 4]>, J: ProjectionStage>(
-    shader: S,
-    tris: &[[Vertex<4>; 3]],
-    runs: u32,
-) -> (Vec<u16>, Vec<bool>, u32, f64) {
-    let mut buf = Box::new(noise::NoiseBuffers::new());
-    whole_frame::<S, J, 4>(shader, tris, runs, &mut || {
-        noise::render_in::<S, J>(shader, &mut buf, &mut || {}, &mut || {}).unwrap()
-    })
-}
-
-/// The frame of `tris` drawn whole with `shader` (pixels, coverage, FNV-1a checksum), and
-/// host ns/px of `bands` (the firmware's band code, median of `runs`; its checksum must be
-/// the whole frame's).
-fn whole_frame<S: Shader<Varyings = [i32; N]>, J: ProjectionStage, const N: usize>(
-    shader: S,
-    tris: &[[Vertex<N>; 3]],
-    runs: u32,
-    bands: &mut dyn FnMut() -> scenes::FrameResult,
-) -> (Vec<u16>, Vec<bool>, u32, f64) {
-    let draw =
-        ShadedDraw::<S, J, NoDepth>::new(shader, Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
-            .unwrap();
-    let n = (W * H) as usize;
-    let mut color = vec![Rgb565::new(0, 0, 0); n];
-    let mut frame = Frame::new(&mut color, W, H).unwrap();
-    frame.clear(Rgb565::new(0, 0, 0));
-    for t in tris {
-        draw.clip_triangles(&[*t], &mut frame).unwrap();
-    }
-    let mut sum = scenes::Fnv1a::default();
-    sum.pixels(frame.pixels());
-    let px = bits(frame.pixels());
-    // Coverage: the same triangles drawn flat white into a black frame.
-    let marker = ShadedDraw::<_, Exact, NoDepth>::new(
-        fixel::shading::Flat(0xFFFF),
-        Viewport::new(0, 0, W, H).unwrap(),
-        Cull::Back,
-    )
-    .unwrap();
-    let mut mc = vec![Rgb565::new(0, 0, 0); n];
-    let mut mf = Frame::new(&mut mc, W, H).unwrap();
-    for t in tris {
-        let flat: [Vertex<0>; 3] = t.map(|v| Vertex::new(v.position, []));
-        marker.clip_triangles(&[flat], &mut mf).unwrap();
-    }
-    let cov: Vec<bool> = bits(mf.pixels()).iter().map(|&c| c != 0).collect();
-    let mut times = Vec::new();
-    let mut pixels = 1;
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        let r = bands();
-        times.push(t0.elapsed().as_secs_f64());
-        assert_eq!(r.checksum, sum.0, "band and whole frames differ");
-        pixels = r.stats.pixels.max(1);
-    }
-    times.sort_by(f64::total_cmp);
-    (
-        px,
-        cov,
-        sum.0,
-        times[times.len() / 2] * 1e9 / f64::from(pixels),
-    )
-}
-
-/// The flame firmware's frames (`noise::flame_frames_with`: 4 frames of 80 x 96, t = i/8
-/// s) drawn whole with `octaves`: all frames' pixels in order, coverage (all), the FNV-1a
-/// checksum over them, and host ns/px of the firmware's code (median of `runs`).
-fn flame_frames(octaves: u8, runs: u32) -> (Vec<u16>, Vec<bool>, u32, f64) {
-    let ramp = Ramp::from_keys(&fixel::shading::noise::FLAME_KEYS).unwrap();
-    let vp = Viewport::new(0, 0, noise::FLAME_W, noise::FLAME_H).unwrap();
-    let mut px = Vec::new();
-    let mut sum = scenes::Fnv1a::default();
-    for i in 0..4 {
-        let shader = FlameShader {
-            ramp: &ramp,
-            t: i << 13,
-            octaves,
-        };
-        let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None).unwrap();
-        let mut color = vec![Rgb565::new(0, 0, 0); noise::FLAME_PIXELS];
-        let mut frame = Frame::new(&mut color, noise::FLAME_W, noise::FLAME_H).unwrap();
-        draw.clip_triangles(&flame_quad(), &mut frame).unwrap();
-        sum.pixels(frame.pixels());
-        px.extend(bits(frame.pixels()));
-    }
-    let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
-    let mut times = Vec::new();
-    let mut pixels = 1;
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        let r = noise::flame_frames_with(&mut color, 4, octaves, &mut || {}, &mut || {}).unwrap();
-        times.push(t0.elapsed().as_secs_f64());
-        assert_eq!(r.checksum, sum.0, "flame frames differ");
-        pixels = r.stats.pixels.max(1);
-    }
-    times.sort_by(f64::total_cmp);
-    let cov = vec![true; px.len()];
-    (
-        px,
-        cov,
-        sum.0,
-        times[times.len() / 2] * 1e9 / f64::from(pixels),
-    )
-}
-
-/// The flame firmware's quad (NDC `-1..1`, [`noise::FLAME_QUAD`] flame units).
-fn flame_quad() -> [[Vertex<2>; 3]; 2] {
-    let (x0, x1, y0, y1) = noise::FLAME_QUAD;
-    let v = |xn: i32, yn: i32, x: i32, y: i32| {
-        Vertex::new(
-            [
-                fixel::math::Fx::from_num(xn),
-                fixel::math::Fx::from_num(yn),
-                fixel::math::Fx::ZERO,
-                fixel::math::Fx::ONE,
-            ],
-            [x, y],
-        )
-    };
-    let (a, b, c, d) = (
-        v(-1, -1, x0, y0),
-        v(1, -1, x1, y0),
-        v(1, 1, x1, y1),
-        v(-1, 1, x0, y1),
-    );
-    [[a, b, c], [a, c, d]]
-}
-
-/// The f64 flame over the 4 frames, `ss × ss` samples per pixel: raw RGB565 in order.
-fn flame_reference(octaves: u32, ss: u32) -> Vec<u16> {
-    (0..4)
-        .flat_map(|i| {
-            render_flame(
-                &flame_quad(),
-                f64::from(i) / 8.0,
-                octaves,
-                ss,
-                noise::FLAME_W,
-                noise::FLAME_H,
-            )
-            .rgb565()
-        })
-        .collect()
-}
-
-/// A row from a frame (pixels, coverage, checksum, ns/px), its MCU counts (checksums
-/// checked against the frame's) and its errors against the reference and the ideal.
-#[allow(clippy::too_many_arguments)]
-fn row(
-    name: &str,
-    res: (Vec<u16>, Vec<bool>, u32, f64),
-    mcu: &[(String, String, f64, String)],
-    r: &[u16],
-    rcov: &[bool],
-    ideal: &[u16],
-    icov: &[bool],
-) -> Row {
-    let (px, cov, sum, ns) = res;
-    let get = |t: &str| {
-        mcu.iter()
-            .find(|(m, tt, _, _)| m == name && tt == t)
-            .map(|(_, _, ipp, c)| (*ipp, *c == format!("0x{sum:08x}")))
-    };
-    Row {
-        name: name.to_string(),
-        pixels: cov.iter().filter(|&&c| c).count(),
-        ns_px: ns,
-        m0: get("Cortex-M0+"),
-        m4: get("Cortex-M4F"),
-        vs_ref: compare_rgb565(&px, &cov, r, rcov),
-        vs_ideal: compare_rgb565(&px, &cov, ideal, icov),
-    }
-}
-
-/// `28899` as `28,899`.
-fn thousands(n: usize) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, c) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
-}
-
-fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return Vec::new();
-    };
-    text.lines()
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split('\t').collect();
-            if f.len() < 6 || f[0] != "noise" {
-                return None;
-            }
-            let insns: f64 = f[3].parse().ok()?;
-            let px: f64 = f[4].parse().ok()?;
-            Some((
-                f[1].to_string(),
-                f[2].to_string(),
-                insns / px.max(1.0),
-                f[5].to_string(),
-            ))
-        })
-        .collect()
-}
-
-fn rgb8(px: &[u16]) -> Vec<u8> {
-    px.iter()
-        .flat_map(|&c| {
-            let (r, g, b) = ((c >> 11) & 31, (c >> 5) & 63, c & 31);
-            [
-                ((r << 3) | (r >> 2)) as u8,
-                ((g << 2) | (g >> 4)) as u8,
-                ((b << 3) | (b >> 2)) as u8,
-            ]
-        })
-        .collect()
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 5u32, None);
@@ -685,90 +427,4 @@ fn main() {
         eprintln!("noise_report: plot: {e}");
     }
     print!("{md}");
-}
-
-/// Left: M4F instructions per pixel (host ns/px without MCU figures) against PSNR to the
-/// ideal on the sphere; right: host ns/px against PSNR to the ideal on the floor.
-fn plot(rows: &[Row], floor: &[Row], path: &Path) -> Result<(), String> {
-    use plotters::prelude::*;
-    let (w, h) = (1200u32, 520u32);
-    let mut buf = vec![255u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (left, right) = root.split_horizontally(w / 2);
-        let mcu = rows.iter().all(|r| r.m4.is_some());
-        for (area, rows, title, xdesc, use_m4, strip) in [
-            (
-                &left,
-                rows,
-                "marble sphere (firmware scene)",
-                if mcu {
-                    "Cortex-M4F instructions / pixel"
-                } else {
-                    "host ns / pixel"
-                },
-                mcu,
-                "marble-",
-            ),
-            (
-                &right,
-                floor,
-                "granite floor to the horizon",
-                "host ns / pixel",
-                false,
-                "granite-",
-            ),
-        ] {
-            let pts: Vec<(f64, f64, &str)> = rows
-                .iter()
-                .map(|r| {
-                    let x = if use_m4 {
-                        r.m4.map_or(r.ns_px, |m| m.0)
-                    } else {
-                        r.ns_px
-                    };
-                    (x, r.vs_ideal.psnr_db.min(99.0), r.name.as_str())
-                })
-                .collect();
-            let x1 = pts.iter().map(|p| p.0).fold(0.0, f64::max) * 1.25;
-            let (y0, y1) = pts
-                .iter()
-                .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
-            let mut chart = ChartBuilder::on(area)
-                .caption(title, ("sans-serif", 18))
-                .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(50)
-                .build_cartesian_2d(0.0..x1.max(1.0), (y0 - 1.0)..(y1 + 1.0))
-                .map_err(|e| e.to_string())?;
-            chart
-                .configure_mesh()
-                .x_desc(xdesc)
-                .y_desc("PSNR vs supersampled, dB")
-                .label_style(("sans-serif", 13))
-                .draw()
-                .map_err(|e| e.to_string())?;
-            for (x, y, name) in pts {
-                let band = name.contains("band");
-                let c = if band {
-                    RGBColor(200, 60, 40)
-                } else {
-                    RGBColor(40, 80, 200)
-                };
-                chart
-                    .draw_series(std::iter::once(Circle::new((x, y), 5, c.filled())))
-                    .map_err(|e| e.to_string())?;
-                chart
-                    .draw_series(std::iter::once(Text::new(
-                        name.replace(strip, ""),
-                        (x, y),
-                        ("sans-serif", 12).into_font(),
-                    )))
-                    .map_err(|e| e.to_string())?;
-            }
-        }
-        root.present().map_err(|e| e.to_string())?;
-    }
-    write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
 }
