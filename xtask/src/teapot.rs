@@ -157,7 +157,7 @@ pub fn obj(tris: &[[usize; 3]], pos: &[[f64; 3]], n: u32) -> String {
 
 /// `teapot [--grid N] [--patches FILE] [--out FILE]`.
 pub fn run(args: &[String]) -> Result<(), BakeError> {
-    let root = crate::root();
+    let root = crate::cmd::root();
     let mut grid = 5u32;
     let mut input = root.join("assets/teapot/newell.txt");
     let mut out = root.join("assets/teapot/teapot.obj");

@@ -1,0 +1,242 @@
+//! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, docs, cross builds,
+//! `mcu`), run fail-fast, and the summary table.
+
+use std::env;
+use std::fmt::Write as _;
+use std::process::{Command, ExitCode, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::cmd::{cargo, fmt_dur, rustup};
+use crate::{mcu, usage_error};
+
+/// Cross targets the library must build for without `std`.
+const CROSS_TARGETS: [&str; 3] = [
+    "thumbv6m-none-eabi",
+    "thumbv7em-none-eabihf",
+    "riscv32imc-unknown-none-elf",
+];
+
+/// Rustup components the CI steps need.
+const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
+
+type StepFn = Box<dyn FnOnce() -> Result<(), String>>;
+
+struct Step {
+    name: String,
+    run: Option<StepFn>, // None = skipped
+    skip_reason: &'static str,
+}
+
+fn step(name: impl Into<String>, f: impl FnOnce() -> Result<(), String> + 'static) -> Step {
+    Step {
+        name: name.into(),
+        run: Some(Box::new(f)),
+        skip_reason: "",
+    }
+}
+
+fn skipped(name: impl Into<String>, reason: &'static str) -> Step {
+    Step {
+        name: name.into(),
+        run: None,
+        skip_reason: reason,
+    }
+}
+
+pub(crate) fn ci(flags: &[String]) -> ExitCode {
+    let mut quick = false;
+    let mut no_cross = false;
+    for f in flags {
+        match f.as_str() {
+            "--quick" => quick = true,
+            "--no-cross" => no_cross = true,
+            other => return usage_error(&format!("unknown flag for `ci`: `{other}`")),
+        }
+    }
+
+    let mut steps = vec![
+        step("toolchain", ensure_toolchain),
+        step("fmt", || cargo(&["fmt", "--all", "--", "--check"]).run()),
+        step("clippy", || {
+            cargo(&[
+                "clippy",
+                "--workspace",
+                "--all-targets",
+                "--",
+                "-D",
+                "warnings",
+            ])
+            .run()
+        }),
+        step("test (debug)", || cargo(&["test", "--workspace"]).run()),
+    ];
+    steps.push(if quick {
+        skipped("test (release)", "--quick")
+    } else {
+        step("test (release)", || {
+            cargo(&["test", "--workspace", "--release"]).run()
+        })
+    });
+    steps.push(step("doc", || {
+        let mut flags = env::var("RUSTDOCFLAGS").unwrap_or_default();
+        if !flags.is_empty() {
+            flags.push(' ');
+        }
+        flags.push_str("-D warnings");
+        cargo(&["doc", "-p", "fixel", "--no-deps"])
+            .env("RUSTDOCFLAGS", flags)
+            .run()
+    }));
+    for t in CROSS_TARGETS {
+        let name = format!("build {t}");
+        steps.push(if no_cross {
+            skipped(name, "--no-cross")
+        } else {
+            step(name, move || {
+                cargo(&["build", "-p", "fixel", "--release", "--target", t]).run()
+            })
+        });
+    }
+
+    // Firmware under QEMU: checksums must equal the host's (and the report is printed).
+    steps.push(if no_cross {
+        skipped("mcu (QEMU)", "--no-cross")
+    } else {
+        step("mcu (QEMU)", || {
+            if mcu::mcu(&[]) == ExitCode::SUCCESS {
+                Ok(())
+            } else {
+                Err("cargo xtask mcu failed (see above)".to_string())
+            }
+        })
+    });
+
+    let total = steps.len();
+    let started = Instant::now();
+    let mut results: Vec<(String, String, Option<Duration>)> = Vec::new();
+    let mut failure: Option<(String, String)> = None;
+
+    for (i, s) in steps.into_iter().enumerate() {
+        let n = i + 1;
+        if failure.is_some() {
+            results.push((s.name, "not run".into(), None));
+            continue;
+        }
+        let Some(f) = s.run else {
+            println!(
+                "\n==> [{n}/{total}] {}: skipped ({})",
+                s.name, s.skip_reason
+            );
+            results.push((s.name, format!("skipped ({})", s.skip_reason), None));
+            continue;
+        };
+        println!("\n==> [{n}/{total}] {}", s.name);
+        let t0 = Instant::now();
+        let r = f();
+        let dt = t0.elapsed();
+        match r {
+            Ok(()) => {
+                println!("==> [{n}/{total}] {}: ok in {}", s.name, fmt_dur(dt));
+                results.push((s.name, "ok".into(), Some(dt)));
+            }
+            Err(msg) => {
+                println!("==> [{n}/{total}] {}: FAILED after {}", s.name, fmt_dur(dt));
+                results.push((s.name.clone(), "FAILED".into(), Some(dt)));
+                failure = Some((s.name, msg));
+            }
+        }
+    }
+
+    print_summary(&results, started.elapsed());
+    match failure {
+        None => {
+            println!("\nci: all steps passed");
+            ExitCode::SUCCESS
+        }
+        Some((name, msg)) => {
+            eprintln!("\nci: FAILED at step `{name}`: {msg}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn print_summary(results: &[(String, String, Option<Duration>)], total: Duration) {
+    let w = results.iter().map(|r| r.0.len()).max().unwrap_or(4).max(5);
+    let mut out = String::new();
+    let _ = writeln!(out, "\n==> ci summary");
+    let _ = writeln!(out, "  {:<w$}  {:<20}  {:>9}", "step", "status", "time");
+    let _ = writeln!(
+        out,
+        "  {}  {}  {}",
+        "-".repeat(w),
+        "-".repeat(20),
+        "-".repeat(9)
+    );
+    for (name, status, dt) in results {
+        let t = dt.map(fmt_dur).unwrap_or_else(|| "-".into());
+        let _ = writeln!(out, "  {name:<w$}  {status:<20}  {t:>9}");
+    }
+    let _ = writeln!(
+        out,
+        "  {}  {}  {}",
+        "-".repeat(w),
+        "-".repeat(20),
+        "-".repeat(9)
+    );
+    let _ = writeln!(out, "  {:<w$}  {:<20}  {:>9}", "total", "", fmt_dur(total));
+    print!("{out}");
+}
+
+/// Step 1: make sure the cross targets and rustfmt/clippy are installed for
+/// the active (pinned) toolchain.
+fn ensure_toolchain() -> Result<(), String> {
+    if Command::new("rustup")
+        .arg("--version")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_err()
+    {
+        println!(
+            "warning: `rustup` not found; cannot check targets/components \
+             (the fmt/clippy/cross steps will fail if they are missing)"
+        );
+        return Ok(());
+    }
+
+    let installed = rustup(&["target", "list", "--installed"]).output()?;
+    let missing: Vec<&str> = CROSS_TARGETS
+        .iter()
+        .copied()
+        .filter(|t| !installed.lines().any(|l| l.trim() == *t))
+        .collect();
+    if missing.is_empty() {
+        println!("targets: all installed ({})", CROSS_TARGETS.join(", "));
+    } else {
+        println!("targets: installing {}", missing.join(", "));
+        let mut args = vec!["target", "add"];
+        args.extend(&missing);
+        rustup(&args).run()?;
+    }
+
+    let installed = rustup(&["component", "list", "--installed"]).output()?;
+    let missing: Vec<&str> = COMPONENTS
+        .iter()
+        .copied()
+        .filter(|c| {
+            !installed.lines().any(|l| {
+                let l = l.trim();
+                l == *c || l.strip_prefix(c).is_some_and(|r| r.starts_with('-'))
+            })
+        })
+        .collect();
+    if missing.is_empty() {
+        println!("components: all installed ({})", COMPONENTS.join(", "));
+    } else {
+        println!("components: installing {}", missing.join(", "));
+        let mut args = vec!["component", "add"];
+        args.extend(&missing);
+        rustup(&args).run()?;
+    }
+    Ok(())
+}

@@ -1,0 +1,89 @@
+//! Building the firmwares (`examples/firmware`: band, opt-level s and whole-frame builds)
+//! and reading their ELF files: paths and flash/RAM section sizes.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use super::tools::{output, run_visible};
+use super::{firmware_dir, Mcu, MCUS, WHOLE_MCUS, WHOLE_SCENES};
+
+/// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
+/// directory so the default build's artefacts stay).
+pub(super) fn build_whole(td: &Path) -> Result<(), String> {
+    let mut cmd = Command::new("cargo");
+    cmd.current_dir(firmware_dir())
+        .args(["build", "--release", "--features", "whole"])
+        .arg("--target-dir")
+        .arg(td)
+        .env("FIXEL_FW_MEMORY", "whole")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("CARGO_TARGET_DIR");
+    for b in WHOLE_SCENES.iter().chain(&["geometry"]) {
+        cmd.args(["--bin", b]);
+    }
+    for m in &WHOLE_MCUS {
+        cmd.args(["--target", m.triple]);
+    }
+    run_visible(
+        &mut cmd,
+        "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
+         --target-dir target/whole --bin whole_* --bin bump --bin geometry --target <3 MCU targets>)",
+    )
+}
+
+/// Builds every firmware binary for every MCU target (one cargo invocation).
+pub(super) fn build_firmware(
+    extra_env: &[(&str, &str)],
+    target_dir: Option<&Path>,
+) -> Result<(), String> {
+    let mut cmd = Command::new("cargo");
+    cmd.current_dir(firmware_dir())
+        .args(["build", "--release", "--bins"])
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("CARGO_TARGET_DIR");
+    for m in &MCUS {
+        cmd.args(["--target", m.triple]);
+    }
+    if let Some(d) = target_dir {
+        cmd.arg("--target-dir").arg(d);
+    }
+    for (k, v) in extra_env {
+        cmd.env(k, v);
+    }
+    run_visible(
+        &mut cmd,
+        "(cd examples/firmware && cargo build --release --bins --target <3 MCU targets>)",
+    )
+}
+
+pub(super) fn elf(target_dir: &Path, m: &Mcu, bin: &str) -> PathBuf {
+    target_dir.join(m.triple).join("release").join(bin)
+}
+
+/// Section sizes (`llvm-size -A`): (flash = vector table + text + rodata + data,
+/// static RAM = data + bss + uninit).
+pub(super) fn sizes(llvm: &Path, elf: &Path) -> Result<(u64, u64), String> {
+    let out = output(
+        Command::new(llvm.join("llvm-size")).arg("-A").arg(elf),
+        "llvm-size -A",
+    )?;
+    let mut s: BTreeMap<String, u64> = BTreeMap::new();
+    for l in out.lines() {
+        let f: Vec<&str> = l.split_whitespace().collect();
+        if f.len() >= 2 {
+            if let Ok(n) = f[1].parse() {
+                s.insert(f[0].to_string(), n);
+            }
+        }
+    }
+    let g = |k: &str| s.get(k).copied().unwrap_or(0);
+    Ok((
+        g(".vector_table") + g(".text") + g(".rodata") + g(".data"),
+        g(".data") + g(".bss") + g(".uninit"),
+    ))
+}

@@ -1,0 +1,186 @@
+//! `cargo xtask mcu` and `cargo xtask size`: fixel on microcontroller instruction sets,
+//! under QEMU, with exact instruction counts (a TCG plugin), a cycle estimate, flash and RAM.
+//!
+//! Everything is driven through `std::process::Command`: rustup, apt-get, cargo, gcc (the
+//! plugin, `xtask/mcu/icount.c`), qemu-system-{arm,riscv32}, llvm-nm/llvm-size (rustup's
+//! `llvm-tools`) and python3 (the cycle model, `xtask/mcu/cycles.py`).
+//!
+//! This module holds what the parts share: the MCU profiles, the scene lists, the paths and
+//! the flags. `scenes` is `cargo xtask mcu`, `size` is `cargo xtask size`, `report` the
+//! microcontroller part of `cargo xtask report`; `tools`, `firmware` and `qemu` build and
+//! run.
+
+mod firmware;
+mod qemu;
+mod report;
+mod scenes;
+mod size;
+mod tools;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use crate::cmd::root;
+
+pub use report::report_mcu;
+pub use scenes::mcu;
+pub use size::size;
+
+/// One MCU profile: Rust target, QEMU machine, cycle model.
+struct Mcu {
+    label: &'static str,
+    triple: &'static str,
+    qemu: &'static str,
+    machine: &'static [&'static str],
+    /// Core name for `cycles.py`.
+    core: &'static str,
+}
+
+const MCUS: [Mcu; 3] = [
+    Mcu {
+        label: "Cortex-M4F",
+        triple: "thumbv7em-none-eabihf",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m4",
+    },
+    // mps2-an386 rather than the microbit (nRF51: 16K of RAM, below the 24K band bar);
+    // ARMv6-M code runs unchanged on the M4 model and counts depend on the instructions only.
+    Mcu {
+        label: "Cortex-M0+",
+        triple: "thumbv6m-none-eabi",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m0plus",
+    },
+    Mcu {
+        label: "RV32IMC",
+        triple: "riscv32imc-unknown-none-elf",
+        qemu: "qemu-system-riscv32",
+        machine: &["-machine", "virt", "-bios", "none"],
+        core: "rv32",
+    },
+];
+
+/// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
+const SCENES: [&str; 20] = [
+    "cube",
+    "sphere",
+    // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
+    "teapot",
+    "floor",
+    "floor_bilinear",
+    // Shadow maps (bands of 4 rows, 64x64 map): light pass per map texel, the lit pass's
+    // no-shadow baseline, lit passes.
+    "shadow_light",
+    "shadow_none",
+    "shadow_single",
+    "shadow_pcf2x2",
+    "shadow_pcf3x3",
+    "shadow_spot",
+    // The grazing light, front faces culled in the light pass.
+    "shadow_grazing",
+    // Solid textures: the marble sphere, the flame and the wooden cube lit by the baked 3D
+    // light map.
+    "noise",
+    "noise_flame",
+    "noise_light3d",
+    // Environment maps: the sphere as a mirror, r per pixel and per vertex.
+    "env_pixel",
+    "env_vertex",
+    // Anti-aliasing (rotated grid through bands) and transparency.
+    "aa_cube",
+    "transparency",
+    // Run-time displacement: a subdivided grid displaced by a moving swell each frame.
+    "water",
+];
+
+/// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
+/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers; and `bump`
+/// (per-pixel lit, bump-mapped sphere), whose per-pixel shader has no band path yet.
+const WHOLE_SCENES: [&str; 7] = [
+    "whole_cube",
+    "whole_sphere",
+    "whole_sphere_adaptive",
+    "whole_sphere_footprint",
+    "whole_floor",
+    "whole_floor_bilinear",
+    "bump",
+];
+
+/// The whole-frame firmwares' machines: `mps2-an386` (4M + 4M SSRAM) for both Arm builds
+/// (ARMv6-M code runs unchanged on the M4 model; counts depend on the instruction stream
+/// only) and RV32 `virt` (128 MB).
+const WHOLE_MCUS: [Mcu; 3] = [
+    Mcu {
+        label: "Cortex-M4F",
+        triple: "thumbv7em-none-eabihf",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m4",
+    },
+    Mcu {
+        label: "Cortex-M0+",
+        triple: "thumbv6m-none-eabi",
+        qemu: "qemu-system-arm",
+        machine: &["-machine", "mps2-an386"],
+        core: "m0plus",
+    },
+    Mcu {
+        label: "RV32IMC",
+        triple: "riscv32imc-unknown-none-elf",
+        qemu: "qemu-system-riscv32",
+        machine: &["-machine", "virt", "-bios", "none"],
+        core: "rv32",
+    },
+];
+
+fn fail(msg: impl AsRef<str>) -> ExitCode {
+    eprintln!("xtask: {}", msg.as_ref());
+    ExitCode::FAILURE
+}
+
+fn firmware_dir() -> PathBuf {
+    root().join("examples").join("firmware")
+}
+
+fn out_dir() -> PathBuf {
+    root().join("target").join("mcu")
+}
+
+/// Flags shared by `mcu` and `size`.
+struct Flags {
+    runs: u32,
+    profile: bool,
+    opt_s: bool,
+    install: bool,
+}
+
+fn parse_flags(cmd: &str, rest: &[String]) -> Result<Flags, ExitCode> {
+    let mut f = Flags {
+        runs: 2,
+        profile: false,
+        opt_s: false,
+        install: true,
+    };
+    let mut it = rest.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--profile" if cmd == "mcu" => f.profile = true,
+            "--opt-s" => f.opt_s = true,
+            "--no-install" => f.install = false,
+            "--runs" if cmd == "mcu" => {
+                f.runs = match it.next().and_then(|n| n.parse().ok()) {
+                    Some(n) if n >= 1 => n,
+                    _ => return Err(crate::usage_error("--runs needs a number >= 1")),
+                }
+            }
+            other => {
+                return Err(crate::usage_error(&format!(
+                    "{cmd}: unknown flag `{other}`"
+                )))
+            }
+        }
+    }
+    Ok(f)
+}
