@@ -17,28 +17,54 @@
 mod bench_scenes;
 
 use bench_scenes::{Bench, Case, MODES, SCENES};
+use clap::{error::ErrorKind, CommandFactory, Parser};
 use std::process::ExitCode;
 
+/// Command line (`cargo xtask count` runs `--list`, then `<scene>/<mode> [N]`).
+#[derive(Parser)]
+#[command(
+    name = "count_scene",
+    about = "Renders one benchmark case for N frames, for counting instructions under callgrind",
+    long_about = None
+)]
+struct Args {
+    /// Print every case id (scene/mode), docs/scenes.md cases first, and exit
+    #[arg(long)]
+    list: bool,
+    /// The case to render, `<scene>/<mode>`, e.g. `cube/lit-bilinear-exact`
+    #[arg(
+        value_name = "SCENE/MODE",
+        value_parser = parse_case,
+        required_unless_present = "list"
+    )]
+    case: Option<Case>,
+    /// Frames to draw [default: the scene's N]; 0 is the baseline (set-up only)
+    #[arg(value_name = "FRAMES")]
+    frames: Option<u32>,
+}
+
+fn parse_case(s: &str) -> Result<Case, String> {
+    Case::parse(s).ok_or_else(|| "not a `<scene>/<mode>` case (see `--list`)".to_string())
+}
+
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.first().map(String::as_str) == Some("--list") {
+    let args = Args::parse();
+    if args.list {
         for c in SCENES.iter().chain(MODES.iter()) {
             println!("{}", c.id());
         }
         return ExitCode::SUCCESS;
     }
-    let Some(case) = args.first().and_then(|s| Case::parse(s)) else {
-        eprintln!("usage: count_scene --list | count_scene <scene>/<mode> [frames]");
-        return ExitCode::from(2);
+    let Some(case) = args.case else {
+        // Not reached: clap requires the case unless `--list`.
+        Args::command()
+            .error(
+                ErrorKind::MissingRequiredArgument,
+                "no `<scene>/<mode>` case",
+            )
+            .exit()
     };
-    let frames = match args.get(1).map(|s| s.parse::<u32>()) {
-        None => case.scene.frames(),
-        Some(Ok(n)) => n,
-        Some(Err(e)) => {
-            eprintln!("count_scene: bad frame count: {e}");
-            return ExitCode::from(2);
-        }
-    };
+    let frames = args.frames.unwrap_or_else(|| case.scene.frames());
     let mut bench = Bench::new(case);
     let pixels = bench.run(frames);
     // Keep the frame observable so nothing is optimised away.

@@ -28,6 +28,7 @@ mod alpha;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use clap::Parser;
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use fixel::demo;
 use fixel::scene::SamplePattern;
@@ -129,21 +130,31 @@ fn errors(px: &[Rgb565], refr: &[[f64; 3]], cov: &[f64]) -> (f64, f64, f64, f64)
     )
 }
 
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "aa_report",
+    about = "Speed against error for anti-aliasing (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for aa.md and aa.png
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed frames per variant (host ns per display pixel: median)
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 3u32, None);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
-            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
-            other => {
-                eprintln!("usage: aa_report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)");
-                std::process::exit(2);
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+    } = Args::parse();
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

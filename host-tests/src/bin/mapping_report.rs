@@ -29,6 +29,7 @@ mod teapot {
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use clap::Parser;
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use fixel::geometry::Vertex;
 use fixel::math::{Fx, Vec3};
@@ -107,23 +108,31 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "mapping_report",
+    about = "Speed against error for texture-coordinate generation (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for mapping.md and mapping.png
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed runs per generator (host ns per vertex or pixel: median)
+    #[arg(long, value_name = "N", default_value_t = 5)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 5u32, None);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
-            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
-            other => {
-                eprintln!(
-                    "usage: mapping_report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)"
-                );
-                std::process::exit(2);
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+    } = Args::parse();
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

@@ -21,8 +21,10 @@ mod scenes;
 #[allow(dead_code)]
 mod shadow_modes;
 
+use std::path::PathBuf;
 use std::time::Instant;
 
+use clap::Parser;
 use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
 use fixel::shading::shadow::{Bias, LightKind, LightSpace, Outside};
@@ -180,7 +182,24 @@ fn truth<K: LightKind>(space: &LightSpace<K>) -> host_tests::reference::shadow::
     lit_pass(&sc, &map, RefShadowFilter::Single, &ref_bias(&b), 1.0)
 }
 
+/// Command line (`cargo xtask report` passes `--out` and `--mcu`).
+#[derive(Parser)]
+#[command(
+    name = "shadow_report",
+    about = "Report rows for shadow maps: map sizes 32, 64, 128 x the three filters",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for shadow.md and shadow.png [default: the workspace's target/report]
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
+    let args = Args::parse();
     let high = scene::directional(SceneLight::High).unwrap();
     let spot = scene::spot().unwrap();
     let (th, ts) = (truth(&high), truth(&spot));
@@ -188,13 +207,7 @@ fn main() {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/mcu/scenes.md"),
     )
     .unwrap_or_default();
-    let args: Vec<String> = std::env::args().collect();
-    let mcu_path = args
-        .iter()
-        .position(|a| a == "--mcu")
-        .and_then(|i| args.get(i + 1))
-        .map(std::path::PathBuf::from);
-    let fw = Firmware::new(mcu_path.as_deref());
+    let fw = Firmware::new(args.mcu.as_deref());
     let mut out = String::from(
         "Shadow maps on the demo scene (cube on a floor, 320x240). host ns/px: both passes, \
          white inner shader, best of 5 (noisy on a shared machine). M0+ / M4F: exact \
@@ -254,10 +267,9 @@ fn main() {
     }
     out += "\n![shadow maps: host cost against aliasing](shadow.png)\n";
     print!("{out}");
-    let dir = match args.iter().position(|a| a == "--out") {
-        Some(i) if i + 1 < args.len() => std::path::PathBuf::from(&args[i + 1]),
-        _ => std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/report"),
-    };
+    let dir = args.out.unwrap_or_else(|| {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/report")
+    });
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("shadow.md"), &out).unwrap();
     if let Err(e) =

@@ -26,6 +26,7 @@ mod surface;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use clap::Parser;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use host_tests::metrics::compare;
 use host_tests::surface_scene::{self as scene, Assets, Variant};
@@ -52,23 +53,31 @@ fn variant(name: &str) -> Variant {
     }
 }
 
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "surface_report",
+    about = "Speed against error for surface detail (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for surface.md and surface.png
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed frames per variant (host ns per drawn pixel: median)
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 3u32, None);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
-            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
-            other => {
-                eprintln!(
-                    "usage: surface_report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)"
-                );
-                std::process::exit(2);
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+    } = Args::parse();
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

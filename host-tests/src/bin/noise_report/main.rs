@@ -44,6 +44,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use clap::Parser;
 use fixel::geometry::Vertex;
 use fixel::pipeline::{Exact, SubdividedBy};
 use fixel::shading::noise::{
@@ -66,23 +67,32 @@ use rows::{read_mcu, row, thousands, Row};
 
 const W: u32 = scenes::W;
 const H: u32 = scenes::H;
+
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "noise_report",
+    about = "Speed against error for the solid textures (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for noise.md, noise_plot.png and the frames
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed runs per variant (host ns/px: median)
+    #[arg(long, value_name = "N", default_value_t = 5)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 5u32, None);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
-            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
-            other => {
-                eprintln!(
-                    "usage: noise_report --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)"
-                );
-                std::process::exit(2);
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+    } = Args::parse();
     std::fs::create_dir_all(&out).expect("output directory");
     let font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     match std::fs::read(font_path) {

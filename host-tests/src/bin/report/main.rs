@@ -40,6 +40,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use clap::Parser;
 use fixel::demo;
 use host_tests::metrics::compare_rgb565;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -64,27 +65,35 @@ type Job = (usize, Option<(bool, Filt)>);
 /// RGB565 pixels and coverage.
 type Image = (Vec<u16>, Vec<bool>);
 
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "report",
+    about = "Speed against error for every benchmark scene and mode (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for report.md and the plots
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed runs per mode after a warm-up (ns per pixel: median, min, max)
+    #[arg(long, value_name = "N", default_value_t = 7)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+    /// Only this scene: cube, sphere or floor
+    #[arg(long, value_name = "NAME")]
+    scene: Option<String>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let mut out = PathBuf::from("target/report");
-    let mut runs = 7u32;
-    let mut mcu_path: Option<PathBuf> = None;
-    let mut only: Option<String> = None;
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(it.next().expect("--out DIR")),
-            "--runs" => runs = it.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(it.next().expect("--mcu FILE"))),
-            "--scene" => only = Some(it.next().expect("--scene NAME").clone()),
-            other => {
-                eprintln!(
-                    "usage: report --out DIR [--runs N] [--mcu mcu.tsv] [--scene cube|sphere|floor] (got `{other}`)"
-                );
-                std::process::exit(2);
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+        scene: only,
+    } = Args::parse();
     std::fs::create_dir_all(&out).expect("output directory");
     if let Err(e) = host_tests::plot_font::register() {
         eprintln!("report: {e}");

@@ -27,6 +27,7 @@ mod measure;
 
 use std::path::PathBuf;
 
+use clap::Parser;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::geometry::Vertex;
 use fixel::math::Vec3;
@@ -52,19 +53,32 @@ use measure::{band_checksum, cmp, fmt_err, mesh, read_mcu, ref_pixel, ref_vertex
 const W: u32 = 320;
 const H: u32 = 240;
 const SIZE: u32 = 64;
+
+/// Command line (the flags `cargo xtask report` passes).
+#[derive(Parser)]
+#[command(
+    name = "report_env",
+    about = "Speed against error for environment mapping (run by `cargo xtask report`)",
+    long_about = None
+)]
+struct Args {
+    /// Output directory for env.md and env.png
+    #[arg(long, value_name = "DIR", default_value = "target/report")]
+    out: PathBuf,
+    /// Timed whole-frame draws per variant (host ns/px: median)
+    #[arg(long, value_name = "N", default_value_t = 7)]
+    runs: u32,
+    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
+    #[arg(long, value_name = "FILE")]
+    mcu: Option<PathBuf>,
+}
+
 fn main() {
-    let mut args = std::env::args().skip(1);
-    let (mut out, mut runs, mut mcu_path) = (PathBuf::from("target/report"), 7u32, None);
-    while let Some(a) = args.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(args.next().expect("--out DIR")),
-            "--runs" => runs = args.next().and_then(|n| n.parse().ok()).expect("--runs N"),
-            "--mcu" => mcu_path = Some(PathBuf::from(args.next().expect("--mcu FILE"))),
-            other => {
-                panic!("usage: report_env --out DIR [--runs N] [--mcu mcu.tsv] (got `{other}`)")
-            }
-        }
-    }
+    let Args {
+        out,
+        runs,
+        mcu: mcu_path,
+    } = Args::parse();
     let mcu = mcu_path.as_ref().map(read_mcu).unwrap_or_default();
     let faces: Vec<Vec<Rgb565>> = (0..6)
         .map(|f| {
