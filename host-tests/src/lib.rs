@@ -14,6 +14,7 @@ pub mod noise_scenes;
 pub mod plot_font;
 pub mod png_io;
 pub mod reference;
+pub mod report_args;
 pub mod report_mcu;
 pub mod scenes;
 pub mod shadow_scene;

@@ -25,16 +25,16 @@ mod aa;
 #[allow(dead_code)]
 mod alpha;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
 
-use clap::Parser;
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use fixel::demo;
 use fixel::scene::SamplePattern;
 use fixel::texture::Texture;
 use fixel::Rgb565;
 use host_tests::reference::{self, RefTriangle};
+use host_tests::report_args::ReportArgs;
 use host_tests::scenes as ref_scenes;
 
 const W: u32 = 320;
@@ -130,31 +130,16 @@ fn errors(px: &[Rgb565], refr: &[[f64; 3]], cov: &[f64]) -> (f64, f64, f64, f64)
     )
 }
 
-/// Command line (the flags `cargo xtask report` passes).
-#[derive(Parser)]
-#[command(
-    name = "aa_report",
-    about = "Speed against error for anti-aliasing (run by `cargo xtask report`)",
-    long_about = None
-)]
-struct Args {
-    /// Output directory for aa.md and aa.png
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed frames per variant (host ns per display pixel: median)
-    #[arg(long, value_name = "N", default_value_t = 3)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
-}
-
 fn main() {
-    let Args {
+    let ReportArgs {
         out,
         runs,
         mcu: mcu_path,
-    } = Args::parse();
+    } = ReportArgs::parse(
+        "aa_report",
+        "Speed against error for anti-aliasing (run by `cargo xtask report`)",
+        "3",
+    );
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

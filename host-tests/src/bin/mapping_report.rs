@@ -26,10 +26,9 @@ mod teapot {
     include!("../../../assets/teapot/teapot_mesh.rs");
 }
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
 
-use clap::Parser;
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use fixel::geometry::Vertex;
 use fixel::math::{Fx, Vec3};
@@ -42,6 +41,7 @@ use host_tests::metrics::compare;
 use host_tests::reference::two_stage::{RefRule, RefSurface};
 use host_tests::reference::uv_gen::{RefAxis, RefUvMapping};
 use host_tests::reference::{triplanar, RefFilter};
+use host_tests::report_args::ReportArgs;
 use host_tests::scenes::procedural_texture;
 
 struct Row {
@@ -108,31 +108,16 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// Command line (the flags `cargo xtask report` passes).
-#[derive(Parser)]
-#[command(
-    name = "mapping_report",
-    about = "Speed against error for texture-coordinate generation (run by `cargo xtask report`)",
-    long_about = None
-)]
-struct Args {
-    /// Output directory for mapping.md and mapping.png
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed runs per generator (host ns per vertex or pixel: median)
-    #[arg(long, value_name = "N", default_value_t = 5)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
-}
-
 fn main() {
-    let Args {
+    let ReportArgs {
         out,
         runs,
         mcu: mcu_path,
-    } = Args::parse();
+    } = ReportArgs::parse(
+        "mapping_report",
+        "Speed against error for texture-coordinate generation (run by `cargo xtask report`)",
+        "5",
+    );
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

@@ -23,12 +23,11 @@ mod scenes;
 #[allow(dead_code)]
 mod surface;
 
-use std::path::PathBuf;
 use std::time::Instant;
 
-use clap::Parser;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use host_tests::metrics::compare;
+use host_tests::report_args::ReportArgs;
 use host_tests::surface_scene::{self as scene, Assets, Variant};
 
 struct Row {
@@ -53,31 +52,16 @@ fn variant(name: &str) -> Variant {
     }
 }
 
-/// Command line (the flags `cargo xtask report` passes).
-#[derive(Parser)]
-#[command(
-    name = "surface_report",
-    about = "Speed against error for surface detail (run by `cargo xtask report`)",
-    long_about = None
-)]
-struct Args {
-    /// Output directory for surface.md and surface.png
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed frames per variant (host ns per drawn pixel: median)
-    #[arg(long, value_name = "N", default_value_t = 3)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
-}
-
 fn main() {
-    let Args {
+    let ReportArgs {
         out,
         runs,
         mcu: mcu_path,
-    } = Args::parse();
+    } = ReportArgs::parse(
+        "surface_report",
+        "Speed against error for surface detail (run by `cargo xtask report`)",
+        "3",
+    );
     std::fs::create_dir_all(&out).expect("output directory");
     let mcu = mcu_path
         .as_deref()

@@ -41,10 +41,8 @@ mod plot;
 mod rows;
 
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use std::time::Instant;
 
-use clap::Parser;
 use fixel::geometry::Vertex;
 use fixel::pipeline::{Exact, SubdividedBy};
 use fixel::shading::noise::{
@@ -58,6 +56,7 @@ use host_tests::reference::noise::{
     inverse_square, light_map_trilinear, render_solid, render_solid_lit, RefLight, RefOctaves,
     RefPattern,
 };
+use host_tests::report_args::ReportArgs;
 
 use frames::{
     flame_frames, flame_reference, rgb8, sphere_frame, sphere_frame_in, sphere_tris, whole_frame,
@@ -68,31 +67,16 @@ use rows::{read_mcu, row, thousands, Row};
 const W: u32 = scenes::W;
 const H: u32 = scenes::H;
 
-/// Command line (the flags `cargo xtask report` passes).
-#[derive(Parser)]
-#[command(
-    name = "noise_report",
-    about = "Speed against error for the solid textures (run by `cargo xtask report`)",
-    long_about = None
-)]
-struct Args {
-    /// Output directory for noise.md, noise_plot.png and the frames
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed runs per variant (host ns/px: median)
-    #[arg(long, value_name = "N", default_value_t = 5)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
-}
-
 fn main() {
-    let Args {
+    let ReportArgs {
         out,
         runs,
         mcu: mcu_path,
-    } = Args::parse();
+    } = ReportArgs::parse(
+        "noise_report",
+        "Speed against error for the solid textures (run by `cargo xtask report`)",
+        "5",
+    );
     std::fs::create_dir_all(&out).expect("output directory");
     let font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     match std::fs::read(font_path) {

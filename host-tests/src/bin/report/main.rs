@@ -37,12 +37,12 @@ mod plot;
 mod rows;
 
 use std::collections::BTreeMap;
-use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Parser;
 use fixel::demo;
 use host_tests::metrics::compare_rgb565;
+use host_tests::report_args::{parse_with_runs, ReportArgs};
 use indicatif::{ProgressBar, ProgressStyle};
 use modes::Filt;
 
@@ -73,15 +73,8 @@ type Image = (Vec<u16>, Vec<bool>);
     long_about = None
 )]
 struct Args {
-    /// Output directory for report.md and the plots
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed runs per mode after a warm-up (ns per pixel: median, min, max)
-    #[arg(long, value_name = "N", default_value_t = 7)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
+    #[command(flatten)]
+    common: ReportArgs,
     /// Only this scene: cube, sphere or floor
     #[arg(long, value_name = "NAME")]
     scene: Option<String>,
@@ -89,11 +82,13 @@ struct Args {
 
 fn main() {
     let Args {
-        out,
-        runs,
-        mcu: mcu_path,
+        common: ReportArgs {
+            out,
+            runs,
+            mcu: mcu_path,
+        },
         scene: only,
-    } = Args::parse();
+    } = parse_with_runs::<Args>("7");
     std::fs::create_dir_all(&out).expect("output directory");
     if let Err(e) = host_tests::plot_font::register() {
         eprintln!("report: {e}");

@@ -25,9 +25,6 @@ mod env;
 
 mod measure;
 
-use std::path::PathBuf;
-
-use clap::Parser;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::geometry::Vertex;
 use fixel::math::Vec3;
@@ -47,6 +44,7 @@ use host_tests::reference::env::{
     latlong_sample, reflect, render_varyings, render_varyings_with_derivatives, sphere_sample,
 };
 use host_tests::reference::{RefFilter, RefTexture};
+use host_tests::report_args::ReportArgs;
 
 use measure::{band_checksum, cmp, fmt_err, mesh, read_mcu, ref_pixel, ref_vertex, run};
 
@@ -54,31 +52,16 @@ const W: u32 = 320;
 const H: u32 = 240;
 const SIZE: u32 = 64;
 
-/// Command line (the flags `cargo xtask report` passes).
-#[derive(Parser)]
-#[command(
-    name = "report_env",
-    about = "Speed against error for environment mapping (run by `cargo xtask report`)",
-    long_about = None
-)]
-struct Args {
-    /// Output directory for env.md and env.png
-    #[arg(long, value_name = "DIR", default_value = "target/report")]
-    out: PathBuf,
-    /// Timed whole-frame draws per variant (host ns/px: median)
-    #[arg(long, value_name = "N", default_value_t = 7)]
-    runs: u32,
-    /// Microcontroller instruction counts (mcu.tsv, written by `cargo xtask report`)
-    #[arg(long, value_name = "FILE")]
-    mcu: Option<PathBuf>,
-}
-
 fn main() {
-    let Args {
+    let ReportArgs {
         out,
         runs,
         mcu: mcu_path,
-    } = Args::parse();
+    } = ReportArgs::parse(
+        "report_env",
+        "Speed against error for environment mapping (run by `cargo xtask report`)",
+        "7",
+    );
     let mcu = mcu_path.as_ref().map(read_mcu).unwrap_or_default();
     let faces: Vec<Vec<Rgb565>> = (0..6)
         .map(|f| {
