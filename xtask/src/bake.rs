@@ -14,6 +14,8 @@ use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
 
+use clap::Args;
+
 /// Options of one bake.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BakeOpts {
@@ -180,43 +182,63 @@ impl From<String> for BakeError {
     }
 }
 
-/// Parses `bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]`
-/// and bakes.
-pub fn run(args: &[String]) -> Result<(), BakeError> {
-    use BakeError::Usage;
-    let mut pos = vec![];
-    let mut name = None;
-    let mut levels = None;
-    let mut rgb565 = "embedded_graphics_core::pixelcolor::Rgb565".to_string();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut val = |flag: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| Usage(format!("{flag} needs a value")))
-        };
-        match a.as_str() {
-            "--name" => name = Some(val("--name")?),
-            "--levels" => {
-                let v = val("--levels")?;
-                levels = match v.as_str() {
-                    "full" => None,
-                    n => Some(n.parse::<u32>().map_err(|_| {
-                        Usage(format!("--levels: `{n}` is not a number or `full`"))
-                    })?),
-                };
-            }
-            "--rgb565" => rgb565 = val("--rgb565")?,
-            f if f.starts_with("--") => return Err(Usage(format!("unknown flag `{f}`"))),
-            p => pos.push(p.to_string()),
-        }
+/// Path of the RGB565 type in generated code unless `--rgb565` says otherwise.
+pub const DEFAULT_RGB565: &str = "embedded_graphics_core::pixelcolor::Rgb565";
+
+/// Arguments of `cargo xtask bake`.
+#[derive(Args, Clone, Debug)]
+pub struct BakeArgs {
+    /// The PNG to bake (sides powers of two up to 4096)
+    #[arg(value_name = "input.png")]
+    pub input: String,
+    /// The Rust source file to write (its folder is created)
+    #[arg(value_name = "output.rs")]
+    pub output: String,
+    /// Prefix of the generated items, letters, digits and `_` [default: the input's file stem in upper case]
+    #[arg(long, value_name = "NAME", value_parser = parse_name)]
+    pub name: Option<String>,
+    /// Mip levels, a number or `full` (down to 1x1)
+    #[arg(long, value_name = "N|full", default_value = "full", value_parser = parse_levels)]
+    pub levels: Levels,
+    /// Path of the colour type in the output
+    #[arg(long, value_name = "PATH", default_value = DEFAULT_RGB565)]
+    pub rgb565: String,
+}
+
+/// `--levels`: a number of levels or the full chain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Levels {
+    /// Down to 1 x 1.
+    Full,
+    /// This many levels, from level 0.
+    Count(u32),
+}
+
+fn parse_levels(s: &str) -> Result<Levels, String> {
+    match s {
+        "full" => Ok(Levels::Full),
+        n => match n.parse::<u32>() {
+            Ok(l) if l > 0 => Ok(Levels::Count(l)),
+            _ => Err(format!("`{n}` is not a positive number or `full`")),
+        },
     }
-    let [input, output] = pos.as_slice() else {
-        return Err(Usage(
-            "usage: cargo xtask bake <input.png> <output.rs> [--name NAME] \
-                    [--levels N|full] [--rgb565 PATH]"
-                .into(),
-        ));
+}
+
+fn parse_name(s: &str) -> Result<String, String> {
+    if s.is_empty() || !s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        Err("use letters, digits and `_`".into())
+    } else {
+        Ok(s.to_string())
+    }
+}
+
+/// Bakes `args.input` into `args.output`.
+pub fn run(args: &BakeArgs) -> Result<(), BakeError> {
+    use BakeError::Usage;
+    let (input, output) = (&args.input, &args.output);
+    let levels = match args.levels {
+        Levels::Full => None,
+        Levels::Count(l) => Some(l),
     };
     let (inp, outp) = (Path::new(input), Path::new(output));
     let (w, h, px) = read_rgb8(inp)?;
@@ -226,22 +248,16 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
     }
     let full = full_levels(w, h);
     if let Some(l) = levels {
-        if l == 0 || l > full {
+        if l > full {
             return Err(Usage(format!(
                 "--levels {l}: a {w} x {h} chain has 1..={full}"
             )));
         }
     }
-    let name = name.unwrap_or_else(|| default_name(inp));
-    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(Usage(format!(
-            "--name `{name}`: use letters, digits and `_`"
-        )));
-    }
     let o = BakeOpts {
-        name,
+        name: args.name.clone().unwrap_or_else(|| default_name(inp)),
         levels,
-        rgb565,
+        rgb565: args.rgb565.clone(),
     };
     let base: Vec<[u8; 3]> = px.into_iter().map(to_565).collect();
     let shown = inp
@@ -298,7 +314,7 @@ mod tests {
         let o = BakeOpts {
             name: "CHECKER".into(),
             levels: None,
-            rgb565: "embedded_graphics_core::pixelcolor::Rgb565".into(),
+            rgb565: DEFAULT_RGB565.into(),
         };
         let want = source(&base, w, h, "checker.png", &o);
         let got = std::fs::read_to_string(root.join("checker.rs")).unwrap();
@@ -313,25 +329,30 @@ mod tests {
 #[cfg(test)]
 mod usage_tests {
     use super::*;
-
-    fn args(a: &[&str]) -> Vec<String> {
-        a.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::{parse, Command};
 
     #[test]
     fn usage_errors_are_usage_errors() {
+        use clap::CommandFactory;
+        crate::Cli::command().debug_assert();
         for bad in [
-            &[][..],
-            &["in.png"],
-            &["a.png", "b.rs", "--bogus"],
-            &["a.png", "b.rs", "--levels", "x"],
+            &["bake"][..],
+            &["bake", "in.png"],
+            &["bake", "a.png", "b.rs", "--bogus"],
+            &["bake", "a.png", "b.rs", "--levels", "x"],
+            &["bake", "a.png", "b.rs", "--levels", "0"],
+            &["bake", "a.png", "b.rs", "--name", "a-b"],
         ] {
-            assert!(
-                matches!(run(&args(bad)), Err(BakeError::Usage(_))),
-                "{bad:?}"
-            );
+            let e = parse(bad).expect_err(&format!("{bad:?}"));
+            assert_eq!(e.exit_code(), 2, "{bad:?}");
         }
-        let missing = run(&args(&["/nonexistent/in.png", "/tmp/out.rs"]));
-        assert!(matches!(missing, Err(BakeError::Failed(_))));
+        let Ok(Command::Bake(a)) = parse(&["bake", "/nonexistent/in.png", "/tmp/out.rs"]) else {
+            panic!("bake with two paths does not parse");
+        };
+        assert_eq!(
+            (a.levels, a.rgb565.as_str()),
+            (Levels::Full, DEFAULT_RGB565)
+        );
+        assert!(matches!(run(&a), Err(BakeError::Failed(_))));
     }
 }

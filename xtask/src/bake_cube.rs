@@ -18,7 +18,9 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::bake::{read_rgb8, to_565, BakeError};
+use clap::Args;
+
+use crate::bake::{read_rgb8, to_565, BakeError, DEFAULT_RGB565};
 
 /// `(column, row)` of each face (GL order) in the cross, in face units.
 const CROSS: [(u32, u32); 6] = [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)];
@@ -178,78 +180,72 @@ fn convolved(
         .collect()
 }
 
-fn parse_side(v: &str, flag: &str) -> Result<u32, BakeError> {
+/// Arguments of `cargo xtask bake-cube`.
+#[derive(Args, Clone, Debug)]
+pub struct CubeArgs {
+    /// The faces: a 4:3 cross or a 6:1 strip (GL order), face side a power of two up to 4096
+    #[arg(value_name = "input.png")]
+    pub input: String,
+    /// The Rust source file to write
+    #[arg(value_name = "output.rs")]
+    pub output: String,
+    /// Prefix of the generated items [default: the input's file stem in upper case]
+    #[arg(long, value_name = "NAME")]
+    pub name: Option<String>,
+    /// Path of the colour type in the output
+    #[arg(long, value_name = "PATH", default_value = DEFAULT_RGB565)]
+    pub rgb565: String,
+    /// Also bake each face's full mip chain as NAME_MIPS (for MipCubeMap)
+    #[arg(long)]
+    pub mips: bool,
+    /// Also bake the irradiance (cosine-convolved) map as NAME_IRRADIANCE, SIZE a power of two from 1 to 256
+    #[arg(long, value_name = "SIZE", value_parser = parse_side)]
+    pub irradiance: Option<u32>,
+    /// Also bake the glossy (Phong lobe, exponent 1 to 1000) map as NAME_GLOSSY, SIZE (default 16) a power of two from 1 to 256
+    #[arg(long, value_name = "EXPONENT[:SIZE]", value_parser = parse_glossy)]
+    pub glossy: Option<Glossy>,
+}
+
+/// `--glossy EXPONENT[:SIZE]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Glossy {
+    /// Phong exponent, 1 to 1000.
+    pub exponent: u16,
+    /// Side of the convolved faces.
+    pub size: u32,
+}
+
+fn parse_side(v: &str) -> Result<u32, String> {
     match v.parse::<u32>() {
         Ok(n) if n.is_power_of_two() && n <= 256 => Ok(n),
-        _ => Err(BakeError::Usage(format!(
-            "{flag}: `{v}` is not a power of two from 1 to 256"
-        ))),
+        _ => Err(format!("`{v}` is not a power of two from 1 to 256")),
     }
 }
 
-const USAGE: &str = "usage: bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] \
-                     [--mips] [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]";
-
-/// Parses `bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] [--mips]
-/// [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]` and bakes.
-pub fn run(args: &[String]) -> Result<(), BakeError> {
-    let mut pos = Vec::new();
-    let (mut name, mut rgb565) = (
-        None,
-        "embedded_graphics_core::pixelcolor::Rgb565".to_string(),
-    );
-    let (mut mips, mut irradiance, mut glossy) = (false, None, None);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--mips" => mips = true,
-            "--irradiance" => {
-                let v = it
-                    .next()
-                    .ok_or(BakeError::Usage("--irradiance SIZE".into()))?;
-                irradiance = Some(parse_side(v, "--irradiance")?);
-            }
-            "--glossy" => {
-                let v = it
-                    .next()
-                    .ok_or(BakeError::Usage("--glossy EXPONENT[:SIZE]".into()))?;
-                let (e, n) = v.split_once(':').unwrap_or((v, "16"));
-                let e = match e.parse::<u16>() {
-                    Ok(e) if (1..=1000).contains(&e) => e,
-                    _ => {
-                        return Err(BakeError::Usage(format!(
-                            "--glossy: exponent `{e}` is not a number from 1 to 1000"
-                        )))
-                    }
-                };
-                glossy = Some((e, parse_side(n, "--glossy")?));
-            }
-            "--name" => {
-                name = Some(
-                    it.next()
-                        .ok_or(BakeError::Usage("--name NAME".into()))?
-                        .clone(),
-                )
-            }
-            "--rgb565" => {
-                rgb565 = it
-                    .next()
-                    .ok_or(BakeError::Usage("--rgb565 PATH".into()))?
-                    .clone()
-            }
-            f if f.starts_with("--") => {
-                return Err(BakeError::Usage(format!("unknown flag `{f}`")))
-            }
-            p => pos.push(p.to_string()),
-        }
-    }
-    let [input, output] = pos.as_slice() else {
-        return Err(BakeError::Usage(USAGE.into()));
+fn parse_glossy(v: &str) -> Result<Glossy, String> {
+    let (e, n) = v.split_once(':').unwrap_or((v, "16"));
+    let exponent = match e.parse::<u16>() {
+        Ok(e) if (1..=1000).contains(&e) => e,
+        _ => return Err(format!("exponent `{e}` is not a number from 1 to 1000")),
     };
-    let name = name.unwrap_or_else(|| crate::bake::default_name(Path::new(input)));
+    Ok(Glossy {
+        exponent,
+        size: parse_side(n).map_err(|m| format!("size {m}"))?,
+    })
+}
+
+/// Bakes `args.input` (six faces) into `args.output`.
+pub fn run(args: &CubeArgs) -> Result<(), BakeError> {
+    let (input, output, rgb565) = (&args.input, &args.output, &args.rgb565);
+    let (mips, irradiance) = (args.mips, args.irradiance);
+    let glossy = args.glossy.map(|g| (g.exponent, g.size));
+    let name = args
+        .name
+        .clone()
+        .unwrap_or_else(|| crate::bake::default_name(Path::new(input)));
     let (w, h, px) = read_rgb8(Path::new(input))?;
     let (s, faces) = split(w, h, &px)?;
-    let mut src = source(s, &faces, input, &name, &rgb565);
+    let mut src = source(s, &faces, input, &name, rgb565);
     let raw_faces: Vec<Vec<u16>> = faces.iter().map(|f| raw(f)).collect();
     let mut made = vec![format!("{name}_FACES")];
     if mips {
@@ -263,7 +259,7 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
                  `fixel::shading::env::MipCubeMap::new`."
             ),
             &mip_chains(s, &raw_faces)?,
-            &rgb565,
+            rgb565,
         );
         made.push(format!("{name}_MIPS"));
     }
@@ -283,7 +279,7 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
                  normal (`fixel::shading::env::EnvLit::diffuse`)."
             ),
             &m,
-            &rgb565,
+            rgb565,
         );
         made.push(format!("{name}_IRRADIANCE"));
     }
@@ -303,7 +299,7 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
                  reflection (`fixel::shading::env::EnvLit::glossy`)."
             ),
             &m,
-            &rgb565,
+            rgb565,
         );
         made.push(format!("{name}_GLOSSY"));
     }
@@ -365,15 +361,24 @@ mod tests {
 
     #[test]
     fn bad_sizes_and_exponents_are_refused() {
-        let a = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let cube = |v: &[&str]| crate::parse(&[&["bake-cube"][..], v].concat());
         for bad in [
-            a(&["in.png", "out.rs", "--irradiance", "12"]),
-            a(&["in.png", "out.rs", "--glossy", "0"]),
-            a(&["in.png", "out.rs", "--glossy", "16:300"]),
-            a(&["in.png", "out.rs", "--wat"]),
-            a(&["in.png"]),
+            &["in.png", "out.rs", "--irradiance", "12"][..],
+            &["in.png", "out.rs", "--glossy", "0"],
+            &["in.png", "out.rs", "--glossy", "16:300"],
+            &["in.png", "out.rs", "--wat"],
+            &["in.png"],
         ] {
-            assert!(matches!(run(&bad), Err(BakeError::Usage(_))), "{bad:?}");
+            let e = cube(bad).expect_err(&format!("{bad:?}"));
+            assert_eq!(e.exit_code(), 2, "{bad:?}");
         }
+        let Ok(crate::Command::BakeCube(a)) = cube(&["in.png", "out.rs", "--glossy", "8"]) else {
+            panic!("--glossy 8 does not parse");
+        };
+        let want = Glossy {
+            exponent: 8,
+            size: 16,
+        };
+        assert_eq!(a.glossy, Some(want));
     }
 }

@@ -30,14 +30,19 @@ use fixel::scene::{
 };
 use fixel::texture::HeightMap;
 
+use clap::{Args, ValueEnum};
+
 use crate::bake::BakeError;
 use crate::bake_obj::{source, Baked, ObjOpts, UvSource};
 
-/// The mesh and height map to bake.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The mesh and height map to bake (`--mesh`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Source {
+    /// The demo 12 x 24 sphere and the rock heights.
     Coarse,
+    /// The demo 24 x 48 (benchmark) sphere and the rock heights.
     Fine,
+    /// A 6 x 6 grid and the swell heights.
     Water,
 }
 
@@ -143,62 +148,87 @@ pub fn bake(o: &Opts) -> Result<Baked, String> {
     }
 }
 
-pub fn run(args: &[String]) -> Result<(), BakeError> {
-    let usage = |m: &str| BakeError::Usage(m.to_string());
-    let mut o = Opts::default();
-    let mut output = None;
-    let (mut scaled, mut named) = (false, false);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut val = |flag: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| usage(&format!("`{flag}` needs a value")))
-        };
-        let num = |flag: &str, v: String| {
-            v.parse::<f64>()
-                .map_err(|_| usage(&format!("`{flag} {v}`: not a number")))
-        };
-        match a.as_str() {
-            "--mesh" => {
-                o.mesh = match val("--mesh")?.as_str() {
-                    "coarse" => Source::Coarse,
-                    "fine" => Source::Fine,
-                    "water" => {
-                        if !scaled {
-                            o.scale = 0.0;
-                        }
-                        if !named {
-                            o.name = "WATER".into();
-                        }
-                        Source::Water
-                    }
-                    v => return Err(usage(&format!("`--mesh {v}`: coarse, fine or water"))),
+/// Arguments of `cargo xtask bake-displaced`.
+#[derive(Args, Clone, Debug)]
+pub struct DisplacedArgs {
+    /// The Rust source file to write (its folder is created)
+    #[arg(value_name = "output.rs")]
+    pub output: String,
+    /// The mesh and height map: the demo sphere (coarse 12 x 24, fine 24 x 48) and the rock heights, or a 6 x 6 grid and the swell
+    #[arg(long, value_name = "coarse|fine|water", default_value = "coarse")]
+    pub mesh: Source,
+    /// Subdivision levels, 0 to 4
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=4))]
+    pub levels: u32,
+    /// Displacement scale, model units per 256 height steps (negative pushes inwards) [default: 0.45, 0 for water]
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    pub scale: Option<f64>,
+    /// Displacement bias (the height that stays in place)
+    #[arg(
+        long,
+        value_name = "B",
+        default_value_t = 0.5,
+        allow_negative_numbers = true
+    )]
+    pub bias: f64,
+    /// Prefix of the generated items [default: ROCK, WATER for water]
+    #[arg(long, value_name = "NAME")]
+    pub name: Option<String>,
+}
+
+impl DisplacedArgs {
+    /// The bake options: the defaults of `--scale` and `--name` depend on the mesh.
+    pub fn opts(&self) -> Opts {
+        let water = self.mesh == Source::Water;
+        Opts {
+            mesh: self.mesh,
+            levels: self.levels,
+            scale: self
+                .scale
+                .unwrap_or(if water { 0.0 } else { Opts::default().scale }),
+            bias: self.bias,
+            name: self.name.clone().unwrap_or_else(|| {
+                if water {
+                    "WATER".into()
+                } else {
+                    Opts::default().name
                 }
-            }
-            "--levels" => {
-                let v = val("--levels")?;
-                o.levels = v
-                    .parse()
-                    .ok()
-                    .filter(|&l| l <= 4)
-                    .ok_or_else(|| usage(&format!("`--levels {v}`: 0 to 4")))?;
-            }
-            "--scale" => {
-                o.scale = num("--scale", val("--scale")?)?;
-                scaled = true;
-            }
-            "--bias" => o.bias = num("--bias", val("--bias")?)?,
-            "--name" => {
-                o.name = val("--name")?;
-                named = true;
-            }
-            f if f.starts_with("--") => return Err(usage(&format!("unknown flag `{f}`"))),
-            p if output.is_none() => output = Some(p.to_string()),
-            p => return Err(usage(&format!("unexpected argument `{p}`"))),
+            }),
         }
     }
-    let output = output.ok_or_else(|| usage("missing <output.rs>"))?;
+
+    /// The arguments as a command line for the generated file's header: the output, then
+    /// each option given or not at its default.
+    pub fn command_line(&self) -> String {
+        let mut s = self.output.clone();
+        let d = Opts::default();
+        if self.mesh != d.mesh {
+            let m = self
+                .mesh
+                .to_possible_value()
+                .map(|v| v.get_name().to_string());
+            let _ = write!(s, " --mesh {}", m.unwrap_or_default());
+        }
+        if self.levels != d.levels {
+            let _ = write!(s, " --levels {}", self.levels);
+        }
+        if let Some(scale) = self.scale {
+            let _ = write!(s, " --scale {scale}");
+        }
+        if self.bias != d.bias {
+            let _ = write!(s, " --bias {}", self.bias);
+        }
+        if let Some(name) = &self.name {
+            let _ = write!(s, " --name {name}");
+        }
+        s
+    }
+}
+
+/// Bakes the displaced mesh of `args` into `args.output`.
+pub fn run(args: &DisplacedArgs) -> Result<(), BakeError> {
+    let o = args.opts();
+    let output = &args.output;
     let baked = bake(&o).map_err(BakeError::Failed)?;
     let obj = ObjOpts {
         name: o.name.clone(),
@@ -209,7 +239,7 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
         scale: 1.0,
         krate: "fixel".into(),
     };
-    let args_line = args.join(" ");
+    let args_line = args.command_line();
     let what = match o.mesh {
         Source::Coarse => "the demo 12 x 24 sphere and the rock heights",
         Source::Fine => "the demo 24 x 48 sphere and the rock heights",
@@ -239,7 +269,7 @@ pub fn run(args: &[String]) -> Result<(), BakeError> {
         }
         text.push_str("];\n");
     }
-    let path = Path::new(&output);
+    let path = Path::new(output);
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|e| BakeError::Failed(format!("{output}: {e}")))?;
     }

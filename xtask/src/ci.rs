@@ -6,8 +6,10 @@ use std::fmt::Write as _;
 use std::process::{Command, ExitCode, Stdio};
 use std::time::{Duration, Instant};
 
+use clap::Args;
+
 use crate::cmd::{cargo, fmt_dur, rustup};
-use crate::{mcu, usage_error};
+use crate::mcu;
 
 /// Cross targets the library must build for without `std`.
 const CROSS_TARGETS: [&str; 3] = [
@@ -43,16 +45,19 @@ fn skipped(name: impl Into<String>, reason: &'static str) -> Step {
     }
 }
 
-pub(crate) fn ci(flags: &[String]) -> ExitCode {
-    let mut quick = false;
-    let mut no_cross = false;
-    for f in flags {
-        match f.as_str() {
-            "--quick" => quick = true,
-            "--no-cross" => no_cross = true,
-            other => return usage_error(&format!("unknown flag for `ci`: `{other}`")),
-        }
-    }
+/// Flags of `cargo xtask ci`.
+#[derive(Args, Clone, Debug)]
+pub(crate) struct CiArgs {
+    /// Skip the release-mode test run
+    #[arg(long)]
+    pub quick: bool,
+    /// Skip the cross-target builds and `mcu`
+    #[arg(long)]
+    pub no_cross: bool,
+}
+
+pub(crate) fn ci(args: &CiArgs) -> ExitCode {
+    let CiArgs { quick, no_cross } = *args;
 
     let mut steps = vec![
         step("toolchain", ensure_toolchain),
@@ -103,7 +108,7 @@ pub(crate) fn ci(flags: &[String]) -> ExitCode {
         skipped("mcu (QEMU)", "--no-cross")
     } else {
         step("mcu (QEMU)", || {
-            if mcu::mcu(&[]) == ExitCode::SUCCESS {
+            if mcu::mcu(&mcu::McuArgs::default()) == ExitCode::SUCCESS {
                 Ok(())
             } else {
                 Err("cargo xtask mcu failed (see above)".to_string())

@@ -6,8 +6,21 @@ use std::path::Path;
 use std::process::{Command, ExitCode, Stdio};
 use std::time::Instant;
 
+use clap::Args;
+
 use crate::cmd::{cargo, fmt_dur, target_dir, Cmd};
 use crate::usage_error;
+
+/// Flags of `cargo xtask count`.
+#[derive(Args, Clone, Debug)]
+pub(crate) struct CountArgs {
+    /// Frames per case [default: the scene's N]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub frames: Option<u32>,
+    /// Only cases whose `scene/mode` id contains one of these (`count_scene --list`)
+    #[arg(value_name = "FILTER")]
+    pub filters: Vec<String>,
+}
 
 /// One case's result: drawn pixels and instructions, both net of the baseline.
 struct Counted {
@@ -84,22 +97,8 @@ fn count_table(rows: &[Counted]) -> String {
     s
 }
 
-pub(crate) fn count(flags: &[String]) -> ExitCode {
-    let mut frames: Option<u32> = None;
-    let mut filters: Vec<&str> = Vec::new();
-    let mut it = flags.iter();
-    while let Some(f) = it.next() {
-        match f.as_str() {
-            "--frames" => match it.next().map(|n| n.parse::<u32>()) {
-                Some(Ok(n)) if n > 0 => frames = Some(n),
-                _ => return usage_error("`--frames` needs a positive number"),
-            },
-            other if other.starts_with('-') => {
-                return usage_error(&format!("unknown flag for `count`: `{other}`"))
-            }
-            other => filters.push(other),
-        }
-    }
+pub(crate) fn count(args: &CountArgs) -> ExitCode {
+    let (frames, filters) = (args.frames, &args.filters);
     if Command::new("valgrind")
         .arg("--version")
         .stdout(Stdio::null())
@@ -143,10 +142,13 @@ pub(crate) fn count(flags: &[String]) -> ExitCode {
         .lines()
         .map(str::trim)
         .filter(|id| !id.is_empty())
-        .filter(|id| filters.is_empty() || filters.iter().any(|f| id.contains(f)))
+        .filter(|id| filters.is_empty() || filters.iter().any(|f| id.contains(f.as_str())))
         .collect();
     if cases.is_empty() {
-        return usage_error("no case matches the filter (see `count_scene --list`)");
+        return usage_error(
+            "count",
+            "no case matches the filter (see `count_scene --list`)",
+        );
     }
 
     let mut rows = Vec::new();

@@ -15,6 +15,8 @@
 
 use std::fmt::Write as _;
 
+use clap::Args;
+
 /// One point light: position (cells) and power (intensity at 1 cell).
 type Light = [f64; 4];
 
@@ -59,41 +61,77 @@ fn floats(s: &str, n: usize) -> Result<Vec<f64>, String> {
     }
 }
 
-/// Runs the command with its arguments (after `bake-light3d`).
-pub fn run(args: &[String]) -> Result<(), String> {
-    let mut it = args.iter();
-    let out = it.next().ok_or("missing <output.rs>")?.clone();
-    let (mut name, mut side, mut origin, mut log2_texel, mut ambient) =
-        ("LIGHT3D".to_string(), 16u32, [-2.0; 3], 14u32, 0.15);
-    let mut lights: Vec<Light> = Vec::new();
-    while let Some(f) = it.next() {
-        let mut val = || it.next().ok_or(format!("`{f}` needs a value"));
-        match f.as_str() {
-            "--name" => name = val()?.to_uppercase(),
-            "--side" => side = val()?.parse().map_err(|e| format!("--side: {e}"))?,
-            "--origin" => {
-                let v = floats(val()?, 3)?;
-                origin = [v[0], v[1], v[2]];
-            }
-            "--texel" => log2_texel = val()?.parse().map_err(|e| format!("--texel: {e}"))?,
-            "--ambient" => ambient = val()?.parse().map_err(|e| format!("--ambient: {e}"))?,
-            "--light" => {
-                let v = floats(val()?, 4)?;
-                lights.push([v[0], v[1], v[2], v[3]]);
-            }
-            other => return Err(format!("unknown flag `{other}`")),
-        }
+fn parse_origin(s: &str) -> Result<[f64; 3], String> {
+    floats(s, 3).map(|v| [v[0], v[1], v[2]])
+}
+
+fn parse_light(s: &str) -> Result<Light, String> {
+    floats(s, 4).map(|v| [v[0], v[1], v[2], v[3]])
+}
+
+fn parse_side(s: &str) -> Result<u32, String> {
+    match s.parse::<u32>() {
+        Ok(n) if n.is_power_of_two() && (2..=64).contains(&n) => Ok(n),
+        Ok(n) => Err(format!("{n}: must be a power of two in 2..=64")),
+        Err(e) => Err(e.to_string()),
     }
-    if !side.is_power_of_two() || !(2..=64).contains(&side) {
-        return Err(format!("--side {side}: must be a power of two in 2..=64"));
-    }
-    if !(8..=24).contains(&log2_texel) {
-        return Err(format!("--texel {log2_texel}: must be in 8..=24"));
-    }
-    if lights.is_empty() {
-        return Err("at least one --light X,Y,Z,P is needed".into());
-    }
-    let texels = bake(side, origin, log2_texel, ambient, &lights);
+}
+
+/// Arguments of `cargo xtask bake-light3d`.
+#[derive(Args, Clone, Debug)]
+pub struct Light3dArgs {
+    /// The Rust source file to write
+    #[arg(value_name = "output.rs")]
+    pub output: String,
+    /// Side of the cube in texels, a power of two in 2..=64
+    #[arg(long, value_name = "N", default_value_t = 16, value_parser = parse_side)]
+    pub side: u32,
+    /// Low corner of the cube, in lattice cells
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        default_value = "-2,-2,-2",
+        value_parser = parse_origin,
+        allow_hyphen_values = true
+    )]
+    pub origin: [f64; 3],
+    /// log2 of the texel side in raw I16F16 units (14: 1/4 cell), 8..=24
+    #[arg(
+        long,
+        value_name = "LOG2",
+        default_value_t = 14,
+        value_parser = clap::value_parser!(u32).range(8..=24)
+    )]
+    pub texel: u32,
+    /// Ambient term, added to every texel's light
+    #[arg(
+        long,
+        value_name = "A",
+        default_value_t = 0.15,
+        allow_negative_numbers = true
+    )]
+    pub ambient: f64,
+    /// A point light: position (cells) and power (intensity at 1 cell); repeat for more
+    #[arg(
+        long = "light",
+        value_name = "X,Y,Z,P",
+        required = true,
+        value_parser = parse_light,
+        allow_hyphen_values = true
+    )]
+    pub lights: Vec<Light>,
+    /// Prefix of the generated items (upper-cased)
+    #[arg(long, value_name = "NAME", default_value = "LIGHT3D")]
+    pub name: String,
+}
+
+/// Bakes the light map of `args` into `args.output`.
+pub fn run(args: &Light3dArgs) -> Result<(), String> {
+    let out = &args.output;
+    let name = args.name.to_uppercase();
+    let (side, origin, log2_texel, ambient) = (args.side, args.origin, args.texel, args.ambient);
+    let lights = &args.lights;
+    let texels = bake(side, origin, log2_texel, ambient, lights);
     let bits = origin.map(|o| (o * 65536.0).round() as i32);
     let mut s = String::new();
     let _ = writeln!(
@@ -115,7 +153,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
         let _ = writeln!(s, "    {},", line.join(", "));
     }
     s.push_str("];\n");
-    std::fs::write(&out, s).map_err(|e| format!("{out}: {e}"))?;
+    std::fs::write(out, s).map_err(|e| format!("{out}: {e}"))?;
     println!("bake-light3d: wrote {out} ({} texels)", texels.len());
     Ok(())
 }

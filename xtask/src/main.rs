@@ -1,8 +1,8 @@
 //! `cargo xtask`: repository chores for fixel (CI, golden blessing, demo renders).
 //!
-//! Nearly dependency-free so it builds in seconds: argument parsing is done by
-//! hand and every tool is driven through `std::process::Command`; the one
-//! dependency is the `png` decoder for `bake`.
+//! Few dependencies so it builds quickly: the command line is parsed with `clap` (derive:
+//! [`Cli`] here, each command's flags next to its code) and every tool is driven through
+//! `std::process::Command`; `png` and `tobj` read the inputs of the bake commands.
 
 mod bake;
 mod bake_cube;
@@ -17,185 +17,200 @@ mod mcu;
 mod report;
 mod teapot;
 
-use std::env;
+use std::fmt::Display;
 use std::process::ExitCode;
 
-const HELP: &str = "\
-cargo xtask: repository chores for fixel
+use clap::error::ErrorKind;
+use clap::{CommandFactory, Parser, Subcommand};
 
-USAGE:
-    cargo xtask <COMMAND> [FLAGS]
+/// `cargo xtask`: the command line (clap derive); each command's flags live with its code.
+#[derive(Parser, Debug)]
+#[command(
+    name = "xtask",
+    bin_name = "cargo xtask",
+    about = "cargo xtask: repository chores for fixel",
+    after_help = "Exit status: 0 on success, 1 when a step fails, 2 on usage errors.",
+    long_about = None,
+    arg_required_else_help = true,
+    args_override_self = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
 
-COMMANDS:
-    ci [--quick] [--no-cross]
-                Run the full check suite, failing fast:
-                  toolchain targets/components, fmt, clippy, test (debug),
-                  test (release), docs (-D warnings), no_std cross builds for
-                  thumbv6m-none-eabi, thumbv7em-none-eabihf,
-                  riscv32imc-unknown-none-elf, then `mcu` (firmware under QEMU:
-                  checksums must equal the host's; prints the report).
-                  --quick     skip the release-mode test run
-                  --no-cross  skip the cross-target builds and `mcu`
-    bless       Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images),
-                then show which goldens changed (git status host-tests/golden)
-    render      Render the demo scenes (examples `showcase`, `scenes`, `preview` and
-                `shadow`, `noise` and `envmap`, release) to target/pictures/*.png
-    count [--frames N] [FILTER...]
-                Exact x86_64 instructions per drawn pixel of the benchmark
-                scenes and modes: builds the `count_scene` example (release),
-                runs each case under `valgrind --tool=callgrind`, subtracts a
-                0-frame baseline (texture, mesh, draw set-up) and prints a
-                Markdown table, also saved to target/instructions-x86.md.
-                Callgrind files stay in target/callgrind/ (for
-                `callgrind_annotate --auto=yes`).
-                  --frames N  frames per case (default: the scene's N)
-                  FILTER      only cases whose `scene/mode` id contains it
-    mcu [--runs N] [--profile] [--opt-s] [--no-install]
-                Build the firmware examples (examples/firmware) for Cortex-M4F,
-                Cortex-M0+ and RV32IMC, run each scene under QEMU with an
-                instruction-counting plugin (N runs, default 2, must agree),
-                check each frame checksum against the host's, and print
-                instructions/pixel, estimated cycles/pixel, flash and RAM.
-                Installs missing rust targets, llvm-tools and (apt-get)
-                qemu-system-arm/qemu-system-misc/gcc/python3.
-                  --profile  where the instructions go, per function
-                  --opt-s    also report flash at opt-level s
-    size [--opt-s] [--no-install]
-                Flash and RAM of a minimal firmware per feature set
-    report [--runs N] [--no-mcu] [--no-install] [--docs]
-                Speed against error for every benchmark scene and mode:
-                builds and runs the report firmwares under QEMU (exact instructions
-                per pixel on Cortex-M0+ and Cortex-M4F, target/report/mcu.tsv), then
-                the host report (`host-tests` binary `report`, release): host ns per
-                pixel (median, min, max of N runs of the scene's frames, default 7),
-                errors against the f64 reference and the 8x8 supersampled reference,
-                Pareto fronts, recommendations. Writes target/report/report.md and one
-                PNG plot per scene and target (target/report/*.png).
-                  --no-mcu      host only (no QEMU columns)
-                  --no-install  do not install missing tools (see `mcu`)
-                  --docs        also copy report.md and the plots to docs/report/
-    bake <input.png> <output.rs> [--name NAME] [--levels N|full] [--rgb565 PATH]
-                Bake a power-of-two PNG into a Rust source file: RGB565 texels
-                (rounded to nearest) and their mip chain (2x2 box filter, the
-                same as fixel's generate_mips) as `pub static NAME_TEXELS`,
-                with NAME_WIDTH, NAME_HEIGHT, NAME_LEVELS. NAME defaults to the
-                file stem in upper case; --levels defaults to full (down to
-                1x1); --rgb565 is the path of the colour type in the output
-                (default embedded_graphics_core::pixelcolor::Rgb565)
-    bake-light3d <output.rs> [--side N] [--origin X,Y,Z] [--texel LOG2] [--ambient A]
-                 --light X,Y,Z,P [--light ...] [--name NAME]
-                Bake a 3D light map (fixel::shading::noise::LightMap3d) from point
-                lights with inverse-square falloff (see xtask/src/light3d.rs)
-    bake-cube <input.png> <output.rs> [--name NAME] [--rgb565 PATH] [--mips]
-              [--irradiance SIZE] [--glossy EXPONENT[:SIZE]]
-                Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order)
-                as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env);
-                --mips adds NAME_MIPS (full chains, MipCubeMap), --irradiance and
-                --glossy the convolved maps NAME_IRRADIANCE / NAME_GLOSSY (EnvLit)
-    bake-obj <input.obj> <output.rs> [--name NAME] [--uv keep|spherical|cylindrical|planar]
-                 [--axis x|y|z] [--normals keep|smooth] [--tangents] [--scale S]
-                A Wavefront OBJ model as static arrays in fixel's formats (positions,
-                normals, uvs, u16 triangles, tangent frames); prints the flash per array
-    teapot      Tessellates Newell's teapot patches (assets/teapot/newell.txt) into
-                assets/teapot/teapot.obj
-    bake-displaced <output.rs> [--sphere coarse|fine] [--levels N] [--scale S]
-                 [--bias B] [--name NAME]
-                A displaced mesh as static arrays (the bake-obj format): the demo
-                sphere (coarse 12 x 24 or fine 24 x 48) subdivided N times (default 1)
-                and displaced by the rock height map with fixel::scene::displace
-                (scale default 0.45, bias 0.5)
-    help        Print this help
-
-Exit status: 0 on success, 1 when a step fails, 2 on usage errors and for
-commands that are not implemented yet.
-";
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run the full check suite, failing fast
+    ///
+    /// Steps, in order: toolchain targets/components, fmt, clippy, test (debug),
+    /// test (release), docs (-D warnings), no_std cross builds for
+    /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
+    /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
+    /// the report). Ends with a summary table of the steps and their times.
+    #[command(verbatim_doc_comment)]
+    Ci(ci::CiArgs),
+    /// Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images), then show which goldens changed
+    ///
+    /// Re-runs `cargo test -p host-tests` with FIXEL_BLESS=1 (rewrites the golden
+    /// images), then shows which goldens changed (git status host-tests/golden).
+    #[command(verbatim_doc_comment)]
+    Bless,
+    /// Render the demo scenes (release) to target/pictures/*.png
+    ///
+    /// Runs the demo examples (`showcase`, `scenes`, `preview`, `shadow`, `noise`,
+    /// `envmap` and the other technique demos, release), which write
+    /// target/pictures/*.png.
+    #[command(verbatim_doc_comment)]
+    Render,
+    /// Exact x86_64 instructions per drawn pixel of the benchmark scenes and modes
+    ///
+    /// Builds the `count_scene` example (release), runs each case under
+    /// `valgrind --tool=callgrind`, subtracts a 0-frame baseline (texture, mesh,
+    /// draw set-up) and prints a Markdown table, also saved to
+    /// target/instructions-x86.md. Callgrind files stay in target/callgrind/
+    /// (for `callgrind_annotate --auto=yes`).
+    #[command(verbatim_doc_comment)]
+    Count(count::CountArgs),
+    /// Firmware examples under QEMU: instructions/pixel, cycles/pixel, flash and RAM
+    ///
+    /// Builds the firmware examples (examples/firmware) for Cortex-M4F, Cortex-M0+
+    /// and RV32IMC, runs each scene under QEMU with an instruction-counting plugin
+    /// (N runs, default 2, must agree), checks each frame checksum against the
+    /// host's, and prints instructions/pixel, estimated cycles/pixel, flash and RAM.
+    /// Installs missing rust targets, llvm-tools and (apt-get)
+    /// qemu-system-arm/qemu-system-misc/gcc/python3.
+    #[command(verbatim_doc_comment)]
+    Mcu(mcu::McuArgs),
+    /// Flash and RAM of a minimal firmware per feature set
+    ///
+    /// Builds the size firmwares (examples/firmware) for Cortex-M4F, Cortex-M0+ and
+    /// RV32IMC and prints flash, fixel's share of it and RAM (static + measured
+    /// stack) per feature set; each must give the same frame checksum on all three.
+    /// Installs missing tools as `mcu` does.
+    #[command(verbatim_doc_comment)]
+    Size(mcu::SizeArgs),
+    /// Speed against error for every benchmark scene and mode
+    ///
+    /// Builds and runs the report firmwares under QEMU (exact instructions per pixel
+    /// on Cortex-M0+ and Cortex-M4F, target/report/mcu.tsv), then the host report
+    /// (`host-tests` binary `report`, release): host ns per pixel (median, min, max
+    /// of N runs of the scene's frames, default 7), errors against the f64
+    /// reference and the 8x8 supersampled reference, Pareto fronts,
+    /// recommendations. Writes target/report/report.md and one PNG plot per scene
+    /// and target (target/report/*.png).
+    #[command(verbatim_doc_comment)]
+    Report(report::ReportArgs),
+    /// Bake a power-of-two PNG into a Rust source file of RGB565 texels and their mip chain
+    ///
+    /// Bakes a power-of-two PNG (sides up to 4096) into a Rust source file: RGB565
+    /// texels (rounded to nearest) and their mip chain (2x2 box filter, the same as
+    /// fixel's generate_mips) as `pub static NAME_TEXELS`, with NAME_WIDTH,
+    /// NAME_HEIGHT, NAME_LEVELS.
+    #[command(verbatim_doc_comment)]
+    Bake(bake::BakeArgs),
+    /// Bake a 3D light map (fixel::shading::noise::LightMap3d) from point lights
+    ///
+    /// Bakes a 3D light map (fixel::shading::noise::LightMap3d) from point lights
+    /// with inverse-square falloff (see xtask/src/light3d.rs). Texel (i, j, k)
+    /// (x fastest) holds round(255 * min(1, A + sum of P / max(d^2, 1/16))), d the
+    /// distance in lattice cells from its centre
+    /// origin + (i + 0.5, j + 0.5, k + 0.5) * 2^(LOG2 - 16) to each light. The
+    /// output also records the parameters (NAME_LIGHTS, NAME_AMBIENT).
+    #[command(name = "bake-light3d", verbatim_doc_comment)]
+    BakeLight3d(light3d::Light3dArgs),
+    /// Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order) as Rust statics
+    ///
+    /// Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order: +X -X +Y -Y
+    /// +Z -Z) as `pub static NAME_FACES` and NAME_SIZE (fixel::shading::env);
+    /// --mips adds NAME_MIPS (full chains, MipCubeMap), --irradiance and --glossy
+    /// the convolved maps NAME_IRRADIANCE / NAME_GLOSSY (EnvLit).
+    #[command(verbatim_doc_comment)]
+    BakeCube(bake_cube::CubeArgs),
+    /// A Wavefront OBJ model as static arrays in fixel's formats
+    ///
+    /// A Wavefront OBJ model as static arrays in fixel's formats (positions,
+    /// normals, uvs, u16 triangles, tangent frames); prints the flash per array.
+    /// Missing normals are generated (area-weighted, smooth), missing texture
+    /// coordinates with fixel's own mapping (see xtask/src/bake_obj.rs).
+    #[command(verbatim_doc_comment)]
+    BakeObj(bake_obj::ObjArgs),
+    /// Tessellate Newell's teapot patches (assets/teapot/newell.txt) into assets/teapot/teapot.obj
+    ///
+    /// Tessellates Newell's teapot patches (assets/teapot/newell.txt: 32 bicubic
+    /// patches) into a Wavefront OBJ (assets/teapot/teapot.obj), the example model
+    /// of `bake-obj`: welded, degenerate triangles dropped, y up, no normals or
+    /// texture coordinates.
+    #[command(verbatim_doc_comment)]
+    Teapot(teapot::TeapotArgs),
+    /// A displaced mesh as static arrays (the bake-obj format)
+    ///
+    /// A displaced mesh as static arrays (the bake-obj format): the demo sphere
+    /// (coarse 12 x 24 or fine 24 x 48, radius 1.5) subdivided N times (default 1)
+    /// and displaced by the rock height map with fixel::scene::displace (scale
+    /// default 0.45, bias 0.5); or `water`, a 6 x 6-quad grid 4.8 units across
+    /// displaced by the swell, whose heights the file also holds as NAME_HEIGHTS
+    /// (with --scale 0, its default, the flat base of the firmware's `water` scene).
+    #[command(verbatim_doc_comment)]
+    BakeDisplaced(bake_displaced::DisplacedArgs),
+}
 
 fn main() -> ExitCode {
-    let args: Vec<String> = env::args().skip(1).collect();
-    let (cmd, rest) = match args.split_first() {
-        Some((c, r)) => (c.as_str(), r),
-        None => {
-            eprint!("{HELP}");
-            return ExitCode::from(2);
-        }
-    };
-    if rest.iter().any(|a| a == "-h" || a == "--help") {
-        print!("{HELP}");
-        return ExitCode::SUCCESS;
-    }
-    match cmd {
-        "help" | "-h" | "--help" => {
-            print!("{HELP}");
-            ExitCode::SUCCESS
-        }
-        "ci" => ci::ci(rest),
-        "bless" => no_flags("bless", rest).map_or_else(|e| e, |()| images::bless()),
-        "render" => no_flags("render", rest).map_or_else(|e| e, |()| images::render()),
-        "count" => count::count(rest),
-        "mcu" => mcu::mcu(rest),
-        "size" => mcu::size(rest),
-        "report" => report::report(rest),
-        "bake-light3d" => match light3d::run(rest) {
+    match Cli::parse().command {
+        Command::Ci(a) => ci::ci(&a),
+        Command::Bless => images::bless(),
+        Command::Render => images::render(),
+        Command::Count(a) => count::count(&a),
+        Command::Mcu(a) => mcu::mcu(&a),
+        Command::Size(a) => mcu::size(&a),
+        Command::Report(a) => report::report(&a),
+        Command::BakeLight3d(a) => match light3d::run(&a) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("cargo xtask bake-light3d: {e}");
                 ExitCode::from(1)
             }
         },
-        "bake" => match bake::run(rest) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake: {e}")),
-            Err(bake::BakeError::Failed(e)) => {
-                eprintln!("cargo xtask bake: {e}");
-                ExitCode::from(1)
-            }
-        },
-        "bake-obj" => match bake_obj::run(rest) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-obj: {e}")),
-            Err(bake::BakeError::Failed(e)) => {
-                eprintln!("bake-obj: {e}");
-                ExitCode::FAILURE
-            }
-        },
-        "bake-displaced" => match bake_displaced::run(rest) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-displaced: {e}")),
-            Err(bake::BakeError::Failed(e)) => {
-                eprintln!("bake-displaced: {e}");
-                ExitCode::FAILURE
-            }
-        },
-        "teapot" => match teapot::run(rest) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(bake::BakeError::Usage(e)) => usage_error(&format!("teapot: {e}")),
-            Err(bake::BakeError::Failed(e)) => {
-                eprintln!("teapot: {e}");
-                ExitCode::FAILURE
-            }
-        },
-        "bake-cube" => match bake_cube::run(rest) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(bake::BakeError::Usage(e)) => usage_error(&format!("bake-cube: {e}")),
-            Err(bake::BakeError::Failed(e)) => {
-                eprintln!("cargo xtask bake-cube: {e}");
-                ExitCode::from(1)
-            }
-        },
-        other => usage_error(&format!("unknown command `{other}`")),
+        Command::Bake(a) => bake_status("bake", "cargo xtask bake", bake::run(&a)),
+        Command::BakeObj(a) => bake_status("bake-obj", "bake-obj", bake_obj::run(&a)),
+        Command::BakeDisplaced(a) => {
+            bake_status("bake-displaced", "bake-displaced", bake_displaced::run(&a))
+        }
+        Command::Teapot(a) => bake_status("teapot", "teapot", teapot::run(&a)),
+        Command::BakeCube(a) => {
+            bake_status("bake-cube", "cargo xtask bake-cube", bake_cube::run(&a))
+        }
     }
 }
 
-fn usage_error(msg: &str) -> ExitCode {
-    eprintln!("error: {msg}\n\nRun `cargo xtask help` for the list of commands.");
+/// The exit status of a bake command `cmd`: a usage error as clap reports one, a failure
+/// as `{prefix}: {message}` (exit status 1).
+fn bake_status(cmd: &str, prefix: &str, r: Result<(), bake::BakeError>) -> ExitCode {
+    match r {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(bake::BakeError::Usage(e)) => usage_error(cmd, e),
+        Err(bake::BakeError::Failed(e)) => {
+            eprintln!("{prefix}: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// A usage error found after parsing (it depends on the input, e.g. a PNG's size): printed
+/// in clap's format with the usage of the subcommand `cmd`; exit status 2.
+fn usage_error(cmd: &str, msg: impl Display) -> ExitCode {
+    let mut top = Cli::command();
+    top.build();
+    let err = match top.find_subcommand_mut(cmd) {
+        Some(sub) => sub.error(ErrorKind::ValueValidation, msg),
+        None => top.error(ErrorKind::ValueValidation, msg),
+    };
+    let _ = err.print();
     ExitCode::from(2)
 }
 
-fn no_flags(cmd: &str, rest: &[String]) -> Result<(), ExitCode> {
-    match rest.first() {
-        None => Ok(()),
-        Some(a) => Err(usage_error(&format!(
-            "`{cmd}` takes no arguments (got `{a}`)"
-        ))),
-    }
+/// Parses `cargo xtask <args>` for the tests.
+#[cfg(test)]
+fn parse(args: &[&str]) -> Result<Command, clap::Error> {
+    Cli::try_parse_from(std::iter::once("xtask").chain(args.iter().copied())).map(|c| c.command)
 }

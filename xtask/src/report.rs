@@ -4,24 +4,35 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use crate::cmd::{cargo, fmt_dur, root, target_dir};
-use crate::{mcu, usage_error};
+use clap::Args;
 
-pub(crate) fn report(flags: &[String]) -> ExitCode {
-    let (mut runs, mut mcu_on, mut install, mut docs) = (7u32, true, true, false);
-    let mut it = flags.iter();
-    while let Some(f) = it.next() {
-        match f.as_str() {
-            "--runs" => match it.next().map(|n| n.parse::<u32>()) {
-                Some(Ok(n)) if n > 0 => runs = n,
-                _ => return usage_error("`--runs` needs a positive number"),
-            },
-            "--no-mcu" => mcu_on = false,
-            "--no-install" => install = false,
-            "--docs" => docs = true,
-            other => return usage_error(&format!("unknown flag for `report`: `{other}`")),
-        }
-    }
+use crate::cmd::{cargo, fmt_dur, root, target_dir};
+use crate::mcu;
+
+/// Flags of `cargo xtask report`.
+#[derive(Args, Clone, Debug)]
+pub(crate) struct ReportArgs {
+    /// Timed host runs of each scene's frames (ns per pixel: median, min, max)
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 7,
+        value_parser = clap::value_parser!(u32).range(1..)
+    )]
+    pub runs: u32,
+    /// Host only (no QEMU columns)
+    #[arg(long)]
+    pub no_mcu: bool,
+    /// Do not install missing tools (see `mcu`)
+    #[arg(long)]
+    pub no_install: bool,
+    /// Also copy report.md and the plots to docs/report/
+    #[arg(long)]
+    pub docs: bool,
+}
+
+pub(crate) fn report(args: &ReportArgs) -> ExitCode {
+    let (runs, mcu_on, install, docs) = (args.runs, !args.no_mcu, !args.no_install, args.docs);
     let t0 = Instant::now();
     let out = target_dir().join("report");
     if let Err(e) = std::fs::create_dir_all(&out) {

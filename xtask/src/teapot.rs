@@ -12,7 +12,9 @@
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
 
 use crate::bake::BakeError;
 
@@ -155,32 +157,32 @@ pub fn obj(tris: &[[usize; 3]], pos: &[[f64; 3]], n: u32) -> String {
     o
 }
 
-/// `teapot [--grid N] [--patches FILE] [--out FILE]`.
-pub fn run(args: &[String]) -> Result<(), BakeError> {
+/// Arguments of `cargo xtask teapot`.
+#[derive(Args, Clone, Debug)]
+pub struct TeapotArgs {
+    /// Samples per patch side, 1..=32
+    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=32))]
+    pub grid: u32,
+    /// Newell's patch data [default: assets/teapot/newell.txt]
+    #[arg(long, value_name = "FILE")]
+    pub patches: Option<PathBuf>,
+    /// The OBJ to write [default: assets/teapot/teapot.obj]
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+}
+
+/// Tessellates the patches of `args` into an OBJ.
+pub fn run(args: &TeapotArgs) -> Result<(), BakeError> {
     let root = crate::cmd::root();
-    let mut grid = 5u32;
-    let mut input = root.join("assets/teapot/newell.txt");
-    let mut out = root.join("assets/teapot/teapot.obj");
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut val = |flag: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| BakeError::Usage(format!("`{flag}` needs a value")))
-        };
-        match a.as_str() {
-            "--grid" => {
-                grid = val("--grid")?
-                    .parse()
-                    .ok()
-                    .filter(|g| (1..=32).contains(g))
-                    .ok_or_else(|| BakeError::Usage("`--grid` needs 1..=32".into()))?
-            }
-            "--patches" => input = val("--patches")?.into(),
-            "--out" => out = val("--out")?.into(),
-            other => return Err(BakeError::Usage(format!("unknown argument `{other}`"))),
-        }
-    }
+    let grid = args.grid;
+    let input = args
+        .patches
+        .clone()
+        .unwrap_or_else(|| root.join("assets/teapot/newell.txt"));
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| root.join("assets/teapot/teapot.obj"));
     let text = std::fs::read_to_string(&input)
         .map_err(|e| BakeError::Failed(format!("{}: {e}", input.display())))?;
     let (patches, points) =

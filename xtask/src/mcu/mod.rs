@@ -6,7 +6,7 @@
 //! `llvm-tools`) and python3 (the cycle model, `xtask/mcu/cycles.py`).
 //!
 //! This module holds what the parts share: the MCU profiles, the scene lists, the paths and
-//! the flags. `scenes` is `cargo xtask mcu`, `size` is `cargo xtask size`, `report` the
+//! the flags (clap `Args`). `scenes` is `cargo xtask mcu`, `size` is `cargo xtask size`, `report` the
 //! microcontroller part of `cargo xtask report`; `tools`, `firmware` and `qemu` build and
 //! run.
 
@@ -19,6 +19,8 @@ mod tools;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+use clap::Args;
 
 use crate::cmd::root;
 
@@ -148,39 +150,49 @@ fn out_dir() -> PathBuf {
     root().join("target").join("mcu")
 }
 
-/// Flags shared by `mcu` and `size`.
-struct Flags {
-    runs: u32,
-    profile: bool,
-    opt_s: bool,
-    install: bool,
+/// QEMU runs per scene of `cargo xtask mcu` unless `--runs` says otherwise.
+const DEFAULT_RUNS: u32 = 2;
+
+/// Flags of `cargo xtask mcu` (its defaults are what `cargo xtask ci` runs).
+#[derive(Args, Clone, Debug)]
+pub struct McuArgs {
+    /// QEMU runs per scene; their instruction counts must agree
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = DEFAULT_RUNS,
+        value_parser = clap::value_parser!(u32).range(1..)
+    )]
+    pub runs: u32,
+    /// Where the instructions go, per function
+    #[arg(long)]
+    pub profile: bool,
+    /// Also report flash at opt-level s
+    #[arg(long)]
+    pub opt_s: bool,
+    /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
+    #[arg(long)]
+    pub no_install: bool,
 }
 
-fn parse_flags(cmd: &str, rest: &[String]) -> Result<Flags, ExitCode> {
-    let mut f = Flags {
-        runs: 2,
-        profile: false,
-        opt_s: false,
-        install: true,
-    };
-    let mut it = rest.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--profile" if cmd == "mcu" => f.profile = true,
-            "--opt-s" => f.opt_s = true,
-            "--no-install" => f.install = false,
-            "--runs" if cmd == "mcu" => {
-                f.runs = match it.next().and_then(|n| n.parse().ok()) {
-                    Some(n) if n >= 1 => n,
-                    _ => return Err(crate::usage_error("--runs needs a number >= 1")),
-                }
-            }
-            other => {
-                return Err(crate::usage_error(&format!(
-                    "{cmd}: unknown flag `{other}`"
-                )))
-            }
+impl Default for McuArgs {
+    fn default() -> Self {
+        McuArgs {
+            runs: DEFAULT_RUNS,
+            profile: false,
+            opt_s: false,
+            no_install: false,
         }
     }
-    Ok(f)
+}
+
+/// Flags of `cargo xtask size`.
+#[derive(Args, Clone, Debug)]
+pub struct SizeArgs {
+    /// Also report fixel's flash at opt-level s
+    #[arg(long)]
+    pub opt_s: bool,
+    /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
+    #[arg(long)]
+    pub no_install: bool,
 }

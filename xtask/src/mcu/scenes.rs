@@ -11,7 +11,7 @@ use std::time::Instant;
 use super::firmware::{build_firmware, build_whole, elf, sizes};
 use super::qemu::{kv, measure, measure_modes, num};
 use super::tools::{build_plugin, ensure_tools, output, qemu_version, run_visible, rustc_version};
-use super::{fail, firmware_dir, out_dir, parse_flags, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
+use super::{fail, firmware_dir, out_dir, McuArgs, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
 use crate::cmd::root;
 
 /// The geometry firmware on each MCU: a table of instructions per item and stage.
@@ -103,13 +103,9 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
 }
 
 /// `cargo xtask mcu`.
-pub fn mcu(rest: &[String]) -> ExitCode {
-    let flags = match parse_flags("mcu", rest) {
-        Ok(f) => f,
-        Err(e) => return e,
-    };
+pub fn mcu(flags: &McuArgs) -> ExitCode {
     let t0 = Instant::now();
-    let llvm = match ensure_tools(flags.install) {
+    let llvm = match ensure_tools(!flags.no_install) {
         Ok(l) => l,
         Err(e) => return fail(e),
     };

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use super::firmware::{build_firmware, elf, sizes};
 use super::qemu::{kv, num, qemu};
 use super::tools::{ensure_tools, rustc_version};
-use super::{fail, firmware_dir, parse_flags, MCUS};
+use super::{fail, firmware_dir, SizeArgs, MCUS};
 
 /// Size firmwares, in the order of the table.
 const SIZES: [(&str, &str); 11] = [
@@ -36,12 +36,8 @@ const SIZES: [(&str, &str); 11] = [
 ];
 
 /// `cargo xtask size`.
-pub fn size(rest: &[String]) -> ExitCode {
-    let flags = match parse_flags("size", rest) {
-        Ok(f) => f,
-        Err(e) => return e,
-    };
-    let llvm = match ensure_tools(flags.install) {
+pub fn size(flags: &SizeArgs) -> ExitCode {
+    let llvm = match ensure_tools(!flags.no_install) {
         Ok(l) => l,
         Err(e) => return fail(e),
     };
