@@ -227,6 +227,9 @@ pub fn walk_mesh<C: TargetColor>(
     let vp = draw.viewport();
     let cull = draw.mode().cull;
     let n = mesh.positions.len();
+    // Without caller storage, four slots of the walker's own (the corners always have one).
+    let mut spare = [CachedVertex::EMPTY; 4];
+    let cache: &mut [CachedVertex] = if cache.is_empty() { &mut spare } else { cache };
     // Slot of vertex i: i itself when every vertex has one, else i mod 2^k.
     let mask = if cache.len() >= n {
         usize::MAX
@@ -263,39 +266,49 @@ pub fn walk_mesh<C: TargetColor>(
         let id = first_id + t;
         let full = out.attributes();
         let lit = full && ctx.light.is_some();
-        // The three corners, prepared (from the cache or placed now), copied out: two
-        // corners may share a direct-mapped slot.
-        let mut v = [CachedVertex::default(); 3];
+        // The three corners, prepared in their cache slots (or placed now when there is no
+        // cache); only what culling reads is copied out here, so a culled triangle (half of
+        // a closed mesh) moves 12 bytes per corner, not 32.
+        let slots = idx.map(|i| usize::from(i) & mask);
+        let mut cut = [(0i32, 0i32, 0u8); 3];
         for k in 0..3 {
             let i = usize::from(idx[k]);
-            v[k] = match cache.get_mut(i & mask) {
-                Some(c) => {
-                    let key = i as u32 | tag;
-                    if c.key != key || c.state == EMPTY {
-                        place(&ctx, vp, i, c, full);
-                        c.key = key;
-                    }
-                    *c
+            if let Some(c) = cache.get_mut(slots[k]) {
+                let key = i as u32 | tag;
+                if c.key != key || c.state == EMPTY {
+                    place(&ctx, vp, i, c, full);
+                    c.key = key;
                 }
-                None => {
-                    let mut c = CachedVertex::default();
-                    place(&ctx, vp, i, &mut c, full);
-                    c
-                }
-            };
+                cut[k] = (c.x, c.y, c.outcode);
+            }
         }
-        let any = v[0].outcode | v[1].outcode | v[2].outcode;
+        let any = cut[0].2 | cut[1].2 | cut[2].2;
         if any != 0 {
             // A failed corner (FAILED_CODE), wholly outside one plane, or to be clipped.
-            if any & FAILED_CODE == 0 && v[0].outcode & v[1].outcode & v[2].outcode == 0 {
+            if any & FAILED_CODE == 0 && cut[0].2 & cut[1].2 & cut[2].2 == 0 {
                 clipped(draw, &ctx, idx, lit, id, out);
             }
             continue;
         }
         // Cull from the cached positions: a culled triangle builds no screen vertices.
-        if !out.kept(id) && !keeps_xy([v[0].xy(), v[1].xy(), v[2].xy()], cull) {
+        let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
+        if !out.kept(id) && !keeps_xy([xy(0), xy(1), xy(2)], cull) {
             continue;
         }
+        // Kept: the corners copied out whole. Two corners of a small cache may share a
+        // direct-mapped slot, and the later one then replaced the earlier: placed again.
+        let mut v: [CachedVertex; 3] = core::array::from_fn(|k| {
+            let i = usize::from(idx[k]);
+            match cache.get(slots[k]) {
+                Some(c) if c.key == i as u32 | tag && c.state != EMPTY => *c,
+                _ => {
+                    let mut c = CachedVertex::EMPTY;
+                    place(&ctx, vp, i, &mut c, full);
+                    c.key = i as u32 | tag;
+                    c
+                }
+            }
+        });
         // Without attributes only the rows count (a band renderer's binning pass once its
         // bins are full): positions alone.
         let mut tri = if full {
