@@ -435,6 +435,64 @@ pub struct ObjArgs {
     pub krate: String,
 }
 
+impl ObjArgs {
+    /// The bake's options (the default name from the input's file stem).
+    pub fn opts(&self) -> ObjOpts {
+        ObjOpts {
+            name: match self.name.as_deref() {
+                None | Some("") => crate::bake::default_name(Path::new(&self.input)),
+                Some(n) => n.to_string(),
+            },
+            uv: self.uv,
+            axis: match self.axis {
+                UpAxis::X => Axis::X,
+                UpAxis::Y => Axis::Y,
+                UpAxis::Z => Axis::Z,
+            },
+            smooth_normals: self.normals == Normals::Smooth,
+            tangents: self.tangents,
+            scale: self.scale,
+            krate: self.krate.clone(),
+        }
+    }
+
+    /// The arguments as a command line for the generated file's header, so the header
+    /// reproduces the file: each option not at its default, then the input and output.
+    pub fn command_line(&self) -> String {
+        let mut s = String::new();
+        let name = |v: &dyn Fn() -> Option<clap::builder::PossibleValue>| {
+            v().map(|p| p.get_name().to_string()).unwrap_or_default()
+        };
+        if let Some(n) = self.name.as_deref().filter(|n| !n.is_empty()) {
+            let _ = write!(s, "--name {n} ");
+        }
+        if self.uv != UvSource::Keep {
+            let _ = write!(s, "--uv {} ", name(&|| self.uv.to_possible_value()));
+        }
+        if self.axis != UpAxis::Y {
+            let _ = write!(s, "--axis {} ", name(&|| self.axis.to_possible_value()));
+        }
+        if self.normals != Normals::Keep {
+            let _ = write!(
+                s,
+                "--normals {} ",
+                name(&|| self.normals.to_possible_value())
+            );
+        }
+        if self.tangents {
+            s.push_str("--tangents ");
+        }
+        if self.scale != 1.0 {
+            let _ = write!(s, "--scale {} ", self.scale);
+        }
+        if self.krate != "fixel" {
+            let _ = write!(s, "--crate {} ", self.krate);
+        }
+        let _ = write!(s, "{} {}", self.input, self.output);
+        s
+    }
+}
+
 /// `--axis`: the up axis of generated texture coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum UpAxis {
@@ -462,25 +520,10 @@ fn parse_scale(v: &str) -> Result<f64, String> {
 /// Bakes `args.input` into `args.output`.
 pub fn run(args: &ObjArgs) -> Result<(), BakeError> {
     let (input, output) = (&args.input, &args.output);
-    let o = ObjOpts {
-        name: match args.name.as_deref() {
-            None | Some("") => crate::bake::default_name(Path::new(input)),
-            Some(n) => n.to_string(),
-        },
-        uv: args.uv,
-        axis: match args.axis {
-            UpAxis::X => Axis::X,
-            UpAxis::Y => Axis::Y,
-            UpAxis::Z => Axis::Z,
-        },
-        smooth_normals: args.normals == Normals::Smooth,
-        tangents: args.tangents,
-        scale: args.scale,
-        krate: args.krate.clone(),
-    };
+    let o = args.opts();
     let m = load(Path::new(input), o.scale).map_err(BakeError::Failed)?;
     let b = bake(&m, &o).map_err(|e| BakeError::Failed(format!("{input}: {e}")))?;
-    std::fs::write(output, source(&b, input, &o))
+    std::fs::write(output, source(&b, &args.command_line(), &o))
         .map_err(|e| BakeError::Failed(format!("{output}: {e}")))?;
     let f = flash(&b);
     let total: usize = f.iter().map(|x| x.1).sum();
