@@ -59,16 +59,16 @@ fn guard_times_split(g: i32, w: i32) -> i64 {
 }
 
 #[inline]
-fn dist<const N: usize>(plane: usize, a: &Attr<N>, guard: (i32, i32)) -> i64 {
-    let [x, y, z, w] = a.p.map(i64::from);
+fn dist(plane: usize, p: &[i32; 4], guard: (i32, i32)) -> i64 {
+    let [x, y, z, w] = p.map(i64::from);
     match plane {
         0 => w - i64::from(W_MIN_BITS),
         1 => z + w,
         2 => w - z,
-        3 => guard_times(guard.0, a.p[3]) - x,
-        4 => guard_times(guard.0, a.p[3]) + x,
-        5 => guard_times(guard.1, a.p[3]) - y,
-        _ => guard_times(guard.1, a.p[3]) + y,
+        3 => guard_times(guard.0, p[3]) - x,
+        4 => guard_times(guard.0, p[3]) + x,
+        5 => guard_times(guard.1, p[3]) - y,
+        _ => guard_times(guard.1, p[3]) + y,
     }
 }
 
@@ -90,10 +90,11 @@ fn dist_any(plane: usize, p: &[i32; 4], guard: (i32, i32)) -> i64 {
     }
 }
 
-fn outcode<const N: usize>(a: &Attr<N>, guard: (i32, i32)) -> u8 {
+#[inline(never)]
+fn outcode(pos: &[i32; 4], guard: (i32, i32)) -> u8 {
     let mut c = 0;
     for p in 0..PLANES {
-        if dist(p, a, guard) < 0 {
+        if dist(p, pos, guard) < 0 {
             c |= 1 << p;
         }
     }
@@ -109,9 +110,9 @@ fn attrs_and_codes<const N: usize>(
 ) -> ([Attr<N>; 3], [u8; 3]) {
     let a = [attr(&tri[0]), attr(&tri[1]), attr(&tri[2])];
     let codes = [
-        outcode(&a[0], guard),
-        outcode(&a[1], guard),
-        outcode(&a[2], guard),
+        outcode(&a[0].p, guard),
+        outcode(&a[1].p, guard),
+        outcode(&a[2].p, guard),
     ];
     (a, codes)
 }
@@ -206,17 +207,25 @@ pub fn clip_and_project_varyings<const N: usize>(
     emit: &mut impl FnMut(&ScreenTriangle<N>),
 ) {
     let guard = vp.guard;
-    let (a, codes) = attrs_and_codes(tri, guard);
-    if codes[0] & codes[1] & codes[2] != 0 {
-        return; // wholly outside one plane
-    }
     let empty = Attr {
         p: [0; 4],
         v: [0; N],
     };
+    // The corners straight into the polygon buffer (as `attrs_and_codes`, without an
+    // array of them to copy in: that copy linked `memcpy` once `outcode` was out of line).
     let mut poly = [empty; MAX_POLY];
+    for (d, v) in poly.iter_mut().zip(tri) {
+        *d = attr(v);
+    }
+    let codes = [
+        outcode(&poly[0].p, guard),
+        outcode(&poly[1].p, guard),
+        outcode(&poly[2].p, guard),
+    ];
+    if codes[0] & codes[1] & codes[2] != 0 {
+        return; // wholly outside one plane
+    }
     let mut n = 3;
-    poly[..3].copy_from_slice(&a);
     let any = codes[0] | codes[1] | codes[2];
     // Clipping alternates between two polygon buffers by swapping references (copying the
     // clipped polygon back each plane linked a variable-length `memcpy`, ~900 bytes).
@@ -260,16 +269,18 @@ pub fn clip_and_project_varyings<const N: usize>(
     } else {
         &poly[..n]
     };
-    let mut screen = [ScreenVertex::<N>::default(); MAX_POLY];
-    for (s, a) in screen.iter_mut().zip(fin) {
+    // A fan from the first vertex, each vertex projected once into a sliding triangle (no
+    // array of projected vertices to fill and copy triangles out of).
+    let mut t = [ScreenVertex::<N>::default(); 3];
+    for (k, a) in fin.iter().enumerate() {
         // Through a local copy: `fin` points into either polygon buffer, and a copy straight
         // from it made LLVM link `memmove` (1.6 KB) for wide vertices.
         let a = *a;
-        *s = project_attr(&a, vp);
-    }
-    for i in 1..n - 1 {
-        let t = [screen[0], screen[i], screen[i + 1]];
-        if keeps(&t, cull) {
+        t[1] = t[2];
+        t[2] = project_attr(&a, vp);
+        if k == 0 {
+            t[0] = t[2];
+        } else if k >= 2 && keeps(&t, cull) {
             emit(&t);
         }
     }
@@ -352,7 +363,7 @@ pub fn keeps_xy(t: [(i32, i32); 3], cull: Cull) -> bool {
 /// vertices gets the same screen triangles without projecting a shared vertex again.
 pub fn prepare(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex) {
     let a = attr(&v.to_vertex());
-    (outcode(&a, vp.guard), project_attr(&a, vp))
+    (outcode(&a.p, vp.guard), project_attr(&a, vp))
 }
 
 /// [`prepare`] without the depth division: the screen vertex's `z` holds the *clip-space*
@@ -370,7 +381,7 @@ pub fn prepare_without_depth(v: &ClipVertex, vp: &Viewport) -> (u8, ScreenVertex
         w,
         varyings: a.v,
     };
-    (outcode(&a, vp.guard), s)
+    (outcode(&a.p, vp.guard), s)
 }
 
 /// Turns a vertex from [`prepare_without_depth`] into what [`prepare`] gives.
@@ -516,12 +527,11 @@ mod tests {
                 (x >> 24) as i32,
             ];
             let p = if i % 4 == 0 { p.map(|c| c >> 12) } else { p };
-            let a = Attr::<0> { p, v: [] };
             let guard = (i32::from((x >> 40) as u16), i32::from((x >> 48) as u16));
             for plane in 0..PLANES {
                 assert_eq!(
                     dist_any(plane, &p, guard),
-                    dist(plane, &a, guard),
+                    dist(plane, &p, guard),
                     "{plane}"
                 );
             }
