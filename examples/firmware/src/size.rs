@@ -36,7 +36,7 @@ pub static POSITIONS: [Vec3; 3] = [
 ];
 /// Its normals (facing the camera).
 pub static NORMALS: [Vec3; 3] = [Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE); 3];
-static UVS: [[Fx; 2]; 3] = [
+pub static UVS: [[Fx; 2]; 3] = [
     [Fx::ZERO, Fx::ZERO],
     [Fx::from_bits(2 << 16), Fx::ZERO],
     [Fx::ONE, Fx::from_bits(2 << 16)],

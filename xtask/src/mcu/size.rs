@@ -9,12 +9,17 @@ use super::tools::{ensure_tools, rustc_version};
 use super::{fail, firmware_dir, SizeArgs, MCUS};
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 11] = [
+const SIZES: [(&str, &str); 12] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     (
         "size_affine_unclipped",
         "the same, no clipper (Draw::project_unclipped: geometry stays in view)",
+    ),
+    (
+        "size_open",
+        "the same triangle through the open stage (ShadedDraw + Replace, u and v from the \
+         firmware's own vertex function, bands by Frame::at_row, clipped)",
     ),
     ("size_perspective", "+ perspective-correct"),
     ("size_bilinear", "+ bilinear"),
@@ -131,6 +136,14 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
         if c.iter().any(|x| x != &c[0]) {
             problems.push(format!("{bin}: targets disagree on the frame: {c:?}"));
         }
+    }
+    // The two minimal firmwares draw one frame, through the classic draw and the open stage.
+    if checks.get("size_open") != checks.get("size_affine") {
+        problems.push(format!(
+            "size_open and size_affine draw different frames: {:?} vs {:?}",
+            checks.get("size_open"),
+            checks.get("size_affine")
+        ));
     }
     if problems.is_empty() {
         println!(
