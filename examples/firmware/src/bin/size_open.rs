@@ -20,7 +20,13 @@ static CHAIN: MipTexture<'static> =
     MipTexture::single(Texture::from_static(&data::T8_TEXELS, 8, 8));
 
 fn run() -> bool {
-    let Ok(tex) = TexBinding::new(core::hint::black_box(&CHAIN), Nearest, Repeat, Repeat, Lod::default()) else {
+    let Ok(tex) = TexBinding::new(
+        core::hint::black_box(&CHAIN),
+        Nearest,
+        Repeat,
+        Repeat,
+        Lod::default(),
+    ) else {
         return false;
     };
     let Ok(vp) = Viewport::new(0, 0, W, H) else {
@@ -36,7 +42,10 @@ fn run() -> bool {
         let i = usize::from(i);
         let p = mvp.transform_point(*POSITIONS.get(i)?)?;
         let [u, v] = *UVS.get(i)?;
-        Some(Vertex::new([p.x, p.y, p.z, p.w], [u.to_bits(), v.to_bits()]))
+        Some(Vertex::new(
+            [p.x, p.y, p.z, p.w],
+            [u.to_bits(), v.to_bits()],
+        ))
     };
     let mut color = [Rgb565::new(0, 0, 0); (W * ROWS) as usize];
     let mut sum = Fnv1a::default();
