@@ -298,7 +298,21 @@ pub fn project_unclipped(
     emit: &mut impl FnMut(&ScreenTriangle<CLASSIC_VARYINGS>),
 ) -> bool {
     let tri = [tri[0].to_vertex(), tri[1].to_vertex(), tri[2].to_vertex()];
-    let (a, codes) = attrs_and_codes(&tri, vp.guard);
+    project_unclipped_varyings(&tri, vp, cull, emit)
+}
+
+/// [`project_unclipped`] for a triangle of any varyings: as [`clip_and_project_varyings`]
+/// would project and cull it (the same screen triangle, bit for bit; `noperspective` only
+/// matters for clipped vertices), without linking the clipper. `false`, emitting nothing,
+/// when the triangle would have to be clipped; `true` when it was handled (drawn, culled, or
+/// wholly outside one plane).
+pub fn project_unclipped_varyings<const N: usize>(
+    tri: &[Vertex<N>; 3],
+    vp: &Viewport,
+    cull: Cull,
+    emit: &mut impl FnMut(&ScreenTriangle<N>),
+) -> bool {
+    let (a, codes) = attrs_and_codes(tri, vp.guard);
     if codes[0] & codes[1] & codes[2] != 0 {
         return true; // wholly outside one plane: nothing to draw
     }

@@ -19,7 +19,7 @@ pub(crate) mod viewport;
 
 pub use clip::{
     clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
-    prepare_without_depth, project_unclipped, W_MIN_BITS,
+    prepare_without_depth, project_unclipped, project_unclipped_varyings, W_MIN_BITS,
 };
 pub use homography::Homography;
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};

@@ -29,7 +29,9 @@ use core::marker::PhantomData;
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
-use crate::geometry::{clip_and_project_varyings, Cull, ScreenTriangle, Vertex, Viewport};
+use crate::geometry::{
+    clip_and_project_varyings, project_unclipped_varyings, Cull, ScreenTriangle, Vertex, Viewport,
+};
 use crate::shading::Shader;
 use crate::surface::RenderTarget;
 use crate::Error;
@@ -124,6 +126,43 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
     ) {
         let noperspective = self.projection == Projection::Affine;
         clip_and_project_varyings(tri, &self.viewport, self.cull, noperspective, emit);
+    }
+
+    /// Projects and culls one clip-space triangle that needs no clipping, as
+    /// [`project`](Self::project) would (the same screen triangle, bit for bit), without
+    /// linking the clipper (about 1.3 KB of flash on Cortex-M4F): for firmware whose
+    /// geometry stays in view. Returns `false`, emitting nothing, when the triangle crosses
+    /// a plane of the view volume or guard band (it would have to be clipped).
+    ///
+    /// ```
+    /// use fixel::prelude::*;
+    /// use fixel::geometry::Vertex;
+    /// use fixel::pipeline::{Affine, NoDepth, ShadedDraw};
+    /// use fixel::shading::Gouraud;
+    /// use fixel::Rgb565;
+    ///
+    /// let draw = ShadedDraw::<_, Affine, NoDepth>::new(Gouraud, Viewport::new(0, 0, 32, 32)?, Cull::Back)?;
+    /// let one = 256 << 16;
+    /// let at = |x: f32, y: f32, w: f32| {
+    ///     Vertex::new([fixel::math::fx(x), fixel::math::fx(y), Fx::ZERO, fixel::math::fx(w)], [one, one, one])
+    /// };
+    /// let (mut color, mut drawn) = ([Rgb565::default(); 32 * 32], 0);
+    /// let mut frame = Frame::new(&mut color, 32, 32)?;
+    /// // In view: drawn without the clipper.
+    /// let near = [at(-0.5, -0.5, 1.0), at(0.5, -0.5, 1.0), at(0.0, 0.5, 1.0)];
+    /// assert!(draw.project_unclipped(&near, &mut |s| drawn += draw.screen_triangle(s, &mut frame).unwrap_or(0)));
+    /// assert!(drawn > 100);
+    /// // One corner behind the camera: it would need clipping, so it is refused.
+    /// let behind = [at(-0.5, -0.5, 1.0), at(0.5, -0.5, 1.0), at(0.0, 0.5, -1.0)];
+    /// assert!(!draw.project_unclipped(&behind, &mut |_| unreachable!()));
+    /// # Ok::<(), fixel::Error>(())
+    /// ```
+    pub fn project_unclipped<const N: usize>(
+        &self,
+        tri: &[Vertex<N>; 3],
+        emit: &mut impl FnMut(&ScreenTriangle<N>),
+    ) -> bool {
+        project_unclipped_varyings(tri, &self.viewport, self.cull, emit)
     }
 
     /// Whether `target` can take this draw: [`Error::NoDepthBuffer`] when the draw tests

@@ -9,7 +9,7 @@ use super::tools::{ensure_tools, rustc_version};
 use super::{fail, firmware_dir, SizeArgs, MCUS};
 
 /// Size firmwares, in the order of the table.
-const SIZES: [(&str, &str); 12] = [
+const SIZES: [(&str, &str); 13] = [
     ("size_base", "harness only (no fixel)"),
     ("size_affine", "textured affine nearest unlit triangle"),
     (
@@ -20,6 +20,10 @@ const SIZES: [(&str, &str); 12] = [
         "size_open",
         "the same triangle through the open stage (ShadedDraw + Replace, u and v from the \
          firmware's own vertex function, bands by Frame::at_row, clipped)",
+    ),
+    (
+        "size_open_unclipped",
+        "the same, no clipper (ShadedDraw::project_unclipped)",
     ),
     ("size_perspective", "+ perspective-correct"),
     ("size_bilinear", "+ bilinear"),
@@ -137,13 +141,15 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
             problems.push(format!("{bin}: targets disagree on the frame: {c:?}"));
         }
     }
-    // The two minimal firmwares draw one frame, through the classic draw and the open stage.
-    if checks.get("size_open") != checks.get("size_affine") {
-        problems.push(format!(
-            "size_open and size_affine draw different frames: {:?} vs {:?}",
-            checks.get("size_open"),
-            checks.get("size_affine")
-        ));
+    // The minimal firmwares draw one frame, through the classic draw and the open stage.
+    for bin in ["size_affine_unclipped", "size_open", "size_open_unclipped"] {
+        if checks.get(bin) != checks.get("size_affine") {
+            problems.push(format!(
+                "{bin} and size_affine draw different frames: {:?} vs {:?}",
+                checks.get(bin),
+                checks.get("size_affine")
+            ));
+        }
     }
     if problems.is_empty() {
         println!(
