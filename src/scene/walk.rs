@@ -266,49 +266,63 @@ pub fn walk_mesh<C: TargetColor>(
         let id = first_id + t;
         let full = out.attributes();
         let lit = full && ctx.light.is_some();
-        // The three corners, prepared in their cache slots (or placed now when there is no
-        // cache); only what culling reads is copied out here, so a culled triangle (half of
-        // a closed mesh) moves 12 bytes per corner, not 32.
+        // A triangle not known to pass the cull: its three corners prepared in their cache
+        // slots, and only what the outcode and cull tests read copied out (12 bytes per
+        // corner, not 32): a culled triangle (half of a closed mesh) copies nothing more.
         let slots = idx.map(|i| usize::from(i) & mask);
-        let mut cut = [(0i32, 0i32, 0u8); 3];
-        for k in 0..3 {
-            let i = usize::from(idx[k]);
-            if let Some(c) = cache.get_mut(slots[k]) {
-                let key = i as u32 | tag;
-                if c.key != key || c.state == EMPTY {
-                    place(&ctx, vp, i, c, full);
-                    c.key = key;
+        let known = out.kept(id);
+        if !known {
+            let mut cut = [(0i32, 0i32, 0u8); 3];
+            for k in 0..3 {
+                let i = usize::from(idx[k]);
+                if let Some(c) = cache.get_mut(slots[k]) {
+                    let key = i as u32 | tag;
+                    if c.key != key || c.state == EMPTY {
+                        place(&ctx, vp, i, c, full);
+                        c.key = key;
+                    }
+                    cut[k] = (c.x, c.y, c.outcode);
                 }
-                cut[k] = (c.x, c.y, c.outcode);
+            }
+            let codes = [cut[0].2, cut[1].2, cut[2].2];
+            if codes[0] | codes[1] | codes[2] != 0 {
+                to_clip(draw, &ctx, idx, lit, id, codes, out);
+                continue;
+            }
+            // Cull from the cached positions: a culled triangle builds no screen vertices.
+            let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
+            if !keeps_xy([xy(0), xy(1), xy(2)], cull) {
+                continue;
             }
         }
-        let any = cut[0].2 | cut[1].2 | cut[2].2;
-        if any != 0 {
-            // A failed corner (FAILED_CODE), wholly outside one plane, or to be clipped.
-            if any & FAILED_CODE == 0 && cut[0].2 & cut[1].2 & cut[2].2 == 0 {
-                clipped(draw, &ctx, idx, lit, id, out);
-            }
-            continue;
-        }
-        // Cull from the cached positions: a culled triangle builds no screen vertices.
-        let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
-        if !out.kept(id) && !keeps_xy([xy(0), xy(1), xy(2)], cull) {
-            continue;
-        }
-        // Kept: the corners copied out whole. Two corners of a small cache may share a
-        // direct-mapped slot, and the later one then replaced the earlier: placed again.
+        // The corners copied out whole (prepared now for a triangle known to pass the cull, a
+        // band pass's). Two corners of a small cache may share a direct-mapped slot, and the
+        // later one then replaced the earlier: placed again.
         let mut v: [CachedVertex; 3] = core::array::from_fn(|k| {
             let i = usize::from(idx[k]);
-            match cache.get(slots[k]) {
-                Some(c) if c.key == i as u32 | tag && c.state != EMPTY => *c,
+            let key = i as u32 | tag;
+            match cache.get_mut(slots[k]) {
+                Some(c) if c.key == key && c.state != EMPTY => *c,
+                Some(c) if known => {
+                    place(&ctx, vp, i, c, full);
+                    c.key = key;
+                    *c
+                }
                 _ => {
                     let mut c = CachedVertex::EMPTY;
                     place(&ctx, vp, i, &mut c, full);
-                    c.key = i as u32 | tag;
+                    c.key = key;
                     c
                 }
             }
         });
+        if known {
+            let codes = [v[0].outcode, v[1].outcode, v[2].outcode];
+            if codes[0] | codes[1] | codes[2] != 0 {
+                to_clip(draw, &ctx, idx, lit, id, codes, out);
+                continue;
+            }
+        }
         // Without attributes only the rows count (a band renderer's binning pass once its
         // bins are full): positions alone.
         let mut tri = if full {
@@ -348,6 +362,25 @@ pub fn walk_mesh<C: TargetColor>(
         out.triangle(id, &tri);
     }
     first_id + mesh.indices.len()
+}
+
+/// A triangle with a corner outside the view volume or guard band (`codes`, its corners'
+/// outcodes): clipped, unless a corner failed (overflowed) or all three are outside one
+/// plane.
+#[inline(always)]
+fn to_clip<C: TargetColor>(
+    draw: &Draw<'_, C>,
+    ctx: &Ctx<'_, '_>,
+    idx: &[u16; 3],
+    lit: bool,
+    id: usize,
+    codes: [u8; 3],
+    out: &mut impl TriangleOut,
+) {
+    let any = codes[0] | codes[1] | codes[2];
+    if any & FAILED_CODE == 0 && codes[0] & codes[1] & codes[2] == 0 {
+        clipped(draw, ctx, idx, lit, id, out);
+    }
 }
 
 /// Transforms, outcodes and projects vertex `i` into `c` (white, not lit yet; without
