@@ -62,7 +62,7 @@ use frames::{
     flame_frames, flame_reference, rgb8, sphere_frame, sphere_frame_in, sphere_tris, whole_frame,
 };
 use plot::plot;
-use rows::{read_mcu, row, thousands, Row};
+use rows::{row, thousands, Row};
 
 const W: u32 = scenes::W;
 const H: u32 = scenes::H;
@@ -89,7 +89,10 @@ fn main() {
         }
         Err(e) => eprintln!("noise_report: {font_path}: {e}; no plot"),
     }
-    let mcu = mcu_path.as_deref().map(read_mcu).unwrap_or_default();
+    let mcu = mcu_path
+        .as_deref()
+        .map(|p| host_tests::report_mcu::read(p, "noise"))
+        .unwrap_or_default();
     let ramps = Ramps::new().expect("ramps");
     let tris = sphere_tris();
     let [marble, wood, granite] = RefPattern::presets();

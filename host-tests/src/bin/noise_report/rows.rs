@@ -1,9 +1,8 @@
 //! The table rows: one measured variant, built from its frame, its MCU counts (the
 //! `noise` rows of `mcu.tsv`) and its errors, and the thousands separator of the titles.
 
-use std::path::Path;
-
 use host_tests::metrics::{compare_rgb565, Report};
+use host_tests::report_mcu::McuRow;
 
 /// One measured variant.
 pub struct Row {
@@ -21,7 +20,7 @@ pub struct Row {
 pub fn row(
     name: &str,
     res: (Vec<u16>, Vec<bool>, u32, f64),
-    mcu: &[(String, String, f64, String)],
+    mcu: &[McuRow],
     r: &[u16],
     rcov: &[bool],
     ideal: &[u16],
@@ -55,27 +54,4 @@ pub fn thousands(n: usize) -> String {
         out.push(c);
     }
     out
-}
-
-pub fn read_mcu(path: &Path) -> Vec<(String, String, f64, String)> {
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return Vec::new();
-    };
-    text.lines()
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split('\t').collect();
-            if f.len() < 6 || f[0] != "noise" {
-                return None;
-            }
-            let insns: f64 = f[3].parse().ok()?;
-            let px: f64 = f[4].parse().ok()?;
-            Some((
-                f[1].to_string(),
-                f[2].to_string(),
-                insns / px.max(1.0),
-                f[5].to_string(),
-            ))
-        })
-        .collect()
 }
