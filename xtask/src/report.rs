@@ -31,6 +31,26 @@ pub(crate) struct ReportArgs {
     pub docs: bool,
 }
 
+/// The host report binaries of host-tests, run in this order, each with `--out` (the
+/// report directory) and, with the microcontrollers, `--mcu` (their counts); `true`: the
+/// binary also takes `--runs`.
+const HOST_REPORTS: [(&str, bool); 7] = [
+    // Every benchmark scene and mode: report.md and the plots.
+    ("report", true),
+    // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
+    ("shadow_report", false),
+    // Solid textures: noise.md.
+    ("noise_report", true),
+    // Environment mapping rows: env.md.
+    ("report_env", true),
+    // Texture-coordinate generation rows: mapping.md.
+    ("mapping_report", true),
+    // Anti-aliasing rows: aa.md.
+    ("aa_report", true),
+    // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
+    ("surface_report", true),
+];
+
 pub(crate) fn report(args: &ReportArgs) -> ExitCode {
     let (runs, mcu_on, install, docs) = (args.runs, !args.no_mcu, !args.no_install, args.docs);
     let t0 = Instant::now();
@@ -61,71 +81,29 @@ pub(crate) fn report(args: &ReportArgs) -> ExitCode {
     let out_s = out.to_string_lossy().into_owned();
     let tsv_s = tsv.to_string_lossy().into_owned();
     let runs_s = runs.to_string();
-    let mut args = vec![
-        "run",
-        "--release",
-        "-q",
-        "-p",
-        "host-tests",
-        "--bin",
-        "report",
-        "--",
-        "--out",
-        &out_s,
-        "--runs",
-        &runs_s,
-    ];
-    if mcu_on {
-        args.extend(["--mcu", &tsv_s]);
-    }
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
-    let shadow = [
-        "run",
-        "--release",
-        "-q",
-        "-p",
-        "host-tests",
-        "--bin",
-        "shadow_report",
-    ];
-    let shadow_mcu: &[&str] = if mcu_on { &["--mcu", &tsv_s] } else { &[] };
-    if let Err(e) = cargo(&[&shadow[..], &["--", "--out", &out_s], shadow_mcu].concat()).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Solid textures: their own report, same output directory and MCU counts.
-    args[6] = "noise_report";
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Environment mapping rows: same flags, written to env.md.
-    args[6] = "report_env";
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Texture-coordinate generation rows: same flags, written to mapping.md.
-    args[6] = "mapping_report";
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Anti-aliasing rows: same flags, written to aa.md.
-    args[6] = "aa_report";
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
-    }
-    // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
-    args[6] = "surface_report";
-    if let Err(e) = cargo(&args).run() {
-        eprintln!("report: {e}");
-        return ExitCode::FAILURE;
+    for (bin, timed) in HOST_REPORTS {
+        let mut args = vec![
+            "run",
+            "--release",
+            "-q",
+            "-p",
+            "host-tests",
+            "--bin",
+            bin,
+            "--",
+            "--out",
+            &out_s,
+        ];
+        if timed {
+            args.extend(["--runs", &runs_s]);
+        }
+        if mcu_on {
+            args.extend(["--mcu", &tsv_s]);
+        }
+        if let Err(e) = cargo(&args).run() {
+            eprintln!("report: {e}");
+            return ExitCode::FAILURE;
+        }
     }
     if docs {
         let dst = root().join("docs").join("report");
