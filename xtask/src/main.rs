@@ -2,7 +2,8 @@
 //!
 //! Few dependencies so it builds quickly: the command line is parsed with `clap` (derive:
 //! [`Cli`] here, each command's flags next to its code) and every tool is driven through
-//! `std::process::Command`; `png` and `tobj` read the inputs of the bake commands.
+//! `std::process::Command`; `png` and `tobj` read the inputs of the bake commands, and
+//! `indicatif` shows the progress of the long runs (`cargo xtask mcu`).
 
 mod bake;
 mod bake_cube;
@@ -14,6 +15,7 @@ mod count;
 mod images;
 mod light3d;
 mod mcu;
+mod progress;
 mod report;
 mod teapot;
 

@@ -13,15 +13,24 @@ use super::qemu::{kv, measure, measure_modes, num};
 use super::tools::{build_plugin, ensure_tools, output, qemu_version, run_visible, rustc_version};
 use super::{fail, firmware_dir, out_dir, McuArgs, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
 use crate::cmd::root;
+use crate::progress::Progress;
 
-/// The geometry firmware on each MCU: a table of instructions per item and stage.
-fn geometry_table(llvm: &Path, plugin: &Path, td: &Path) -> Result<String, String> {
+/// The geometry firmware on each MCU: a table of instructions per item and stage. One
+/// `progress` step per MCU.
+fn geometry_table(
+    llvm: &Path,
+    plugin: &Path,
+    td: &Path,
+    progress: &mut Progress,
+) -> Result<String, String> {
     let mut per: BTreeMap<(String, String), Vec<String>> = BTreeMap::new();
     let mut order: Vec<(String, String)> = Vec::new();
     let mut items: BTreeMap<(String, String), u64> = BTreeMap::new();
     for m in &WHOLE_MCUS {
-        let v = measure_modes(llvm, plugin, m, &elf(td, m, "geometry"))?;
-        for c in v {
+        progress.start(&format!("geometry on {}", m.label));
+        let v = measure_modes(llvm, plugin, m, &elf(td, m, "geometry"));
+        progress.done(v.is_ok());
+        for c in v? {
             let key = (c.scene.clone(), c.mode.clone());
             if !order.contains(&key) {
                 order.push(key.clone());
@@ -68,6 +77,8 @@ Real parts add flash wait states (hidden by caches on some) and contention: an e
 
 /// Expected checksums and pixel counts from the host test (same code, same frames).
 fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
+    let what = "cargo test -q -p host-tests --test mcu_checksums --test shadow_mcu -- --nocapture";
+    eprintln!("xtask: $ {what} (the host's checksums)");
     let out = output(
         Command::new("cargo").current_dir(root()).args([
             "test",
@@ -81,7 +92,7 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
             "--",
             "--nocapture",
         ]),
-        "cargo test -p host-tests --test mcu_checksums --test shadow_mcu -- --nocapture",
+        what,
     )?;
     let mut m = BTreeMap::new();
     // `cargo test -q` prints a `.` per finished test, possibly at the start of another
@@ -167,19 +178,28 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         .iter()
         .map(|s| (*s, &MCUS, &td))
         .chain(WHOLE_SCENES.iter().map(|s| (*s, &WHOLE_MCUS, &td_whole)));
+    // One step per QEMU firmware run (scene and MCU), then the geometry firmware's.
+    let steps = SCENES.len() * MCUS.len() + (WHOLE_SCENES.len() + 1) * WHOLE_MCUS.len();
+    let mut progress = Progress::new("mcu", steps);
     for (scene, mcus, td) in sets {
         for m in mcus.iter() {
+            progress.start(&format!("{scene} on {}", m.label));
             let e = elf(td, m, scene);
             let (r, seen) = match measure(&llvm, &plugin, m, &e, flags.runs) {
                 Ok(x) => x,
                 Err(err) => {
+                    progress.done(false);
                     problems.push(format!("{scene} on {}: {err}", m.label));
                     continue;
                 }
             };
             let (flash, ram) = match sizes(&llvm, &e) {
                 Ok(x) => x,
-                Err(err) => return fail(err),
+                Err(err) => {
+                    progress.done(false);
+                    progress.finish();
+                    return fail(err);
+                }
             };
             let (want_c, want_p) = expected.get(scene).cloned().unwrap_or_default();
             let matches = r.checksum == want_c && r.pixels == want_p;
@@ -237,8 +257,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
                     profiles.push_str(&format!("  {p}\n"));
                 }
             }
+            progress.done(matches && same);
         }
     }
+    let geometry = geometry_table(&llvm, &plugin, &td_whole, &mut progress);
+    progress.finish();
     println!(
         "\n## cargo xtask mcu: {}, {}\n",
         rustc_version(),
@@ -272,7 +295,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             }
         }
     }
-    match geometry_table(&llvm, &plugin, &td_whole) {
+    match geometry {
         Ok(t) => println!(
             "\nGeometry on its own (`geometry` firmware, sphere camera, frame 0): instructions \
              per item and stage\n\n{t}"
