@@ -9,7 +9,8 @@ use fixel::math::{Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, Stages};
 use fixel::prelude::{BandRenderer, Cull, Viewport};
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
-use fixel::surface::Binned;
+use fixel::surface::{Binned, Frame};
+use fixel::texture::{MipTexture, Texture};
 
 use crate::data;
 use crate::scenes::{Fnv1a, H, ROWS, W};
@@ -85,6 +86,83 @@ fn frame<const LIT: bool, const CLIP: bool>(
         )
         .ok()?;
     Some((sum.0, stats.pixels))
+}
+
+/// Draws one frame in 8-row bands of a `W`-wide colour band (and of `zbuf` as its depth
+/// band, when given): `draw` draws into each band and returns the pixels it wrote. The
+/// frame's checksum and pixels, or `None` when a band could not be made or drawn.
+pub fn in_bands(
+    mut zbuf: Option<&mut [u16]>,
+    mut draw: impl FnMut(&mut Frame<'_, Rgb565>) -> Option<u32>,
+) -> Option<(u32, u32)> {
+    let mut color = [Rgb565::new(0, 0, 0); BAND];
+    let mut sum = Fnv1a::default();
+    let mut pixels = 0u32;
+    for band in 0..H / ROWS {
+        let f = Frame::new(&mut color, W, ROWS).ok()?.at_row(band * ROWS);
+        let mut f = match zbuf.as_deref_mut() {
+            Some(z) => f.with_depth(z).ok()?,
+            None => f,
+        };
+        f.clear(Rgb565::new(0, 0, 0));
+        pixels += draw(&mut f)?;
+        sum.pixels(f.pixels());
+    }
+    Some((sum.0, pixels))
+}
+
+/// The 8 x 8 texture as a one-level chain, in flash (built at run time it would link
+/// `memcpy` for its level slots).
+static T8_CHAIN: MipTexture<'static> =
+    MipTexture::single(Texture::from_static(&data::T8_TEXELS, 8, 8));
+
+/// The minimal textured unlit firmware as the open stage writes it: the triangle through
+/// `ShadedDraw<Replace<Nearest, Repeat, Repeat>, Affine, NoDepth>`, `u, v` from the
+/// firmware's own vertex function, in bands; clipped when `CLIP`, else through
+/// `ShadedDraw::project_unclipped` (the geometry stays in view). The same frame as
+/// [`typed`]'s affine nearest unlit one (`size_open`, `size_open_unclipped`).
+pub fn open<const CLIP: bool>() -> bool {
+    use fixel::geometry::Vertex;
+    use fixel::pipeline::{Affine, NoDepth, ShadedDraw};
+    use fixel::shading::{Replace, TexBinding};
+    use fixel::texture::{Lod, Nearest, Repeat};
+    let chain = core::hint::black_box(&T8_CHAIN);
+    let Ok(tex) = TexBinding::new(chain, Nearest, Repeat, Repeat, Lod::default()) else {
+        return false;
+    };
+    let Ok(vp) = Viewport::new(0, 0, W, H) else {
+        return false;
+    };
+    let Ok(draw) = ShadedDraw::<_, Affine, NoDepth>::new(Replace { tex }, vp, Cull::Back) else {
+        return false;
+    };
+    // Model space is world space here: clip = projection * view * p.
+    let camera = demo::camera(20);
+    let mvp = camera.projection.mul(&camera.view);
+    let vertex = |i: u16| {
+        let i = usize::from(i);
+        let p = mvp.transform_point(*POSITIONS.get(i)?)?;
+        let [u, v] = *UVS.get(i)?;
+        Some(Vertex::new(
+            [p.x, p.y, p.z, p.w],
+            [u.to_bits(), v.to_bits()],
+        ))
+    };
+    print(in_bands(None, |frame| {
+        let mut pixels = 0;
+        for tri in &INDICES {
+            let (a, b, c) = (vertex(tri[0])?, vertex(tri[1])?, vertex(tri[2])?);
+            if CLIP {
+                pixels += draw.clip_triangles(&[[a, b, c]], frame).ok()?;
+            } else {
+                // The triangle stays in view: nothing is ever refused here.
+                draw.project_unclipped(&[a, b, c], &mut |s| {
+                    pixels += draw.screen_triangle(s, frame).unwrap_or(0);
+                });
+            }
+        }
+        Some(pixels)
+    }))
 }
 
 fn print(r: Option<(u32, u32)>) -> bool {
@@ -166,7 +244,6 @@ pub fn env() -> bool {
     use fixel::geometry::Vertex;
     use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
     use fixel::shading::env::{CubeMap, EnvVertices, ReflectPerPixel};
-    use fixel::surface::Frame;
     use fixel::texture::Bilinear;
     let t = core::hint::black_box(data::T8);
     let (Ok(cube), Ok(vp)) = (CubeMap::new([t; 6], Bilinear), Viewport::new(0, 0, W, H)) else {
@@ -188,25 +265,10 @@ pub fn env() -> bool {
         return false;
     };
     let tri: [[Vertex<6>; 3]; 1] = [[a, b, c]];
-    let mut color = [Rgb565::new(0, 0, 0); BAND];
     let mut zbuf = [0u16; BAND];
-    let mut sum = Fnv1a::default();
-    let mut pixels = 0u32;
-    for band in 0..H / ROWS {
-        let Ok(f) = Frame::new(&mut color, W, ROWS) else {
-            return false;
-        };
-        let Ok(mut f) = f.at_row(band * ROWS).with_depth(&mut zbuf) else {
-            return false;
-        };
-        f.clear(Rgb565::new(0, 0, 0));
-        let Ok(n) = draw.clip_triangles(&tri, &mut f) else {
-            return false;
-        };
-        pixels += n;
-        sum.pixels(f.pixels());
-    }
-    print(Some((sum.0, pixels)))
+    print(in_bands(Some(&mut zbuf), |f| {
+        draw.clip_triangles(&tri, f).ok()
+    }))
 }
 
 /// The textured triangle bump-mapped from an 8 x 8 derivative map (its texels: the `T(8, 8)`
@@ -219,8 +281,7 @@ pub fn bump() -> bool {
     use fixel::shading::bump::{Bumped, DerivativeMap};
     use fixel::shading::lighting::{Material, Specular, SpecularTable};
     use fixel::shading::TexBinding;
-    use fixel::surface::Frame;
-    use fixel::texture::{Bilinear, Lod, MipTexture, Nearest, Repeat};
+    use fixel::texture::{Bilinear, Lod, Nearest, Repeat};
     static SHINY: SpecularTable = match SpecularTable::new(24) {
         Ok(t) => t,
         Err(_) => panic!("24 is a valid exponent"),
@@ -260,23 +321,8 @@ pub fn bump() -> bool {
     let light = PixelLight::Point(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::from_bits(-2 << 16)));
     let mut tri = [[Vertex::new([Fx::ZERO; 4], [0; 8]); 3]; 1];
     mesh.bump_triangles(&Mat4::IDENTITY, &demo::camera(20), &light, |t| tri[0] = *t);
-    let mut color = [Rgb565::new(0, 0, 0); BAND];
     let mut zbuf = [0u16; BAND];
-    let mut sum = Fnv1a::default();
-    let mut pixels = 0u32;
-    for band in 0..H / ROWS {
-        let Ok(f) = Frame::new(&mut color, W, ROWS) else {
-            return false;
-        };
-        let Ok(mut f) = f.at_row(band * ROWS).with_depth(&mut zbuf) else {
-            return false;
-        };
-        f.clear(Rgb565::new(0, 0, 0));
-        let Ok(n) = draw.clip_triangles(&tri, &mut f) else {
-            return false;
-        };
-        pixels += n;
-        sum.pixels(f.pixels());
-    }
-    print(Some((sum.0, pixels)))
+    print(in_bands(Some(&mut zbuf), |f| {
+        draw.clip_triangles(&tri, f).ok()
+    }))
 }

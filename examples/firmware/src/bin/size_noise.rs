@@ -5,7 +5,6 @@
 #![no_std]
 #![no_main]
 
-use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Fx, Mat4};
@@ -13,9 +12,8 @@ use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::presets::{MARBLE_AMP, MARBLE_FREQ, MARBLE_KEYS};
 use fixel::shading::noise::{BandLimit, Marble, Ramp, SolidMesh, SolidShader};
-use fixel::surface::Frame;
 use fixel_firmware::outln;
-use fixel_firmware::scenes::{Fnv1a, H, ROWS, W};
+use fixel_firmware::scenes::{H, W};
 // The same triangle as the other `size_*` firmwares.
 use fixel_firmware::size::{INDICES, NORMALS, POSITIONS};
 
@@ -41,30 +39,20 @@ fn run() -> bool {
         indices: &INDICES,
         scale: Fx::from_num(2),
     };
-    let mut color = [Rgb565::new(0, 0, 0); (W * ROWS) as usize];
-    let mut sum = Fnv1a::default();
-    let mut pixels = 0;
-    for band in 0..H / ROWS {
-        let Ok(frame) = Frame::new(&mut color, W, ROWS) else {
-            return false;
-        };
-        let mut frame = frame.at_row(band * ROWS);
-        frame.clear(Rgb565::new(0, 0, 0));
-        if draw.check_target(&frame).is_err() {
-            return false;
-        }
-        mesh.triangles(
-            &Mat4::IDENTITY,
-            &demo::camera(20),
-            Some(&DirectionalLight::default()),
-            |t| {
-                // The target was checked above.
-                pixels += draw.clip_triangles(&[*t], &mut frame).unwrap_or(0);
-            },
-        );
-        sum.pixels(frame.pixels());
-    }
-    outln!("checksum=0x{:08x} pixels={}", sum.0, pixels);
+    let sun = DirectionalLight::default();
+    let r = fixel_firmware::size::in_bands(None, |frame| {
+        draw.check_target(frame).ok()?;
+        let mut pixels = 0;
+        mesh.triangles(&Mat4::IDENTITY, &demo::camera(20), Some(&sun), |t| {
+            // The target was checked above.
+            pixels += draw.clip_triangles(&[*t], frame).unwrap_or(0);
+        });
+        Some(pixels)
+    });
+    let Some((sum, pixels)) = r else {
+        return false;
+    };
+    outln!("checksum=0x{:08x} pixels={}", sum, pixels);
     true
 }
 
