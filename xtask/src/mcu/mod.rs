@@ -110,32 +110,10 @@ const WHOLE_SCENES: [&str; 7] = [
     "bump",
 ];
 
-/// The whole-frame firmwares' machines: `mps2-an386` (4M + 4M SSRAM) for both Arm builds
-/// (ARMv6-M code runs unchanged on the M4 model; counts depend on the instruction stream
-/// only) and RV32 `virt` (128 MB).
-const WHOLE_MCUS: [Mcu; 3] = [
-    Mcu {
-        label: "Cortex-M4F",
-        triple: "thumbv7em-none-eabihf",
-        qemu: "qemu-system-arm",
-        machine: &["-machine", "mps2-an386"],
-        core: "m4",
-    },
-    Mcu {
-        label: "Cortex-M0+",
-        triple: "thumbv6m-none-eabi",
-        qemu: "qemu-system-arm",
-        machine: &["-machine", "mps2-an386"],
-        core: "m0plus",
-    },
-    Mcu {
-        label: "RV32IMC",
-        triple: "riscv32imc-unknown-none-elf",
-        qemu: "qemu-system-riscv32",
-        machine: &["-machine", "virt", "-bios", "none"],
-        core: "rv32",
-    },
-];
+/// The whole-frame firmwares' machines: the band firmwares' ones, whose memory suffices
+/// (`mps2-an386`: 4M + 4M SSRAM for both Arm builds; RV32 `virt`: 128 MB). The builds
+/// differ in their memory layout only (`FIXEL_FW_MEMORY=whole`).
+const WHOLE_MCUS: [Mcu; 3] = MCUS;
 
 fn fail(msg: impl AsRef<str>) -> ExitCode {
     eprintln!("xtask: {}", msg.as_ref());
