@@ -111,8 +111,9 @@ fn outcode_inline(pos: &[i32; 4], guard: (i32, i32)) -> u8 {
     c
 }
 
-/// A triangle's vertices as integers, and the planes each violates (shared by the clipper
-/// and [`project_unclipped`], so both classify a triangle alike).
+/// A triangle's vertices as integers, and the planes each violates, for
+/// [`project_unclipped_varyings`]. The clipper writes the corners straight into its polygon
+/// buffer instead; both classify a corner through the one [`outcode`], so alike.
 #[inline(always)]
 fn attrs_and_codes<const N: usize>(
     tri: &[Vertex<N>; 3],
