@@ -53,9 +53,13 @@ fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
     m
 }
 
-/// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels).
+/// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels). With
+/// `FLOOR`, a chunk nearer than the target's depth floor writes its depths without reading
+/// them; without, every chunk reads them (the short spans of small triangles: there the
+/// test cost more than it saved, see [`super::run_short`]). Either way the floor is kept
+/// (`bound.lowest`), so later draws may rely on it.
 #[inline(always)]
-pub(super) fn chunk_mask<S: Shader, const Z: bool>(
+pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool>(
     z: i32,
     dz: i32,
     zc: &mut [u16],
@@ -73,7 +77,7 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool>(
         // Test only: depth is written for the pixels a discarding shader keeps, and never
         // for a blending one.
         depth_chunk::<false>(z, dz, zc) & low_bits(n)
-    } else if d_hi < bound.floor {
+    } else if FLOOR && d_hi < bound.floor {
         // Nearer than everything stored: every pixel passes, no depth is read.
         depth_fill(z, dz, zc);
         low_bits(n)

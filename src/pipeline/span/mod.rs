@@ -138,7 +138,7 @@ fn run_linear<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z
             (&mut [][..], &mut [][..])
         };
         zs = zrest;
-        let mask = chunk_mask::<S, Z>(z, dz, zc, n, bound);
+        let mask = chunk_mask::<S, Z, true>(z, dz, zc, n, bound);
         let mut off = 0usize;
         while off < n {
             let Some(p) = it.piece(s, n - off, spec) else {
@@ -238,7 +238,7 @@ fn run_short<
     let p = Linear::<S::Varyings, SUB>::only_piece(s, x, y, n as u32, spec);
     let dz = s.z.dx;
     let z = s.plane_at(&s.z, x, y);
-    let mask = chunk_mask::<S, Z>(z, dz, zrow, n, bound);
+    let mask = chunk_mask::<S, Z, false>(z, dz, zrow, n, bound);
     if mask == 0 {
         return 0;
     }
@@ -348,7 +348,7 @@ fn run<S: Shader, C: TargetColor, D: DepthStage, I: Fill<S::Varyings>, const Z: 
         };
         zs = zrest;
         let mask = if depth {
-            chunk_mask::<S, true>(z, dz, zc, n, bound)
+            chunk_mask::<S, true, true>(z, dz, zc, n, bound)
         } else {
             low_bits(n)
         };
