@@ -1,12 +1,13 @@
 //! Indexed triangle meshes and their transformation to clip space.
 
 use crate::color::TargetColor;
-use crate::geometry::{ClipVertex, COLOR_ONE};
+use crate::geometry::{ClipVertex, Cull, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
 use crate::pipeline::Draw;
 use crate::surface::RenderTarget;
 use crate::Error;
 
+use super::face_cull::{camera_centre, FaceCull};
 use super::{Camera, DirectionalLight};
 
 /// An indexed triangle mesh borrowed from slices (flash or RAM).
@@ -20,12 +21,17 @@ pub struct Mesh<'a> {
     pub(super) normals: Option<&'a [Vec3]>,
     pub(super) uvs: &'a [[Fx; 2]],
     pub(super) indices: &'a [[u16; 3]],
+    /// Right shift that brings every coordinate into `-2^13..2^13` (the model-space cull
+    /// test's precision, see `face_cull`).
+    pub(super) coord_shift: u8,
 }
 
 impl<'a> Mesh<'a> {
     /// Validates and wraps the slices: `normals` (if any) and `uvs` must have one entry per
     /// position, every index must be in range, and there must be at most 65536 positions
-    /// (what a `u16` index can reach: [`Error::MeshTooLarge`] otherwise).
+    /// (what a `u16` index can reach: [`Error::MeshTooLarge`] otherwise). Also finds the
+    /// coordinates' magnitude (one pass over the positions), which sets the precision of
+    /// the model-space back-face test of the mesh draws.
     pub fn new(
         positions: &'a [Vec3],
         normals: Option<&'a [Vec3]>,
@@ -60,6 +66,7 @@ impl<'a> Mesh<'a> {
             normals,
             uvs,
             indices,
+            coord_shift: super::face_cull::coord_shift(positions),
         })
     }
 
@@ -189,20 +196,38 @@ pub fn mesh_triangles_cached(
     camera: &Camera,
     light: Option<&DirectionalLight>,
     cache: &mut [Option<ClipVertex>],
+    emit: impl FnMut(&[ClipVertex; 3]),
+) {
+    facing_triangles_cached(mesh, model, camera, light, Cull::None, cache, emit);
+}
+
+/// [`mesh_triangles_cached`] without the triangles that surely face the way `cull` drops
+/// (see [`facing_triangles`]).
+fn facing_triangles_cached(
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cull: Cull,
+    cache: &mut [Option<ClipVertex>],
     mut emit: impl FnMut(&[ClipVertex; 3]),
 ) {
     // Indices are u16: at most 65536 vertices can be referenced.
     let n = mesh.positions.len().min(1 << 16);
     let Some(cache) = cache.get_mut(..n) else {
-        mesh_triangles(mesh, model, camera, light, emit);
+        facing_triangles(mesh, model, camera, light, cull, emit);
         return;
     };
     let model_view = camera.view.mul(model);
     let mvp = camera.projection.mul(&model_view);
+    let faces = FaceCull::new(&camera_centre(&mvp), mesh, cull);
     for (i, slot) in cache.iter_mut().enumerate() {
         *slot = vertex(mesh, i as u16, &model_view, &mvp, light);
     }
     for tri in mesh.indices {
+        if faces.is_some_and(|f| f.culls(mesh.positions, tri)) {
+            continue;
+        }
         let v = |k: usize| cache.get(usize::from(tri[k])).copied().flatten();
         if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
             emit(&[a, b, c]);
@@ -218,11 +243,29 @@ pub fn mesh_triangles(
     model: &Mat4,
     camera: &Camera,
     light: Option<&DirectionalLight>,
+    emit: impl FnMut(&[ClipVertex; 3]),
+) {
+    facing_triangles(mesh, model, camera, light, Cull::None, emit);
+}
+
+/// [`mesh_triangles`] without the triangles that surely face the way `cull` drops (tested
+/// in model space before their vertices are transformed, as the mesh walker does: see
+/// `face_cull`), so every mesh path draws the same triangles.
+fn facing_triangles(
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+    camera: &Camera,
+    light: Option<&DirectionalLight>,
+    cull: Cull,
     mut emit: impl FnMut(&[ClipVertex; 3]),
 ) {
     let model_view = camera.view.mul(model);
     let mvp = camera.projection.mul(&model_view);
+    let faces = FaceCull::new(&camera_centre(&mvp), mesh, cull);
     for tri in mesh.indices {
+        if faces.is_some_and(|f| f.culls(mesh.positions, tri)) {
+            continue;
+        }
         let v = |k: usize| vertex(mesh, tri[k], &model_view, &mvp, light);
         if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
             emit(&[a, b, c]);
@@ -243,7 +286,7 @@ pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    mesh_triangles(mesh, model, camera, light, |t| {
+    facing_triangles(mesh, model, camera, light, draw.mode().cull, |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });
@@ -263,7 +306,7 @@ pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    mesh_triangles_cached(mesh, model, camera, light, cache, |t| {
+    facing_triangles_cached(mesh, model, camera, light, draw.mode().cull, cache, |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });

@@ -30,6 +30,7 @@
 //! ```
 
 mod camera;
+mod face_cull;
 mod light;
 mod lit_mesh;
 mod mesh;
