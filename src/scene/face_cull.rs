@@ -55,23 +55,50 @@ pub(super) fn coord_shift(positions: &[Vec3]) -> u8 {
     bits.saturating_sub(COORD_BITS) as u8
 }
 
-/// The camera's centre in homogeneous model coordinates, `(g, W)` (see the module docs):
-/// exact 3x3 minors of the rows `x`, `y`, `w` of `mvp` (I16F16 bits; each below 2^96).
-pub(super) fn camera_centre(mvp: &Mat4) -> [i128; 4] {
-    let a = |r: usize, c: usize| i128::from(mvp.m[r][c].to_bits());
-    let rows = [0, 1, 3];
-    let minor = |c: [usize; 3]| {
-        let m = |i: usize, j: usize| a(rows[i], c[j]);
-        m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1))
-            - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0))
-            + m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0))
-    };
-    [
-        minor([1, 2, 3]),
-        -minor([0, 2, 3]),
-        minor([0, 1, 3]),
-        minor([0, 1, 2]),
-    ]
+/// The camera's centre in homogeneous model coordinates, `(g, W)` (see the module docs),
+/// as `mant * 2^exp`: the exact 3x3 minors of the rows `x`, `y`, `w` of an MVP matrix
+/// (I16F16 bits; below 2^96), kept to 62 bits (exact when they fit).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Eye {
+    mant: [i64; 4],
+    exp: u32,
+}
+
+/// The camera's centre of `mvp` ([`Eye`]). Once per frame, and compact (loops, one
+/// out-of-line copy): 128-bit arithmetic unrolled cost every mesh firmware kilobytes of
+/// flash.
+#[inline(never)]
+pub(super) fn camera_centre(mvp: &Mat4) -> Eye {
+    let rows = [0, 1, 3].map(|r| mvp.m[r].map(|c| c.to_bits()));
+    // Column `skip` left out: g = (D123, -D023, D013) (skip 0, 1, 2) and W (skip 3).
+    let exact = [[1, 2, 3], [0, 2, 3], [0, 1, 3], [0, 1, 2]]
+        .map(|cols: [usize; 3]| det3(&rows.map(|r| cols.map(|c| r[c & 3]))))
+        .iter()
+        .enumerate()
+        .fold([0i128; 4], |mut out, (skip, &det)| {
+            out[skip & 3] = if skip == 1 { -det } else { det };
+            out
+        });
+    let or = exact.iter().fold(0u128, |a, v| a | v.unsigned_abs());
+    let exp = (u128::BITS - or.leading_zeros()).saturating_sub(62);
+    Eye {
+        mant: exact.map(|v| (v >> exp) as i64),
+        exp,
+    }
+}
+
+/// The determinant of a 3x3 integer matrix, exactly (below 2^96).
+#[inline(never)]
+fn det3(m: &[[i32; 3]; 3]) -> i128 {
+    let mut det = 0i128;
+    for j in 0..3 {
+        let (a, b) = ((j + 1) % 3, (j + 2) % 3);
+        // Each product below 2^62; their difference exact in i128.
+        let p = |x: i32, y: i32| i128::from(i64::from(x) * i64::from(y));
+        let minor = p(m[1][a], m[2][b]) - p(m[1][b], m[2][a]);
+        det += i128::from(m[0][j]) * minor;
+    }
+    det
 }
 
 /// One mesh draw's model-space cull test (see the module docs).
@@ -94,41 +121,41 @@ pub(super) struct FaceCull {
 impl FaceCull {
     /// The test for `mesh` under the camera centre `eye` ([`camera_centre`]), or `None`
     /// when `cull` culls nothing.
-    pub fn new(eye: &[i128; 4], mesh: &Mesh<'_>, cull: Cull) -> Option<FaceCull> {
-        let sign: i32 = match cull {
+    #[inline(never)]
+    pub fn new(eye: &Eye, mesh: &Mesh<'_>, cull: Cull) -> Option<FaceCull> {
+        let negate = match cull {
             Cull::None => return None,
-            Cull::Back => 1,
-            Cull::Front => -1,
+            Cull::Back => false,
+            Cull::Front => true,
         };
         let shift = u32::from(mesh.coord_shift);
         // d(p) = 2^16 g + W p for I16F16 bits p (the homogeneous 1.0 is 2^16); in units of
-        // 2^shift with p = 2^shift q: 2^(16 - shift) g + W q. `h` is the first term (exact
-        // when shift <= 16, else floored: an error below 1).
-        let h = [eye[0], eye[1], eye[2]].map(|g| {
-            if shift <= 16 {
-                g << (16 - shift)
+        // 2^shift with p = 2^shift q: 2^(16 - shift) g + W q. Scaled by 2^-k so that
+        // |g'| <= 2^29 and |W'| <= 2^16: g' = g 2^(exp + 16 - shift - k), W' = W 2^(exp - k)
+        // from the mantissas.
+        let bits = |v: i64| u64::BITS - v.unsigned_abs().leading_zeros();
+        let g_bits = eye.mant[..3].iter().map(|&v| bits(v)).max().unwrap_or(0);
+        let (tg, tw) = (eye.exp as i32 + 16 - shift as i32, eye.exp as i32);
+        let k = (g_bits as i32 + tg - 29)
+            .max(bits(eye.mant[3]) as i32 + tw - 16)
+            .max(0);
+        // A left shift only where the result fits (then it is exact); right shifts floor.
+        let scale = |m: i64, t: i32| {
+            let t = t - k;
+            if t >= 0 {
+                m << t.min(63)
             } else {
-                g >> (shift - 16).min(127)
+                m >> (-t).min(63)
             }
-        });
-        let w = eye[3];
-        let bits = |v: i128| u128::BITS - v.unsigned_abs().leading_zeros();
-        let h_bits = h.iter().map(|&v| bits(v)).max().unwrap_or(0);
-        let k = h_bits
-            .saturating_sub(29)
-            .max(bits(w).saturating_sub(16))
-            .min(127);
-        let g = h.map(|v| (v >> k) as i32);
-        let w = (w >> k) as i32;
-        // Culling front faces is culling back faces of the negated test.
-        let (g, w) = if sign < 0 {
-            (g.map(|v| -v), -w)
-        } else {
-            (g, w)
         };
-        // |error| < 2 (the floors of h and of g) + |q| (the floor of W, times q) + |W'| + 1
-        // (W times the coordinate's cut-off fraction).
-        let err = (1 << COORD_BITS) + w.unsigned_abs() + 3;
+        let g = [0, 1, 2].map(|i| scale(eye.mant[i], tg) as i32);
+        let w = scale(eye.mant[3], tw) as i32;
+        // Culling front faces is culling back faces of the negated test.
+        let (g, w) = if negate { (g.map(|v| -v), -w) } else { (g, w) };
+        // Each scaled value is below its exact one by less than 2 (the floor of its mantissa,
+        // then of the scaling), so |error| < 2 (g) + 2 |q| (W, times q) + |W'| + 2 (W times
+        // the coordinate's cut-off fraction, below 1).
+        let err = (2 << COORD_BITS) + w.unsigned_abs() + 4;
         let g_max = g.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
         let d_max = g_max + (w.unsigned_abs() << COORD_BITS);
         Some(FaceCull {
@@ -226,7 +253,8 @@ mod tests {
                     fx_of(&mut rng, 3.0),
                 )
             });
-            let [gx, gy, gz, w] = camera_centre(&mvp);
+            let eye = camera_centre(&mvp);
+            let [gx, gy, gz, w] = eye.mant.map(|m| i128::from(m) << eye.exp);
             let b = |v: Vec3| [v.x, v.y, v.z].map(|c| i128::from(c.to_bits()));
             let (p0, p1, p2) = (b(p[0]), b(p[1]), b(p[2]));
             let e1 = [0, 1, 2].map(|i| p1[i] - p0[i]);

@@ -39,7 +39,7 @@ use crate::pipeline::{Draw, Shading};
 use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::surface::{MeshSink, RenderTarget};
 
-use super::face_cull::{camera_centre, FaceCull};
+use super::face_cull::{camera_centre, Eye, FaceCull};
 use super::mesh::{vertex, vertex_intensity};
 use super::{Camera, DirectionalLight, Mesh};
 
@@ -184,7 +184,7 @@ pub struct MeshTransform {
     mvp: Mat4,
     /// The camera's centre in homogeneous model coordinates, for the model-space cull test
     /// (see `face_cull`): exact, once per frame.
-    eye: [i128; 4],
+    eye: Eye,
 }
 
 impl MeshTransform {
