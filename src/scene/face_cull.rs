@@ -33,6 +33,7 @@
 //! vertex prepared.
 
 use crate::geometry::Cull;
+use crate::math::div::{mul_wide, mul_wide_signed};
 use crate::math::{Mat4, Vec3};
 
 use super::Mesh;
@@ -190,7 +191,8 @@ impl FaceCull {
         ];
         // |g'| <= 2^29, |W' p| <= 2^29.
         let d = [0, 1, 2].map(|i| self.g[i] + self.w * p0[i]);
-        let s = (0..3).fold(0i64, |acc, i| acc + i64::from(n[i]) * i64::from(d[i]));
+        // 32 x 32 -> 64-bit products (no library call on Cortex-M0+).
+        let s = (0..3).fold(0i64, |acc, i| acc + mul_wide_signed(n[i], d[i]));
         // An upper bound on every |edge component| (below 2^14): the or of the (one's
         // complement) magnitudes, plus one.
         let or = e1
@@ -200,8 +202,7 @@ impl FaceCull {
         let e = or + 1;
         // n's error per component is below 2 (|e1| + |e2|) + 2 <= 4 e + 2, |n| <= 2 e^2:
         // |s - exact| <= 3 (4 e + 2) (|d| + err) + 3 (2 e^2) err (below 2^51).
-        let margin = 3 * (u64::from(4 * e + 2) * u64::from(self.d_err))
-            + u64::from(e * e) * u64::from(self.err6);
+        let margin = 3 * mul_wide(4 * e + 2, self.d_err) + mul_wide(e * e, self.err6);
         s < -(margin as i64)
     }
 }
