@@ -7,6 +7,12 @@
 //! for rotations, translations and uniform scales (the scenes fixel targets); a non-uniform
 //! scale would need the inverse transpose, which is out of scope.
 //!
+//! Mesh draws cull in two steps: a triangle that surely faces the culled way is dropped by
+//! its model-space positions before any of its vertices is transformed (exact in its
+//! decisions: see `face_cull`), and the rest by the winding of their projected sub-pixel
+//! positions (OpenGL's rule). On a closed mesh the first step spares the vertices of the far
+//! side: the benchmark sphere prepares about 440 of its 1,225 vertices per frame.
+//!
 //! ```
 //! use fixel::prelude::*;
 //! use fixel::math::fx;

@@ -614,6 +614,47 @@ mod tests {
         out.seen
     }
 
+    /// The model-space back-face test spares the far side's vertices: with back faces
+    /// culled, the demo sphere prepares well under half of its vertices, and draws exactly
+    /// the triangles it draws without the test (every triangle it drops faces away).
+    #[test]
+    fn back_faces_are_dropped_before_their_vertices_are_prepared() {
+        let sphere = demo::sphere();
+        let mesh = sphere.mesh().expect("the demo sphere");
+        let vp = Viewport::new(0, 0, 320, 240).expect("a viewport");
+        let transform = MeshTransform::new(&demo::sphere_model(0), &demo::camera(20));
+        let run = |cull: Cull| {
+            let mode = DrawMode {
+                shading: Shading::Gouraud,
+                cull,
+                ..DrawMode::default()
+            };
+            let draw = Draw::<Rgb565>::dynamic(mode, None, vp).expect("an untextured draw");
+            let mut cache = std::vec![CachedVertex::default(); mesh.vertices()];
+            let mut out = Recorder {
+                answer: |id: usize, _: usize| id,
+                seen: Vec::new(),
+            };
+            walk_mesh(&draw, &mesh, &transform, None, &mut cache, 0, &mut out);
+            let prepared = cache.iter().filter(|c| c.state != super::EMPTY).count();
+            (out.seen, prepared)
+        };
+        let (none, all_prepared) = run(Cull::None);
+        let (back, prepared) = run(Cull::Back);
+        let (front, _) = run(Cull::Front);
+        // Without culling every referenced vertex is prepared (two of the 1,225 are not).
+        assert!(all_prepared + 2 >= mesh.vertices());
+        assert!(
+            prepared * 2 < all_prepared,
+            "{prepared} of {all_prepared} vertices prepared"
+        );
+        // Back and front culling split the drawn triangles between them (none is edge-on
+        // here), as the screen-space test alone would.
+        let mut both: Vec<usize> = back.iter().chain(front.iter()).copied().collect();
+        both.sort_unstable();
+        assert_eq!(both, none);
+    }
+
     /// Whatever `next_wanted` answers, the walk moves forward and ends: an answer below
     /// `id` is `id`, one past `end` ends the walk, and a faithful answer visits every
     /// triangle once, in order.
