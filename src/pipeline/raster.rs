@@ -77,7 +77,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
     #[inline]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
         // The span's pixels, colour and depth, sliced out of the target with one check.
-        if let Some((out, mut depth)) = self.rows.span(y, x0, x1) {
+        if let Some((out, mut depth)) = self.rows.span_in_clip(y, x0, x1) {
             // The short path inlined here; every other span through `span`, out of line.
             let short = span_short::<S, P, D, C>(
                 &self.ctx,

@@ -16,8 +16,8 @@
 use super::recip::{Q_FLOOR, Q_ONE};
 use super::setup_cache::SetupSlot;
 use super::stages::ProjKind;
-use crate::math::div::mul_wide_signed;
 use crate::math::div::HW_DIVIDE;
+use crate::math::div::{mul_wide, mul_wide_signed};
 use crate::math::div_u64;
 use crate::math::recip32::Recip32;
 use crate::raster::gradient::PlaneSetup;
@@ -67,18 +67,19 @@ impl<V: Varyings> TriSetup<V> {
 
 /// Whether a bound on the difference between affine and perspective-correct interpolation
 /// exceeds `budget` (units of `extent`), over a triangle whose clip `w` values range over
-/// `[w_min, w_max]` (positive) and whose attribute spans `extent` (`0..2^33`).
+/// `[w_min, w_max]` (`1..2^31`) and whose attribute spans `extent`.
 ///
 /// With barycentrics `b` and perspective ones `b' = b q / sum(b q)` (`q = 1 / w`), the
 /// difference is `sum((b - b') a)`, at most `extent` times the positive part of `b - b'`,
 /// which is largest for two groups of vertices at `q = 1` and `q = rho = w_min / w_max`:
 /// `(1 - sqrt(rho)) / (1 + sqrt(rho))`. Since `sqrt(rho) >= rho` this is below
 /// `(1 - rho) / (1 + rho) = (w_max - w_min) / (w_max + w_min)`, used here: the test
-/// `extent (w_max - w_min) > budget (w_max + w_min)` needs no square root and no division
-/// (a 64-bit division is a library call on 32-bit cores).
-pub(crate) fn affine_error_exceeds(extent: i64, w_min: i64, w_max: i64, budget: i64) -> bool {
-    // A saturated product is above any right-hand side (budget < 2^31, w < 2^31).
-    extent.saturating_mul(w_max - w_min) > budget.saturating_mul(w_max + w_min)
+/// `extent (w_max - w_min) > budget (w_max + w_min)` needs no square root and no division.
+/// Both products are exact 32 x 32 -> 64-bit ones (no 64-bit library multiply on 32-bit
+/// cores, no saturation: each is below 2^64).
+pub(crate) fn affine_error_exceeds(extent: u32, w_min: u32, w_max: u32, budget: u32) -> bool {
+    // w < 2^31: the sum fits u32.
+    mul_wide(extent, w_max.wrapping_sub(w_min)) > mul_wide(budget, w_max.wrapping_add(w_min))
 }
 
 /// One screen vertex as the set-up reads it: `x, y` in 1/4096 pixel (unsnapped: see
@@ -144,20 +145,27 @@ pub(crate) fn setup<V: Varyings>(
         Plane::default()
     };
     let value = |k: usize| vary.each_ref().map(|v| i64::from(v.as_slice()[k]));
-    let span = |a: [i64; 3]| a[0].max(a[1]).max(a[2]) - a[0].min(a[1]).min(a[2]);
+    // A varying's range over the three vertices (exact: the difference of two `i32`).
+    let extent = |k: usize| {
+        let a = vary.each_ref().map(|v| v.as_slice()[k]);
+        a[0].max(a[1]).max(a[2]).abs_diff(a[0].min(a[1]).min(a[2]))
+    };
     let w = pos.map(|v| i64::from(v.3.max(1)));
     let (w_min, w_max) = (w[0].min(w[1]).min(w[2]), w[0].max(w[1]).max(w[2]));
+    // In 1..2^31.
+    let (w_lo, w_hi) = (w_min as u32, w_max as u32);
     let perspective = match proj {
         ProjKind::Affine => false,
         ProjKind::Exact | ProjKind::Subdivided | ProjKind::Quadratic | ProjKind::Dynamic => true,
         ProjKind::Adaptive => match texcoords {
             Some((a, b)) if a < V::N && b < V::N => {
-                let extent = span(value(a)).max(span(value(b)));
+                let extent = extent(a).max(extent(b));
+                let budget = adaptive_budget.clamp(0, i64::from(u32::MAX)) as u32;
                 // Shifted coordinates (extents near 2^30) stay perspective.
-                extent >= 1 << 29 || affine_error_exceeds(extent, w_min, w_max, adaptive_budget)
+                extent >= 1 << 29 || affine_error_exceeds(extent, w_lo, w_hi, budget)
             }
             // No texture: every varying against one RGB565 step of a Q8.16 colour.
-            _ => (0..V::N).any(|k| affine_error_exceeds(span(value(k)), w_min, w_max, 1 << 19)),
+            _ => (0..V::N).any(|k| affine_error_exceeds(extent(k), w_lo, w_hi, 1 << 19)),
         },
     };
     // q = w_min / w per vertex, Q30, clamped to the reciprocal's domain (perspective
@@ -233,31 +241,30 @@ mod tests {
 
     /// The test decides as the bound in exact rational arithmetic,
     /// `extent (1 - rho) / (1 + rho) > budget` with `rho = w_min / w_max`, for extents across
-    /// the whole range, `w` over all positive `i32` and budgets up to a draw's largest.
+    /// the whole `u32` range, `w` over all of `1..2^31` and budgets up to a draw's largest.
     #[test]
     fn the_error_test_equals_the_exact_bound() {
         let mut rng = Rng(0x5eed_a11e);
         for i in 0..200_000u32 {
-            let extent = (rng.next() >> (31 + i % 33)) as i64;
-            let w_max = ((rng.next() >> (33 + i % 31)) as i64).max(1);
+            let extent = (rng.next() >> (32 + i % 32)) as u32;
+            let w_max = ((rng.next() >> (33 + i % 31)) as u32).max(1);
             let w_min = match i % 4 {
                 0 => w_max,
-                1 => (w_max - (i % 3) as i64).max(1),
-                _ => (rng.next() as i64).rem_euclid(w_max) + 1,
+                1 => w_max.saturating_sub(i % 3).max(1),
+                _ => (rng.next() % u64::from(w_max)) as u32 + 1,
             };
             let budget = match i % 3 {
-                0 => (rng.next() % (1 << 24)) as i64,
+                0 => (rng.next() % (1 << 24)) as u32,
                 1 => 1 << 19,
                 // At and around the bound itself.
                 _ => {
-                    let b =
-                        i128::from(extent) * i128::from(w_max - w_min) / i128::from(w_max + w_min);
-                    (b as i64) - i64::from(i % 2)
+                    let b = u64::from(extent) * u64::from(w_max - w_min)
+                        / (u64::from(w_max) + u64::from(w_min));
+                    (b as u32).wrapping_sub(i % 2)
                 }
             };
-            // (1 - rho) / (1 + rho) = (w_max - w_min) / (w_max + w_min), in i128.
             let exact = i128::from(extent) * i128::from(w_max - w_min)
-                > i128::from(budget) * i128::from(w_max + w_min);
+                > i128::from(budget) * (i128::from(w_max) + i128::from(w_min));
             assert_eq!(
                 affine_error_exceeds(extent, w_min, w_max, budget),
                 exact,

@@ -91,6 +91,22 @@ impl<'r, C> Rows<'r, C> {
         Some((color, depth))
     }
 
+    /// [`span`](Self::span) for a span the rasterizer clipped to the target (`0 <= x0 < x1
+    /// <= width`, `y` one of the rows): only the slicing checks, which keep every access
+    /// inside the buffers whatever the arguments.
+    #[inline(always)]
+    pub(crate) fn span_in_clip(&mut self, y: i32, x0: i32, x1: i32) -> Option<Row<'_, C>> {
+        let r = y.wrapping_sub(self.y0) as u32 as usize;
+        let a = r.wrapping_mul(self.stride).wrapping_add(x0 as u32 as usize);
+        let b = a.wrapping_add(x1.wrapping_sub(x0) as u32 as usize);
+        let color = self.color.get_mut(a..b)?;
+        let depth = match self.depth.as_deref_mut() {
+            Some(d) => Some(d.get_mut(a..b)?),
+            None => None,
+        };
+        Some((color, depth))
+    }
+
     /// [`row`](Self::row), keeping the whole borrow.
     #[inline]
     pub fn into_row(self, y: i32) -> Option<Row<'r, C>> {
@@ -195,6 +211,37 @@ mod tests {
         }
         for (y, x0, x1) in [(i32::MIN, 0, 1), (i32::MAX, i32::MIN, i32::MAX)] {
             assert!(r.span(y, x0, x1).is_none());
+        }
+    }
+
+    /// Inside the clip, `span_in_clip` is `span`; outside it (which the rasterizer never
+    /// asks for) it may give other pixels of the buffers but never reaches past them.
+    #[test]
+    fn span_in_clip_is_span_inside_and_stays_in_the_buffers() {
+        let (mut c, mut d) = ([0; 15], [0; 15]);
+        let mut r = rows(&mut c, &mut d);
+        for y in 10..13 {
+            for x0 in 0..4 {
+                for x1 in x0 + 1..=4 {
+                    let a = r
+                        .span(y, x0, x1)
+                        .map(|(c, d)| (c.to_vec(), d.map(|d| d.to_vec())));
+                    let b = r
+                        .span_in_clip(y, x0, x1)
+                        .map(|(c, d)| (c.to_vec(), d.map(|d| d.to_vec())));
+                    assert_eq!(a, b, "{y} {x0}..{x1}");
+                }
+            }
+        }
+        let edges = [i32::MIN, -7, -1, 0, 3, 13, 14, 15, i32::MAX];
+        for y in edges.iter().map(|&v| v.wrapping_add(10)) {
+            for &x0 in &edges {
+                for &x1 in &edges {
+                    if let Some((col, dep)) = r.span_in_clip(y, x0, x1) {
+                        assert!(col.len() <= 15 && dep.map_or(0, |d| d.len()) == col.len());
+                    }
+                }
+            }
         }
     }
 
