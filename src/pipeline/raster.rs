@@ -74,7 +74,10 @@ struct Writer<'t, S: Shader, P, D, C> {
 impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
     for Writer<'_, S, P, D, C>
 {
-    #[inline]
+    // Not inlined into the rasterizer's row loop: one copy per draw type (inlined there, each
+    // draw type's `raster_triangle` carried the edge walk and the short path again: +9.8 KB
+    // for `Draw::dynamic` on Cortex-M4F).
+    #[inline(never)]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
         // The span's pixels, colour and depth, sliced out of the target with one check.
         if let Some((out, mut depth)) = self.rows.span_in_clip(y, x0, x1) {
