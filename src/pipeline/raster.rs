@@ -79,7 +79,8 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
     // for `Draw::dynamic` on Cortex-M4F).
     #[inline(never)]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        // The span's pixels, colour and depth, sliced out of the target with one check.
+        // The span's pixels, colour and depth, sliced out of the target's buffers (the
+        // rasterizer clipped the span to the target: the slicing checks alone).
         if let Some((out, mut depth)) = self.rows.span_in_clip(y, x0, x1) {
             // The short path inlined here; every other span through `span`, out of line.
             let short = span_short::<S, P, D, C>(

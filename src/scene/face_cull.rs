@@ -3,8 +3,8 @@
 //! A closed mesh turns about half of its triangles away from the camera. The screen-space
 //! test ([`keeps_xy`](crate::geometry::clip::keeps_xy)) can only reject them once their
 //! three vertices are transformed, outcoded and projected, and a vertex whose triangles all
-//! face away is then prepared for nothing: on the benchmark sphere that is about 850 of the
-//! 1,225 vertices prepared per frame. This test rejects such triangles from their model-space
+//! face away is then prepared for nothing: on the benchmark sphere that is about 780 of the
+//! 1,223 vertices it prepared per frame. This test rejects such triangles from their model-space
 //! positions alone, so their vertices are never touched.
 //!
 //! # The test
@@ -19,8 +19,8 @@
 //! `s = n . (g + W p0)`, `n = (p1 - p0) x (p2 - p0)`,
 //!
 //! where `W` and `g` are 3x3 minors of `A` (`(g, W)` is the camera's centre in homogeneous
-//! model coordinates): computed exactly (`i128`) once per frame by
-//! [`MeshTransform::new`](super::MeshTransform::new).
+//! model coordinates): computed exactly once per frame by
+//! [`MeshTransform::new`](super::MeshTransform::new) and kept to 62 bits ([`Eye`]).
 //!
 //! Per triangle the walker evaluates `s` in 32- and 64-bit integers from positions cut to
 //! 14 signed bits by a per-mesh shift ([`coord_shift`], found by [`Mesh::new`]), and culls only
@@ -29,8 +29,8 @@
 //! Every mesh path applies the same test (the walker, [`draw_mesh`](super::draw_mesh)), so
 //! they draw the same pixels.
 //!
-//! Cost on Cortex-M4F: about 50 instructions per triangle tested, against about 430 per
-//! vertex prepared.
+//! Cost on Cortex-M4F: about 100 instructions per triangle tested (the walker tests only
+//! triangles with a corner not prepared yet), against about 430 per vertex prepared.
 
 use crate::geometry::Cull;
 use crate::math::div::{mul_wide, mul_wide_signed};
@@ -112,7 +112,7 @@ pub(super) struct FaceCull {
     g: [i32; 3],
     /// `W` scaled and signed alike (`|W'| <= 2^16`).
     w: i32,
-    /// Bound on `|g' + W' p|` (`<= 2^30`) plus [`Self::err`] (below 2^31).
+    /// Bound on `|g' + W' p|` (`<= 2^30`) plus the bound on its error (`err6 / 6`; below 2^31).
     d_err: u32,
     /// Six times the bound on the error of `g' + W' p` against the exact value, in its
     /// units (below 2^20).
