@@ -198,41 +198,7 @@ pub fn mesh_triangles_cached(
     cache: &mut [Option<ClipVertex>],
     emit: impl FnMut(&[ClipVertex; 3]),
 ) {
-    facing_triangles_cached(mesh, model, camera, light, Cull::None, cache, emit);
-}
-
-/// [`mesh_triangles_cached`] without the triangles that surely face the way `cull` drops
-/// (see [`facing_triangles`]).
-fn facing_triangles_cached(
-    mesh: &Mesh<'_>,
-    model: &Mat4,
-    camera: &Camera,
-    light: Option<&DirectionalLight>,
-    cull: Cull,
-    cache: &mut [Option<ClipVertex>],
-    mut emit: impl FnMut(&[ClipVertex; 3]),
-) {
-    // Indices are u16: at most 65536 vertices can be referenced.
-    let n = mesh.positions.len().min(1 << 16);
-    let Some(cache) = cache.get_mut(..n) else {
-        facing_triangles(mesh, model, camera, light, cull, emit);
-        return;
-    };
-    let model_view = camera.view.mul(model);
-    let mvp = camera.projection.mul(&model_view);
-    let faces = FaceCull::new(&camera_centre(&mvp), mesh, cull);
-    for (i, slot) in cache.iter_mut().enumerate() {
-        *slot = vertex(mesh, i as u16, &model_view, &mvp, light);
-    }
-    for tri in mesh.indices {
-        if faces.is_some_and(|f| f.culls(mesh.positions, tri)) {
-            continue;
-        }
-        let v = |k: usize| cache.get(usize::from(tri[k])).copied().flatten();
-        if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
-            emit(&[a, b, c]);
-        }
-    }
+    facing_triangles(mesh, model, camera, light, Cull::None, cache, emit);
 }
 
 /// Calls `emit` with each triangle of `mesh` in clip space (model, then camera), lit per
@@ -245,28 +211,41 @@ pub fn mesh_triangles(
     light: Option<&DirectionalLight>,
     emit: impl FnMut(&[ClipVertex; 3]),
 ) {
-    facing_triangles(mesh, model, camera, light, Cull::None, emit);
+    facing_triangles(mesh, model, camera, light, Cull::None, &mut [], emit);
 }
 
-/// [`mesh_triangles`] without the triangles that surely face the way `cull` drops (tested
-/// in model space before their vertices are transformed, as the mesh walker does: see
-/// `face_cull`), so every mesh path draws the same triangles.
+/// [`mesh_triangles`] (with `cache` long enough, [`mesh_triangles_cached`]: each vertex
+/// transformed once into it) without the triangles that surely face the way `cull` drops
+/// (tested in model space before their vertices are transformed, as the mesh walker does:
+/// see `face_cull`), so every mesh path draws the same triangles.
 fn facing_triangles(
     mesh: &Mesh<'_>,
     model: &Mat4,
     camera: &Camera,
     light: Option<&DirectionalLight>,
     cull: Cull,
+    cache: &mut [Option<ClipVertex>],
     mut emit: impl FnMut(&[ClipVertex; 3]),
 ) {
     let model_view = camera.view.mul(model);
     let mvp = camera.projection.mul(&model_view);
     let faces = FaceCull::new(&camera_centre(&mvp), mesh, cull);
+    // Indices are u16: at most 65536 vertices can be referenced.
+    let mut cache = cache.get_mut(..mesh.positions.len().min(1 << 16));
+    if let Some(cache) = cache.as_deref_mut() {
+        for (i, slot) in cache.iter_mut().enumerate() {
+            *slot = vertex(mesh, i as u16, &model_view, &mvp, light);
+        }
+    }
+    let cache = cache.as_deref();
     for tri in mesh.indices {
         if faces.is_some_and(|f| f.culls(mesh.positions, tri)) {
             continue;
         }
-        let v = |k: usize| vertex(mesh, tri[k], &model_view, &mvp, light);
+        let v = |k: usize| match cache {
+            Some(c) => c.get(usize::from(tri[k])).copied().flatten(),
+            None => vertex(mesh, tri[k], &model_view, &mvp, light),
+        };
         if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
             emit(&[a, b, c]);
         }
@@ -286,7 +265,7 @@ pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    facing_triangles(mesh, model, camera, light, draw.mode().cull, |t| {
+    facing_triangles(mesh, model, camera, light, draw.mode().cull, &mut [], |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });
@@ -306,7 +285,7 @@ pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    facing_triangles_cached(mesh, model, camera, light, draw.mode().cull, cache, |t| {
+    facing_triangles(mesh, model, camera, light, draw.mode().cull, cache, |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });
