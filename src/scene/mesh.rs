@@ -198,7 +198,7 @@ pub fn mesh_triangles_cached(
     cache: &mut [Option<ClipVertex>],
     emit: impl FnMut(&[ClipVertex; 3]),
 ) {
-    facing_triangles(mesh, model, camera, light, Cull::None, cache, emit);
+    facing_triangles::<false>(mesh, model, camera, light, Cull::None, cache, emit);
 }
 
 /// Calls `emit` with each triangle of `mesh` in clip space (model, then camera), lit per
@@ -211,14 +211,14 @@ pub fn mesh_triangles(
     light: Option<&DirectionalLight>,
     emit: impl FnMut(&[ClipVertex; 3]),
 ) {
-    facing_triangles(mesh, model, camera, light, Cull::None, &mut [], emit);
+    facing_triangles::<false>(mesh, model, camera, light, Cull::None, &mut [], emit);
 }
 
 /// [`mesh_triangles`] (with `cache` long enough, [`mesh_triangles_cached`]: each vertex
 /// transformed once into it) without the triangles that surely face the way `cull` drops
 /// (tested in model space before their vertices are transformed, as the mesh walker does:
 /// see `face_cull`), so every mesh path draws the same triangles.
-fn facing_triangles(
+fn facing_triangles<const CULLS: bool>(
     mesh: &Mesh<'_>,
     model: &Mat4,
     camera: &Camera,
@@ -229,7 +229,12 @@ fn facing_triangles(
 ) {
     let model_view = camera.view.mul(model);
     let mvp = camera.projection.mul(&model_view);
-    let faces = FaceCull::new(&camera_centre(&mvp), mesh, cull);
+    // `CULLS` false (the public functions, which never cull): no camera centre, no test.
+    let faces = if CULLS {
+        FaceCull::new(&camera_centre(&mvp), mesh, cull)
+    } else {
+        None
+    };
     // Indices are u16: at most 65536 vertices can be referenced.
     let mut cache = cache.get_mut(..mesh.positions.len().min(1 << 16));
     if let Some(cache) = cache.as_deref_mut() {
@@ -265,7 +270,7 @@ pub fn draw_mesh<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    facing_triangles(mesh, model, camera, light, draw.mode().cull, &mut [], |t| {
+    facing_triangles::<true>(mesh, model, camera, light, draw.mode().cull, &mut [], |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });
@@ -285,7 +290,7 @@ pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
 ) -> Result<u32, Error> {
     draw.check_target(target)?;
     let mut pixels = 0u32;
-    facing_triangles(mesh, model, camera, light, draw.mode().cull, cache, |t| {
+    facing_triangles::<true>(mesh, model, camera, light, draw.mode().cull, cache, |t| {
         draw.project(t, &mut |s| {
             pixels = pixels.wrapping_add(draw.screen_triangle_checked(s, target));
         });
