@@ -17,7 +17,7 @@
 //! undisplaced normal. A fold (a scale large enough to turn triangles over) is no error: its
 //! normals point where the folded triangles face, unit and finite.
 //!
-//! Fine meshes come from [`subdivide`](super::subdivide) (the midpoints carry interpolated
+//! Fine meshes come from [`subdivide`](fn@super::subdivide) (the midpoints carry interpolated
 //! normals and coordinates). Vertices copied along a texture seam or at a pole would move
 //! apart wherever the height map differs across the seam: [`weld`](super::weld) finds
 //! them once, and with its `twins` every copy takes the first copy's position and normal.

@@ -1,5 +1,5 @@
 //! Midpoint subdivision of indexed triangle meshes into caller storage, the first half of
-//! displacement mapping ([`displace`](super::displace)): every triangle becomes four, and
+//! displacement mapping ([`displace`](fn@super::displace)): every triangle becomes four, and
 //! an edge shared by two triangles shares its midpoint vertex, so the finer mesh has no
 //! cracks.
 //!
@@ -391,7 +391,7 @@ pub const fn weld_table_words(vertices: usize) -> usize {
 
 /// Finds the vertices that share a position (the copies a mesh has along a texture seam
 /// or at a pole): `twins[i]` is the first vertex with the position of vertex `i` (`i`
-/// itself when it is the first). [`displace`](super::displace) moves twins together and
+/// itself when it is the first). [`displace`](fn@super::displace) moves twins together and
 /// gives them one normal, so a seam neither cracks nor shows. Returns the number of
 /// distinct positions. `table` is scratch of at least [`weld_table_words`]`(n)` words.
 ///

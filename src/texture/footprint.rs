@@ -61,7 +61,7 @@ use crate::Error;
 /// footprints ([`MipTexture::with_footprints`]) when both wraps repeat: one 64-bit word per
 /// sample.
 ///
-/// A [`TexSampler`] for level 0 only (not a [`Sampler`](super::Sampler), so it cannot be
+/// A [`TexSampler`] for level 0 only (not a [`Sampler`], so it cannot be
 /// part of a [`Mipmapped`](super::Mipmapped) one). Bindings and draws refuse a chain without
 /// footprints ([`Error::BadMode`]). Its [`TexSampler::FILTER`] is
 /// [`Filter::Bilinear`](super::Filter::Bilinear).

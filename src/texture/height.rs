@@ -3,7 +3,7 @@
 //!
 //! # Storage and units
 //! One contiguous row-major `&[u8]`, laid out like a texture's mip chain
-//! ([`chain_len`](super::chain_len)): level 0 (`w x h`), then level 1
+//! ([`super::chain_len`]): level 0 (`w x h`), then level 1
 //! (`max(1, w/2) x max(1, h/2)`), and so on. A height is `0..=255`; what one step means in
 //! model units is the user's *scale* (displacement) or *strength* (bump). Row 0 is `t = 0`
 //! and texel `(i, j)` has its centre at `((i + 0.5) / w, (j + 0.5) / h)`, as for textures.

@@ -8,7 +8,7 @@
 //!   exactly `width * height`.
 //! - Texel `i` covers `[i, i + 1)` in texel units and its centre is at `i + 0.5`. Sampling
 //!   coordinates are raw I16F16 (`i32` with 16 fractional bits, 65536 = one texel, so
-//!   `u = s * width`); see [`Sampler`](super::Sampler).
+//!   `u = s * width`); see [`super::Sampler`].
 //! - The border colour (used by [`ClampToBorder`](super::ClampToBorder)) defaults to black.
 //!
 //! Because the constructor checks `texels.len() == width * height` and the fields are private,

@@ -2,14 +2,14 @@
 //! the 3D object-space point, with no seams, no distortion and no texture memory.
 //!
 //! * [`noise3`]: Perlin's improved gradient noise in 3D, all in `i32` fixed point;
-//!   [`noise4`], [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
+//!   [`noise4`](fn@noise4), [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
 //!   change shape over time.
-//! * [`turbulence`] and [`BandLimit`]: `Σ |noise(2^k p)| / 2^k`, with the octaves finer than
+//! * [`turbulence`](fn@turbulence) and [`BandLimit`]: `Σ |noise(2^k p)| / 2^k`, with the octaves finer than
 //!   a pixel replaced by their mean (the seeds' anti-aliasing of procedural textures).
 //! * [`Ramp`], [`Marble`], [`Wood`], [`Granite`]: patterns over the noise, and
 //!   [`SolidShader`], the fragment shader that draws any [`Pattern`] on a mesh with the
 //!   object-space point as three varyings and a light intensity as the fourth.
-//! * [`flame`] and [`FlameShader`]: the animated flame of seed `000` §4.2 (a texture of
+//! * [`flame`](fn@flame) and [`FlameShader`]: the animated flame of seed `000` §4.2 (a texture of
 //!   the plane: 2D + time through [`noise3`], time as the third axis).
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map (seed `000` §4.3), trilinear
 //!   (`cargo xtask bake-light3d`).

@@ -132,7 +132,7 @@ pub fn noise4(x: i32, y: i32, z: i32, w: i32) -> i32 {
 
 /// `Σ_{k<octaves} |noise4(2^k p)| >> k` (Q15, non-negative, below `2^17`: at most twice
 /// the largest `|noise4|`, 83,694; as
-/// [`turbulence`](super::turbulence) one dimension up): animated turbulence, `p[3]` the
+/// [`turbulence`](fn@super::turbulence) one dimension up): animated turbulence, `p[3]` the
 /// time axis. `octaves` is clamped to 8; 0 gives 0.
 #[inline]
 pub fn turbulence4(p: [i32; 4], octaves: u32) -> i32 {

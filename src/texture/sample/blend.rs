@@ -50,7 +50,7 @@ pub(super) fn blend_weights(c: [u16; 4], w: [u32; 4]) -> u16 {
 /// The dot-product sums of [`blend_weights`]: each channel's sum `sum w c`, where the
 /// multiply leaves it, handed to `finish` ([`Finish`]), which returns the channel's value
 /// (red and blue 0..=31, green 0..=63); packed to RGB565. Two texels per multiply on 32-bit targets
-/// ([`blend_pairs_u32`]), four on 64-bit ones ([`blend_pairs_u64`]): the same sums, so the
+/// (`blend_pairs_u32`), four on 64-bit ones ([`blend_pairs_u64`]): the same sums, so the
 /// same pixels on every target.
 #[inline(always)]
 pub(super) fn blend_pairs(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {
