@@ -44,6 +44,7 @@ mod tangent;
 mod walk;
 
 pub use camera::Camera;
+pub use face_cull::FacingTest;
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
 pub use mesh::{

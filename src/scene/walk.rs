@@ -33,13 +33,13 @@
 
 use crate::color::TargetColor;
 use crate::geometry::clip::{complete_depth, keeps_xy, prepare, prepare_without_depth};
-use crate::geometry::{ScreenTriangle, ScreenVertex, COLOR_ONE};
+use crate::geometry::{Cull, ScreenTriangle, ScreenVertex, COLOR_ONE};
 use crate::math::Mat4;
 use crate::pipeline::{Draw, Shading};
 use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::surface::{MeshSink, RenderTarget};
 
-use super::face_cull::{camera_centre, Eye, FaceCull};
+use super::face_cull::{camera_centre, Eye, FaceCull, FacingTest};
 use super::mesh::{vertex, vertex_intensity};
 use super::{Camera, DirectionalLight, Mesh};
 
@@ -197,6 +197,13 @@ impl MeshTransform {
             mvp,
             model_view,
         }
+    }
+
+    /// The model-space back-face test of `mesh` under this transform for `cull` (the one the
+    /// mesh walker runs before transforming a triangle's vertices), or `None` for
+    /// [`Cull::None`].
+    pub fn facing_test<'m>(&self, mesh: &'m Mesh<'m>, cull: Cull) -> Option<FacingTest<'m>> {
+        FacingTest::new(&self.eye, mesh, cull)
     }
 }
 

@@ -48,7 +48,7 @@ fn geometry_table(
     for key in &order {
         let unit = match key.1.as_str() {
             "transform" | "lighting" | "project" => "vertex",
-            "cull" | "walk" => "mesh triangle",
+            "face" | "cull" | "walk" => "mesh triangle",
             "clip" => "crossing triangle",
             _ => "kept triangle",
         };

@@ -5,7 +5,9 @@
 //! Each stage is one counted region followed by a `bench_mark` (`cargo xtask mcu` reads the
 //! per-mark counts): `transform` (model-view-projection of every vertex), `lighting` (normal
 //! to view space and the light's intensity, every vertex), `project` (outcode and
-//! perspective divide, every vertex), `cull` (exact sub-pixel area test of every triangle
+//! perspective divide, every vertex), `face` (the walker's model-space back-face test,
+//! `MeshTransform::facing_test`, of every triangle, before any vertex is transformed; its
+//! checksum is the number it culls), `cull` (exact sub-pixel area test of every triangle
 //! with its three vertices inside), `clip` (the clipper on triangles crossing a plane),
 //! `setup` (the raster set-up of every kept triangle, into a one-row target no triangle
 //! reaches, so no span is drawn) and `walk` (the renderer's whole geometry stage,
@@ -124,6 +126,14 @@ fn stages<const V: usize, const T: usize>(
         }
         (n as u32, sum)
     });
+    let transform = MeshTransform::new(model, &camera);
+    stage(scene, "face", || {
+        let Some(test) = transform.facing_test(&mesh, Cull::Back) else {
+            return (t as u32, 0);
+        };
+        let culled = (0..t).filter(|&k| test.culls(k)).count();
+        (t as u32, culled as u32)
+    });
     stage(scene, "cull", || {
         for (k, idx) in m.indices[..t].iter().enumerate() {
             let v = idx.map(|i| s.prepared[usize::from(i)]);
@@ -176,7 +186,7 @@ fn stages<const V: usize, const T: usize>(
         walk_mesh(
             &draw,
             &mesh,
-            &MeshTransform::new(model, &camera),
+            &transform,
             Some(&light),
             &mut s.cache,
             0,
