@@ -126,6 +126,8 @@ fn stages<const V: usize, const T: usize>(
         }
         (n as u32, sum)
     });
+    // Built outside the region: the walk's row below counts the transform's per-frame set-up
+    // (the camera centre among it), this one the test per triangle.
     let transform = MeshTransform::new(model, &camera);
     stage(scene, "face", || {
         let Some(test) = transform.facing_test(&mesh, Cull::Back) else {
@@ -186,7 +188,7 @@ fn stages<const V: usize, const T: usize>(
         walk_mesh(
             &draw,
             &mesh,
-            &transform,
+            &MeshTransform::new(model, &camera),
             Some(&light),
             &mut s.cache,
             0,
