@@ -307,6 +307,58 @@ fn overflowing_vertices_skip_their_triangles_on_every_path() {
     }
 }
 
+/// A sliver whose projection rounds to the other orientation (found by the property test
+/// above in CI): 0.3 pixels wide and 200 tall, front-facing in exact arithmetic, so the
+/// model-space test culls it under `Cull::Front`, but its rounded sub-pixel corners turn it
+/// the other way, so the screen-space test alone would keep it. Drawn after the same
+/// corners in the other order (which prepares them all in the walker's cache), it is still
+/// culled: the model-space test decides on every path, whatever the cache holds.
+#[test]
+fn a_sliver_that_rounds_to_the_other_orientation_is_culled_on_every_path() {
+    let f = |x: f64, y: f64, z: f64| Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z));
+    let positions = [
+        f(-0.0938, -1.08614, -2.06349),
+        f(0.52956, -1.42546, -2.97656),
+        f(-2.19147, -1.31825, 0.77948),
+    ];
+    let normals = [f(0.0, 0.0, 1.0); 3];
+    let uvs = [[Fx::ZERO; 2], [Fx::ONE, Fx::ZERO], [Fx::ONE; 2]];
+    let (w, h) = (2usize, 250usize);
+    let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+    let camera = demo::camera(20);
+    let model = model(10025);
+    let xf = MeshTransform::new(&model, &camera);
+    let tex = noise_texture(8, 16, 5);
+    let texels = host_tests::adapter::texels(&tex);
+    let mode = DrawMode {
+        cull: Cull::Front,
+        ..DrawMode::default()
+    };
+    let d = Draw::dynamic(mode, Some(texture(&tex, &texels)), vp).unwrap();
+    // The screen-space test alone keeps the sliver.
+    let sliver = Mesh::new(&positions, Some(&normals), &uvs, &[[0, 1, 2]]).unwrap();
+    let mut pieces = 0;
+    fixel::scene::mesh_triangles(&sliver, &model, &camera, None, |t| {
+        d.project(t, &mut |_| pieces += 1);
+    });
+    assert_eq!(pieces, 1, "the rounded sliver passes the screen-space test");
+    // Every path culls it, also after its corners were prepared by the reversed triangle.
+    let orders: [&[[u16; 3]]; 2] = [&[[0, 1, 2]], &[[0, 2, 1], [0, 1, 2]]];
+    for indices in orders {
+        let mesh = Mesh::new(&positions, Some(&normals), &uvs, indices).unwrap();
+        let (px_ref, expected) = drawn(w, h, |fr| draw_mesh(&d, &mesh, &model, &camera, None, fr));
+        assert_eq!(px_ref, 0, "draw_mesh culls the sliver and its reverse");
+        for cache_len in [0usize, 1, 3, 8] {
+            let mut cache = vec![CachedVertex::default(); cache_len];
+            let (px, walked) = drawn(w, h, |fr| {
+                draw_mesh_walked(&d, &mesh, &xf, None, &mut cache, fr)
+            });
+            assert_eq!(px, 0, "{indices:?} cache {cache_len}");
+            assert!(walked == expected);
+        }
+    }
+}
+
 /// Draws with `draw` into a cleared `w` x `h` frame with depth; returns the pixel count it
 /// reports and the frame's RGB565 bits.
 fn drawn(

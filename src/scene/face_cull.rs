@@ -29,8 +29,11 @@
 //! Every mesh path applies the same test (the walker, [`draw_mesh`](super::draw_mesh)), so
 //! they draw the same pixels.
 //!
-//! Cost on Cortex-M4F: about 100 instructions per triangle tested (the walker tests only
-//! triangles with a corner not prepared yet), against about 430 per vertex prepared.
+//! Cost on Cortex-M4F: about 100 instructions per triangle tested, against about 430 per
+//! vertex prepared. The walker tests a triangle with a corner not prepared yet first, and
+//! one whose corners are all prepared only once the cheaper screen-space test kept it
+//! (the two can disagree on a sliver whose projection rounds to the other orientation, and
+//! this test must decide on every path, whatever the walker's cache holds).
 
 use crate::geometry::Cull;
 use crate::math::div::{mul_wide, mul_wide_signed};

@@ -8,7 +8,10 @@
 //!    others are skipped untouched;
 //! 2. a triangle with a corner not prepared yet that surely faces the culled way, by its
 //!    model-space positions alone ([`face_cull`](super::face_cull)), is skipped: about two
-//!    in three of the benchmark sphere's vertices are then never prepared;
+//!    in three of the benchmark sphere's vertices are then never prepared. A triangle
+//!    whose corners are all prepared meets the same test after the cheaper ones of step 4
+//!    kept it: the two tests can disagree on a sliver whose projection rounds to the other
+//!    orientation, and the model-space one must decide whatever the cache holds;
 //! 3. its three vertices from the cache, or transformed by the model-view-projection
 //!    matrix, outcoded against the view volume and guard band, and projected (3 `i64`
 //!    divisions), then cached;
@@ -305,6 +308,11 @@ pub fn walk_mesh<C: TargetColor>(
                     .get(slots[k])
                     .is_some_and(|c| c.key != keys[k] || c.state == EMPTY)
             });
+            // The model-space test decides whatever the cache holds (it and the screen-space
+            // test can disagree on a sliver whose projection rounds to the other
+            // orientation): first when it saves preparing corners, else only for a
+            // triangle the outcode and screen-space tests keep.
+            let faced = faces.filter(|_| !missing);
             if missing && faces.is_some_and(|f| f.culls(mesh.positions, idx)) {
                 continue;
             }
@@ -321,12 +329,16 @@ pub fn walk_mesh<C: TargetColor>(
             }
             let codes = [cut[0].2, cut[1].2, cut[2].2];
             if codes[0] | codes[1] | codes[2] != 0 {
-                to_clip(draw, &ctx, idx, lit, id, codes, out);
+                if !faced.is_some_and(|f| f.culls(mesh.positions, idx)) {
+                    to_clip(draw, &ctx, idx, lit, id, codes, out);
+                }
                 continue;
             }
             // Cull from the cached positions: a culled triangle builds no screen vertices.
             let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
-            if !keeps_xy([xy(0), xy(1), xy(2)], cull) {
+            if !keeps_xy([xy(0), xy(1), xy(2)], cull)
+                || faced.is_some_and(|f| f.culls(mesh.positions, idx))
+            {
                 continue;
             }
         }
