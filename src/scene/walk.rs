@@ -328,17 +328,17 @@ pub fn walk_mesh<C: TargetColor>(
                 }
             }
             let codes = [cut[0].2, cut[1].2, cut[2].2];
-            if codes[0] | codes[1] | codes[2] != 0 {
-                if !faced.is_some_and(|f| f.culls(mesh.positions, idx)) {
-                    to_clip(draw, &ctx, idx, lit, id, codes, out);
-                }
-                continue;
-            }
+            let inside = codes[0] | codes[1] | codes[2] == 0;
             // Cull from the cached positions: a culled triangle builds no screen vertices.
             let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
-            if !keeps_xy([xy(0), xy(1), xy(2)], cull)
-                || faced.is_some_and(|f| f.culls(mesh.positions, idx))
-            {
+            if inside && !keeps_xy([xy(0), xy(1), xy(2)], cull) {
+                continue;
+            }
+            if faced.is_some_and(|f| f.culls_out_of_line(mesh.positions, idx)) {
+                continue;
+            }
+            if !inside {
+                to_clip(draw, &ctx, idx, lit, id, codes, out);
                 continue;
             }
         }
