@@ -151,6 +151,10 @@ pub struct McuArgs {
     /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
     #[arg(long)]
     pub no_install: bool,
+    /// Run only this firmware (repeatable: `--only whole_sphere_footprint --only geometry`);
+    /// every scene and the geometry firmware when not given
+    #[arg(long, value_name = "FIRMWARE", value_parser = firmware_name)]
+    pub only: Vec<String>,
 }
 
 impl Default for McuArgs {
@@ -160,7 +164,32 @@ impl Default for McuArgs {
             profile: false,
             opt_s: false,
             no_install: false,
+            only: Vec::new(),
         }
+    }
+}
+
+impl McuArgs {
+    /// Whether `--only` selects the firmware `name` (all do when it is not given).
+    fn runs_firmware(&self, name: &str) -> bool {
+        self.only.is_empty() || self.only.iter().any(|o| o == name)
+    }
+}
+
+/// The firmware measured alone (geometry table) rather than as a scene.
+const GEOMETRY: &str = "geometry";
+
+/// Parses `--only`: a scene of [`SCENES`] or [`WHOLE_SCENES`], or [`GEOMETRY`]; an error
+/// that lists them otherwise.
+fn firmware_name(name: &str) -> Result<String, String> {
+    let known = || SCENES.iter().chain(WHOLE_SCENES.iter()).chain([&GEOMETRY]);
+    if known().any(|s| *s == name) {
+        Ok(name.to_string())
+    } else {
+        Err(format!(
+            "no firmware `{name}`; the firmwares are {}",
+            known().copied().collect::<Vec<_>>().join(", ")
+        ))
     }
 }
 

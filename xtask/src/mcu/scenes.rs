@@ -11,7 +11,9 @@ use std::time::Instant;
 use super::firmware::{build_firmware, build_whole, elf, sizes};
 use super::qemu::{kv, measure, measure_modes, num};
 use super::tools::{build_plugin, ensure_tools, output, qemu_version, run_visible, rustc_version};
-use super::{fail, firmware_dir, out_dir, McuArgs, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
+use super::{
+    fail, firmware_dir, out_dir, McuArgs, GEOMETRY, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES,
+};
 use crate::cmd::root;
 use crate::progress::Progress;
 
@@ -174,12 +176,16 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
     }
     report.push('\n');
     let mut per_px: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
-    let sets = SCENES
+    let sets: Vec<_> = SCENES
         .iter()
         .map(|s| (*s, &MCUS, &td))
-        .chain(WHOLE_SCENES.iter().map(|s| (*s, &WHOLE_MCUS, &td_whole)));
+        .chain(WHOLE_SCENES.iter().map(|s| (*s, &WHOLE_MCUS, &td_whole)))
+        .filter(|(s, _, _)| flags.runs_firmware(s))
+        .collect();
+    let with_geometry = flags.runs_firmware(GEOMETRY);
     // One step per QEMU firmware run (scene and MCU), then the geometry firmware's.
-    let steps = SCENES.len() * MCUS.len() + (WHOLE_SCENES.len() + 1) * WHOLE_MCUS.len();
+    let steps = sets.iter().map(|(_, m, _)| m.len()).sum::<usize>()
+        + usize::from(with_geometry) * WHOLE_MCUS.len();
     let mut progress = Progress::new("mcu", steps);
     for (scene, mcus, td) in sets {
         for m in mcus.iter() {
@@ -260,7 +266,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             progress.done(matches && same);
         }
     }
-    let geometry = geometry_table(&llvm, &plugin, &td_whole, &mut progress);
+    let geometry = with_geometry.then(|| geometry_table(&llvm, &plugin, &td_whole, &mut progress));
     progress.finish();
     println!(
         "\n## cargo xtask mcu: {}, {}\n",
@@ -278,8 +284,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
          flash); RAM = data + bss + measured stack high-water mark (band buffers are on the stack).\n"
     );
     print!("{report}");
-    // Kept for reports that quote these counts (host-tests' shadow_report reads it).
-    let _ = fs::write(out_dir().join("scenes.md"), &report);
+    // Kept for reports that quote these counts (host-tests' shadow_report reads it): only
+    // when every scene ran.
+    if flags.only.is_empty() {
+        let _ = fs::write(out_dir().join("scenes.md"), &report);
+    }
     println!(
         "\nwhole_* = the same frame drawn into one 320x240 frame (colour + 16-bit depth, \
          300 KiB) with one prepared vertex per mesh vertex, on mps2-an386 (both Arm builds) \
@@ -295,7 +304,8 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             }
         }
     }
-    match geometry {
+    match geometry.unwrap_or(Ok(String::new())) {
+        Ok(t) if t.is_empty() => {}
         Ok(t) => println!(
             "\nGeometry on its own (`geometry` firmware, sphere camera, frame 0): instructions \
              per item and stage\n\n{t}"
