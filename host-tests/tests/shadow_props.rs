@@ -64,10 +64,12 @@ proptest! {
     /// (the matrix is shared; fixel computes in i64 without intermediate rounding).
     #[test]
     fn directional_projection_matches_f64(
-        dir in prop::array::uniform3(-1.0f64..1.0), half in 2.0f64..10.0,
+        dir in (-1.0f64..1.0, 0.2f64..1.0, -1.0f64..1.0), half in 2.0f64..10.0,
         p in prop::array::uniform3(-8.0f64..8.0),
     ) {
-        prop_assume!(dir[1] > 0.2);
+        // The light above the scene (y > 0.2), drawn rather than assumed: a rejection per
+        // case (60 % of them) put the test within reach of proptest's 1,024 global rejects.
+        let dir = [dir.0, dir.1, dir.2];
         let c = v3([0.0, -1.0, -4.0]);
         let l = LightSpace::directional(c + v3(dir).scale(Fx::from_num(8)), c, Vec3::from_num(0, 1, 0),
             Fx::from_num(half), Fx::ONE, Fx::from_num(18));
