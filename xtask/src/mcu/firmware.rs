@@ -6,11 +6,12 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use super::tools::{output, run_visible};
-use super::{firmware_dir, Mcu, MCUS, WHOLE_MCUS, WHOLE_SCENES};
+use super::{firmware_dir, Mcu, GEOMETRY, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
 
 /// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
-/// directory so the default build's artefacts stay).
-pub(super) fn build_whole(td: &Path) -> Result<(), String> {
+/// directory so the default build's artefacts stay), or only those of them `keep` selects
+/// (`--only`: a change to fixel rebuilds just the firmwares to be measured).
+pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), String> {
     let mut cmd = Command::new("cargo");
     cmd.current_dir(firmware_dir())
         .args(["build", "--release", "--features", "whole"])
@@ -21,7 +22,16 @@ pub(super) fn build_whole(td: &Path) -> Result<(), String> {
         .env_remove("CARGO_ENCODED_RUSTFLAGS")
         .env_remove("CARGO_BUILD_TARGET")
         .env_remove("CARGO_TARGET_DIR");
-    for b in WHOLE_SCENES.iter().chain(&["geometry"]) {
+    let bins: Vec<&str> = WHOLE_SCENES
+        .iter()
+        .chain(&[GEOMETRY])
+        .copied()
+        .filter(|b| keep(b))
+        .collect();
+    if bins.is_empty() {
+        return Ok(());
+    }
+    for b in bins {
         cmd.args(["--bin", b]);
     }
     for m in &WHOLE_MCUS {
@@ -34,15 +44,30 @@ pub(super) fn build_whole(td: &Path) -> Result<(), String> {
     )
 }
 
-/// Builds every firmware binary for every MCU target (one cargo invocation).
+/// Builds every firmware binary for every MCU target (one cargo invocation), or only the
+/// scenes `only` names (`--only`; nothing when it names none of [`SCENES`]).
 pub(super) fn build_firmware(
     extra_env: &[(&str, &str)],
     target_dir: Option<&Path>,
+    only: &[String],
 ) -> Result<(), String> {
     let mut cmd = Command::new("cargo");
-    cmd.current_dir(firmware_dir())
-        .args(["build", "--release", "--bins"])
-        .env_remove("RUSTFLAGS")
+    cmd.current_dir(firmware_dir()).args(["build", "--release"]);
+    if only.is_empty() {
+        cmd.arg("--bins");
+    } else {
+        let bins: Vec<&String> = only
+            .iter()
+            .filter(|o| SCENES.contains(&o.as_str()))
+            .collect();
+        if bins.is_empty() {
+            return Ok(());
+        }
+        for b in bins {
+            cmd.args(["--bin", b]);
+        }
+    }
+    cmd.env_remove("RUSTFLAGS")
         .env_remove("CARGO_ENCODED_RUSTFLAGS")
         .env_remove("CARGO_BUILD_TARGET")
         .env_remove("CARGO_TARGET_DIR");

@@ -151,8 +151,8 @@ pub struct McuArgs {
     /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
     #[arg(long)]
     pub no_install: bool,
-    /// Run only this firmware (repeatable: `--only whole_sphere_footprint --only geometry`);
-    /// every scene and the geometry firmware when not given
+    /// Build and run only this firmware (repeatable: `--only whole_sphere_footprint --only
+    /// geometry`); every scene and the geometry firmware when not given
     #[arg(long, value_name = "FIRMWARE", value_parser = firmware_name)]
     pub only: Vec<String>,
 }
