@@ -48,16 +48,13 @@ fn skipped(name: impl Into<String>, reason: &'static str) -> Step {
 /// Flags of `cargo xtask ci`.
 #[derive(Args, Clone, Debug)]
 pub(crate) struct CiArgs {
-    /// Skip the release-mode test run
-    #[arg(long)]
-    pub quick: bool,
     /// Skip the cross-target builds and `mcu`
     #[arg(long)]
     pub no_cross: bool,
 }
 
 pub(crate) fn ci(args: &CiArgs) -> ExitCode {
-    let CiArgs { quick, no_cross } = *args;
+    let CiArgs { no_cross } = *args;
 
     let mut steps = vec![
         step("toolchain", ensure_toolchain),
@@ -73,15 +70,12 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
             ])
             .run()
         }),
-        step("test (debug)", || cargo(&["test", "--workspace"]).run()),
+        // One optimized build with a debug build's checks (`[profile.ci]`): CI once built
+        // and ran every test twice, in debug and in release.
+        step("test (ci profile)", || {
+            cargo(&["test", "--workspace", "--profile", "ci"]).run()
+        }),
     ];
-    steps.push(if quick {
-        skipped("test (release)", "--quick")
-    } else {
-        step("test (release)", || {
-            cargo(&["test", "--workspace", "--release"]).run()
-        })
-    });
     steps.push(step("doc", || {
         let mut flags = env::var("RUSTDOCFLAGS").unwrap_or_default();
         if !flags.is_empty() {

@@ -45,8 +45,9 @@ struct Cli {
 enum Command {
     /// Run the full check suite, failing fast
     ///
-    /// Steps, in order: toolchain targets/components, fmt, clippy, test (debug),
-    /// test (release), docs (-D warnings), no_std cross builds for
+    /// Steps, in order: toolchain targets/components, fmt, clippy, test (the `ci`
+    /// profile: optimized, with overflow checks and debug assertions), docs
+    /// (-D warnings), no_std cross builds for
     /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
     /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
     /// the report). Ends with a summary table of the steps and their times.
