@@ -98,10 +98,14 @@ impl Finish for Round {
 pub(super) struct Scale(pub(super) u32);
 
 impl Finish for Scale {
+    /// Written with an arithmetic shift and signed operands (`s < 2^30` and `i <= 256`, so
+    /// the value is the same): Cortex-M0+ whole sphere 358.29 -> 356.99 instructions per
+    /// pixel, Cortex-M4F and RV32 unchanged (LLVM does not take the top half in the
+    /// multiply, `smultb`, either way).
     #[cfg(any(test, not(target_pointer_width = "64")))]
     #[inline(always)]
     fn upper_half(self, s: u32) -> u32 {
-        ((s >> 16) * self.0 + 32768) >> 16
+        ((((s as i32) >> 16) * (self.0 as i32) + 32768) as u32) >> 16
     }
     #[cfg(any(test, target_pointer_width = "64"))]
     #[inline(always)]
