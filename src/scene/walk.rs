@@ -310,8 +310,9 @@ pub fn walk_mesh<C: TargetColor>(
             });
             // The model-space test decides whatever the cache holds (it and the screen-space
             // test can disagree on a sliver whose projection rounds to the other
-            // orientation): first when it saves preparing corners, else only for a
-            // triangle the outcode and screen-space tests keep.
+            // orientation). With a corner missing it runs first, as it then saves preparing
+            // corners; with all three prepared it runs once the cheaper screen-space test has
+            // kept a triangle inside the guard band, or before a crossing one is clipped.
             let faced = faces.filter(|_| !missing);
             if missing && faces.is_some_and(|f| f.culls(mesh.positions, idx)) {
                 continue;
