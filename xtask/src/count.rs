@@ -17,7 +17,8 @@ pub(crate) struct CountArgs {
     /// Frames per case [default: the scene's N]
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub frames: Option<u32>,
-    /// Only cases whose `scene/mode` id contains one of these (`count_scene --list`)
+    /// Only cases whose `scene/mode` id contains one of these (`count_scene --list`); a
+    /// `scene/mode` id that is not listed is counted as named
     #[arg(value_name = "FILTER")]
     pub filters: Vec<String>,
 }
@@ -138,12 +139,24 @@ pub(crate) fn count(args: &CountArgs) -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
-    let cases: Vec<&str> = list
+    let listed: Vec<&str> = list
         .lines()
         .map(str::trim)
         .filter(|id| !id.is_empty())
+        .collect();
+    let mut cases: Vec<&str> = listed
+        .iter()
+        .copied()
         .filter(|id| filters.is_empty() || filters.iter().any(|f| id.contains(f.as_str())))
         .collect();
+    // A `scene/mode` filter that matches no listed case names a case of its own (any mode
+    // can be counted, for example `sphere/lit-bilinear-footprint-adaptive`); `count_scene`
+    // refuses one that is not a case.
+    for f in filters {
+        if f.contains('/') && !listed.iter().any(|id| id.contains(f.as_str())) {
+            cases.push(f);
+        }
+    }
     if cases.is_empty() {
         return usage_error(
             "count",
