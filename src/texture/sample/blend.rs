@@ -99,9 +99,10 @@ pub(super) struct Scale(pub(super) u32);
 
 impl Finish for Scale {
     /// Written with an arithmetic shift and signed operands (`s < 2^30` and `i <= 256`, so
-    /// the value is the same): Cortex-M0+ whole sphere 358.29 -> 356.99 instructions per
-    /// pixel, Cortex-M4F and RV32 unchanged (LLVM does not take the top half in the
-    /// multiply, `smultb`, either way).
+    /// the value is the same): Cortex-M0+ whole sphere from footprints 358.29 -> 356.99
+    /// instructions per pixel and cube 181.19 -> 179.18, though the plain-bilinear adaptive
+    /// sphere 385.09 -> 388.61 (register allocation); Cortex-M4F unchanged everywhere (LLVM
+    /// does not take the top half in the multiply, `smultb`, either way), RV32 within 2.2.
     #[cfg(any(test, not(target_pointer_width = "64")))]
     #[inline(always)]
     fn upper_half(self, s: u32) -> u32 {

@@ -40,7 +40,8 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
     run_visible(
         &mut cmd,
         "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
-         --target-dir target/whole --bin whole_* --bin bump --bin geometry --target <3 MCU targets>)",
+         --target-dir target/whole --bin whole_* --bin bump --bin geometry (or the --only ones) \
+         --target <3 MCU targets>)",
     )
 }
 
@@ -82,7 +83,8 @@ pub(super) fn build_firmware(
     }
     run_visible(
         &mut cmd,
-        "(cd examples/firmware && cargo build --release --bins --target <3 MCU targets>)",
+        "(cd examples/firmware && cargo build --release --bins (or the --only ones) \
+         --target <3 MCU targets>)",
     )
 }
 
