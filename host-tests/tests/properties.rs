@@ -335,3 +335,53 @@ proptest! {
         prop_assert!(got == expected, "band frame differs from whole frame ({:?})", stats);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+
+    /// The frame's depth floor stays at or below every stored depth after each triangle,
+    /// in every projection (the short span path leaves the bound to the triangle, which
+    /// takes it from its vertices' depths: see `depth_lower_bound`), for the run-time draw
+    /// and for a typed affine one (whose short spans are drawn inline).
+    #[test]
+    fn depth_floor_stays_below_every_stored_depth(
+        tris in prop::collection::vec([tame_vertex(), tame_vertex(), tame_vertex()], 1..12),
+        mode in any_mode(),
+        adaptive in any::<bool>(),
+        typed in any::<bool>(),
+        (w, h) in (1usize..48, 1usize..40),
+    ) {
+        use fixel::pipeline::{Adaptive, Affine, DepthLess, ModulateIntensity, Pipeline};
+        use fixel::surface::RenderTarget;
+        use fixel::texture::{Bilinear, Repeat};
+        let tex = noise_texture(8, 8, 5);
+        let texels = host_tests::adapter::texels(&tex);
+        let t = texture(&tex, &texels);
+        let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+        let mode = DrawMode {
+            depth: DepthTest::Less,
+            projection: if adaptive { Projection::Adaptive { budget: 64 } } else { mode.projection },
+            ..mode
+        };
+        type TypedAffine = Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+        type TypedAdaptive =
+            Pipeline<Adaptive, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+        let draw = match (typed, adaptive) {
+            (false, _) => Draw::dynamic(mode, Some(t), vp).unwrap(),
+            (true, false) => Draw::<Rgb565>::new::<TypedAffine>(Some(t), vp, Cull::None).unwrap(),
+            (true, true) => Draw::<Rgb565>::new::<TypedAdaptive>(Some(t), vp, Cull::None).unwrap(),
+        };
+        let mut color = vec![Rgb565::new(0, 0, 0); w * h];
+        let mut depth = vec![0u16; w * h];
+        let mut frame = Frame::new(&mut color, w as u32, h as u32)
+            .unwrap()
+            .with_depth(&mut depth)
+            .unwrap();
+        for tri in &tris {
+            draw.clip_triangles(core::slice::from_ref(tri), &mut frame).unwrap();
+            let floor = frame.depth_floor();
+            let lowest = frame.depth().unwrap().iter().copied().min().unwrap();
+            prop_assert!(floor <= lowest, "floor {} above a stored depth {}", floor, lowest);
+        }
+    }
+}

@@ -206,9 +206,33 @@ where
         sink,
     );
     // Read out before the target is borrowed again (the writer lends its rows).
-    let (pixels, lowest) = (w.pixels, w.bound.lowest);
+    let (pixels, mut lowest) = (w.pixels, w.bound.lowest);
+    if pixels != 0 {
+        lowest = lowest.min(depth_lower_bound(&pos, vp));
+    }
     if lowest < floor {
         target.lower_depth_floor(lowest);
     }
     pixels
+}
+
+/// A lower bound of every 16-bit depth the triangle `pos` can write in `viewport`, from its
+/// vertices' depths alone (Q14, as the set-up reads them).
+///
+/// A covered pixel centre lies in the triangle, where the exact plane is a convex
+/// combination of the vertex depths, so at least their minimum. The set-up's plane is
+/// within `2 + (width + height) / 2` units of it anywhere in the viewport (see
+/// [`crate::raster::gradient`]); the bound subtracts `2 + width + height`. Per triangle,
+/// in place of a minimum kept per span by the short span path (about ten instructions per
+/// span).
+fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], viewport: Rect) -> u16 {
+    let z_min = pos[0].2.min(pos[1].2).min(pos[2].2);
+    let margin = viewport
+        .x1
+        .wrapping_sub(viewport.x0)
+        .unsigned_abs()
+        .saturating_add(viewport.y1.wrapping_sub(viewport.y0).unsigned_abs())
+        .saturating_add(2)
+        .min(1 << 30) as i32;
+    (z_min.saturating_sub(margin) >> 14).clamp(0, 0xFFFF) as u16
 }
