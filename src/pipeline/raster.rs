@@ -9,7 +9,7 @@
 use super::interp::lambda_at;
 use super::setup::{centroid, setup};
 use super::setup_cache::SetupSlot;
-use super::span::{span, span_short, DepthBound, Scratch, SpanCtx};
+use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -207,7 +207,7 @@ where
     );
     // Read out before the target is borrowed again (the writer lends its rows).
     let (pixels, mut lowest) = (w.pixels, w.bound.lowest);
-    if pixels != 0 {
+    if inline_short_path::<S, P, D>() && pixels != 0 {
         lowest = lowest.min(depth_lower_bound(&pos, vp));
     }
     if lowest < floor {
@@ -217,14 +217,13 @@ where
 }
 
 /// A lower bound of every 16-bit depth the triangle `pos` can write in `viewport`, from its
-/// vertices' depths alone (Q14, as the set-up reads them).
+/// vertices' depths alone (Q14, as the set-up reads them): the depth floor's bound for the
+/// spans of the inlined short path, which keep none ([`inline_short_path`]).
 ///
 /// A covered pixel centre lies in the triangle, where the exact plane is a convex
 /// combination of the vertex depths, so at least their minimum. The set-up's plane is
 /// within `2 + (width + height) / 2` units of it anywhere in the viewport (see
-/// [`crate::raster::gradient`]); the bound subtracts `2 + width + height`. Per triangle,
-/// in place of a minimum kept per span by the short span path (about ten instructions per
-/// span).
+/// [`crate::raster::gradient`]); the bound subtracts `2 + width + height`.
 fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], viewport: Rect) -> u16 {
     let z_min = pos[0].2.min(pos[1].2).min(pos[2].2);
     let margin = viewport

@@ -56,13 +56,16 @@ fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
 /// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels). With
 /// `FLOOR`, a chunk nearer than the target's depth floor writes its depths without reading
 /// them; without, every chunk reads them (the short spans of small triangles: there the
-/// test cost more than it saved, see [`super::run_short`]). With `FLOOR` the chunk lowers
-/// `bound.lowest` to its nearest depth, so later draws may rely on the floor; without, the
-/// triangle lowers it once from its vertices' depths (`raster_shaded`), which saved the
-/// Cortex-M4F whole sphere 200.00 -> 197.40 instructions per pixel (M0+ 356.99 -> 355.43,
-/// RV32 219.61 -> 217.36).
+/// test cost more than it saved, see [`super::run_short`]). The chunk lowers `bound.lowest`
+/// to its nearest depth, so later draws may rely on the floor, unless `TRI_BOUND` (the short
+/// path inlined into the span writer, see [`super::span_short`]): then the triangle lowers
+/// it once from its vertices' depths (`raster_shaded`), which saved the Cortex-M4F whole
+/// sphere 200.00 -> 197.40 instructions per pixel (M0+ 356.99 -> 355.43, RV32 219.61 ->
+/// 217.36). For every draw it cost the cube 105.10 -> 107.25 (a face's nearest vertex can
+/// be far nearer than what a band of it writes), and per triangle, as a run-time switch,
+/// the sphere 197.40 -> 202.85.
 #[inline(always)]
-pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool>(
+pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_BOUND: bool>(
     z: i32,
     dz: i32,
     zc: &mut [u16],
@@ -87,9 +90,7 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool>(
     } else {
         depth_chunk::<true>(z, dz, zc) & low_bits(n)
     };
-    // Without `FLOOR` the triangle keeps the bound from its vertices' depths instead (see
-    // `raster_shaded`), not once per span.
-    if FLOOR && mask != 0 {
+    if !TRI_BOUND && mask != 0 {
         bound.lowest = bound.lowest.min(d_lo);
     }
     mask
@@ -155,8 +156,8 @@ pub(super) fn depth_of<const CLAMP: bool>(z: i32) -> i32 {
 pub(crate) struct DepthBound {
     /// Every stored depth is at least this when the span starts.
     pub floor: u16,
-    /// A lower bound of the depths the span's floor-testing chunks wrote (`u16::MAX` when
-    /// none; the short path's depths are bounded per triangle instead).
+    /// A lower bound of the depths the span wrote (`u16::MAX` when none), but for the
+    /// inlined short path's, which the triangle bounds once ([`super::span_short`]).
     pub lowest: u16,
 }
 

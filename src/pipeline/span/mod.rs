@@ -138,7 +138,7 @@ fn run_linear<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z
             (&mut [][..], &mut [][..])
         };
         zs = zrest;
-        let mask = chunk_mask::<S, Z, true>(z, dz, zc, n, bound);
+        let mask = chunk_mask::<S, Z, true, false>(z, dz, zc, n, bound);
         let mut off = 0usize;
         while off < n {
             let Some(p) = it.piece(s, n - off, spec) else {
@@ -238,7 +238,8 @@ fn run_short<
     let p = Linear::<S::Varyings, SUB>::only_piece(s, x, y, n as u32, spec);
     let dz = s.z.dx;
     let z = s.plane_at(&s.z, x, y);
-    let mask = chunk_mask::<S, Z, false>(z, dz, zrow, n, bound);
+    // The inlined copy leaves the depth floor to the triangle (see `inline_short_path`).
+    let mask = chunk_mask::<S, Z, false, INLINE>(z, dz, zrow, n, bound);
     if mask == 0 {
         return 0;
     }
@@ -348,7 +349,7 @@ fn run<S: Shader, C: TargetColor, D: DepthStage, I: Fill<S::Varyings>, const Z: 
         };
         zs = zrest;
         let mask = if depth {
-            chunk_mask::<S, true, true>(z, dz, zc, n, bound)
+            chunk_mask::<S, true, true, false>(z, dz, zc, n, bound)
         } else {
             low_bits(n)
         };
@@ -451,8 +452,7 @@ pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: Target
     out: &mut [C],
     depth: Option<&mut [u16]>,
 ) -> Option<u32> {
-    let small_triangles = matches!(P::KIND, ProjKind::Affine | ProjKind::Adaptive);
-    if !D::TEST || S::LOD || !small_triangles {
+    if !inline_short_path::<S, P, D>() {
         return None;
     }
     let affine = short_piece::<S, P>(ctx, out.len())?;
@@ -460,6 +460,14 @@ pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: Target
     Some(run_short_any::<S, C, D, true>(
         ctx, bound, x0, y, out, zrow, affine,
     ))
+}
+
+/// Whether the span writer inlines the short path ([`span_short`]): depth-tested draws
+/// without a per-pixel level of detail and with a projection for meshes of small triangles.
+/// Their short spans do not keep the depth floor's bound: the triangle takes it from its
+/// vertices' depths once (`raster_shaded`).
+pub(crate) const fn inline_short_path<S: Shader, P: ProjectionStage, D: DepthStage>() -> bool {
+    D::TEST && !S::LOD && matches!(P::KIND, ProjKind::Affine | ProjKind::Adaptive)
 }
 
 /// The span's depths when the draw tests depth. On ARMv6-M they are cut to the span's
