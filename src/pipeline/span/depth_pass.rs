@@ -61,9 +61,9 @@ fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
 /// path inlined into the span writer, see [`super::span_short`]): then the triangle lowers
 /// it once from its vertices' depths (`raster_shaded`), which saved the Cortex-M4F whole
 /// sphere 200.00 -> 197.40 instructions per pixel (M0+ 356.99 -> 355.43, RV32 219.61 ->
-/// 217.36). For every draw it cost the cube 105.10 -> 107.25 (a face's nearest vertex can
-/// be far nearer than what a band of it writes), and per triangle, as a run-time switch,
-/// the sphere 197.40 -> 202.85.
+/// 217.14). Taken for every draw's triangles, that bound cost the cube 105.10 -> 107.25 (a
+/// face's nearest vertex can be far nearer than what a band of it writes); chosen per
+/// triangle at run time (by height), it cost the sphere 197.40 -> 202.85.
 #[inline(always)]
 pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_BOUND: bool>(
     z: i32,
