@@ -66,6 +66,12 @@ pub enum Error {
         /// The first word that is not texel `index` and its right neighbour.
         index: usize,
     },
+    /// A mesh's face planes were not baked from its positions and indices (see
+    /// `Mesh::with_face_planes`).
+    FacePlaneMismatch {
+        /// The first triangle whose plane differs (or the count, when the lengths differ).
+        triangle: usize,
+    },
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -140,6 +146,10 @@ impl fmt::Display for Error {
             Error::FootprintMismatch { index } => write!(
                 f,
                 "footprint {index} is not the four texels around texel {index} (build footprints with footprint_texels or write_footprints)"
+            ),
+            Error::FacePlaneMismatch { triangle } => write!(
+                f,
+                "face plane {triangle} is not triangle {triangle}'s (bake face planes with face_planes or write_face_planes from the mesh's own positions and indices)"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

@@ -9,7 +9,8 @@
 //!   vertex cache and kept set-ups of any length: bins big enough (geometry once), ranges
 //!   big enough (re-projection per band), ranges too short (partial re-walk), none at all;
 //!
-//! must agree bit for bit, and the storage flags must say which rung was used.
+//! must agree bit for bit, and the storage flags must say which rung was used. The walker
+//! and the bands draw each mesh with or without baked face planes (`Mesh::with_face_planes`).
 
 mod common;
 
@@ -21,7 +22,8 @@ use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, KeptSetup, Projection, Shading};
 use fixel::prelude::Cull;
 use fixel::scene::{
-    draw_mesh, draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
+    draw_mesh, draw_mesh_walked, mesh_to_sink, write_face_planes, CachedVertex, DirectionalLight,
+    FacePlane, Mesh, MeshTransform,
 };
 use fixel::surface::Binned;
 use fixel::surface::{BandRange, BandRenderer, Frame};
@@ -46,6 +48,13 @@ impl MeshArrays {
             &self.indices,
         )
         .unwrap()
+    }
+
+    /// The mesh's baked face planes ([`Mesh::with_face_planes`]).
+    fn planes(&self) -> Vec<FacePlane> {
+        let mut planes = vec![FacePlane::ZERO; self.indices.len()];
+        write_face_planes(&self.positions, &self.indices, &mut planes).unwrap();
+        planes
     }
 }
 
@@ -120,6 +129,7 @@ proptest! {
         cache_len in prop_oneof![Just(0usize), 1usize..70, Just(100)],
         setups_len in prop_oneof![Just(0usize), 1usize..8, Just(64)],
         lit in any::<bool>(),
+        baked in (any::<bool>(), any::<bool>()),
     ) {
         let tex = noise_texture(8, 16, 5);
         let texels = host_tests::adapter::texels(&tex);
@@ -129,6 +139,11 @@ proptest! {
         let d1 = Draw::dynamic(modes.1, Some(t), vp).unwrap().with_flat_color(raw(0x07E0));
         let draws = [&d0, &d1];
         let (ma, mb) = (meshes.0.mesh(), meshes.1.mesh());
+        // The walker and the bands draw each mesh with or without baked face planes; the
+        // reference never.
+        let (planes_a, planes_b) = (meshes.0.planes(), meshes.1.planes());
+        let wa = if baked.0 { ma.with_face_planes(&planes_a).unwrap() } else { ma };
+        let wb = if baked.1 { mb.with_face_planes(&planes_b).unwrap() } else { mb };
         let (model_a, model_b) = (model(turn), model(turn.wrapping_mul(3)));
         let camera = demo::camera(20);
         let (xf_a, xf_b) = (
@@ -154,8 +169,8 @@ proptest! {
         let mut depth = vec![0u16; w * h];
         let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
         f.clear(clear);
-        let px_walk = draw_mesh_walked(&d0, &ma, &xf_a, light, &mut cache, &mut f).unwrap()
-            + draw_mesh_walked(&d1, &mb, &xf_b, light, &mut cache, &mut f).unwrap();
+        let px_walk = draw_mesh_walked(&d0, &wa, &xf_a, light, &mut cache, &mut f).unwrap()
+            + draw_mesh_walked(&d1, &wb, &xf_b, light, &mut cache, &mut f).unwrap();
         let walked: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
         prop_assert_eq!(px_walk, px_ref);
         prop_assert!(walked == expected, "walker differs from draw_mesh");
@@ -180,8 +195,8 @@ proptest! {
                 &mut ranges,
                 clear,
                 |sink| {
-                    let next = mesh_to_sink(&d0, 0, &ma, &xf_a, light, &mut cache, 0, sink);
-                    mesh_to_sink(&d1, 1, &mb, &xf_b, light, &mut cache, next, sink);
+                    let next = mesh_to_sink(&d0, 0, &wa, &xf_a, light, &mut cache, 0, sink);
+                    mesh_to_sink(&d1, 1, &wb, &xf_b, light, &mut cache, next, sink);
                 },
                 |b| {
                     let start = b.first_row() as usize * w;

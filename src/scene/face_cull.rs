@@ -39,6 +39,7 @@ use crate::geometry::Cull;
 use crate::math::div::{mul_wide, mul_wide_signed};
 use crate::math::{Mat4, Vec3};
 
+use super::face_planes::FacePlane;
 use super::Mesh;
 
 /// Magnitude bound of a model-space coordinate after the mesh's shift: `p >> shift` lies
@@ -46,15 +47,23 @@ use super::Mesh;
 const COORD_BITS: u32 = 13;
 
 /// The right shift that brings every coordinate of `positions` (I16F16 bits) into
-/// `-2^13..2^13`. One pass over the positions, in [`Mesh::new`].
-pub(super) fn coord_shift(positions: &[Vec3]) -> u8 {
+/// `-2^13..2^13`. One pass over the positions, in [`Mesh::new`] (and, at compile time, in
+/// [`face_planes`](super::face_planes)).
+pub(super) const fn coord_shift(positions: &[Vec3]) -> u8 {
     // `b ^ (b >> 31)` is |b| for b >= 0 and |b| - 1 below: b lies in -2^k..2^k when the
     // or of these is below 2^k.
-    let or = positions.iter().fold(0u32, |acc, p| {
-        [p.x, p.y, p.z]
-            .iter()
-            .fold(acc, |a, c| a | (c.to_bits() ^ (c.to_bits() >> 31)) as u32)
-    });
+    let mut or = 0u32;
+    let mut i = 0;
+    while i < positions.len() {
+        let p = &positions[i];
+        let c = [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
+        let mut k = 0;
+        while k < 3 {
+            or |= (c[k] ^ (c[k] >> 31)) as u32;
+            k += 1;
+        }
+        i += 1;
+    }
     let bits = u32::BITS - or.leading_zeros();
     bits.saturating_sub(COORD_BITS) as u8
 }
@@ -209,6 +218,33 @@ impl FaceCull {
         s < -(margin as i64)
     }
 
+    /// [`culls`](Self::culls) from the triangle's baked plane ([`FacePlane`]): the same
+    /// `s`, since `n . g + W (n . p0)` is `n . (g + W p0)` exactly (every product and sum
+    /// below 2^61 in `i64`), and the same margin, so the same decision. Five 32 x 32 -> 64-bit
+    /// products and no position, index or cross product.
+    #[inline(always)]
+    pub fn culls_plane(&self, f: &FacePlane) -> bool {
+        let s = mul_wide_signed(f.n[0], self.g[0])
+            + mul_wide_signed(f.n[1], self.g[1])
+            + mul_wide_signed(f.n[2], self.g[2]);
+        // W (n . p0) with n . p0 split at bit 16: |hi| < 2^30, 0 <= lo < 2^16.
+        let (hi, lo) = ((f.np0 >> 16) as i32, (f.np0 & 0xFFFF) as i32);
+        let wp = (mul_wide_signed(self.w, hi) << 16) + mul_wide_signed(self.w, lo);
+        let e = f.e;
+        let margin = 3 * mul_wide(4 * e + 2, self.d_err) + mul_wide(e * e, self.err6);
+        s + wp < -(margin as i64)
+    }
+
+    /// The test of triangle `t` (corners `idx`) of `mesh`: from its baked plane when the
+    /// mesh has them ([`Mesh::with_face_planes`]), else from its positions.
+    #[inline(always)]
+    pub fn culls_in(&self, mesh: &Mesh<'_>, t: usize, idx: &[u16; 3]) -> bool {
+        match mesh.face_planes.get(t) {
+            Some(f) => self.culls_plane(f),
+            None => self.culls(mesh.positions, idx),
+        }
+    }
+
     /// [`culls`](Self::culls) out of line, for the walker's second call site (a triangle
     /// whose corners were all prepared already, once the screen-space test kept it: about
     /// 300 of the benchmark sphere's 2,208 triangles), where a call costs less than the
@@ -268,7 +304,7 @@ impl<'m> FacingTest<'m> {
         self.mesh
             .indices()
             .get(t)
-            .is_some_and(|idx| self.test.culls(self.mesh.positions(), idx))
+            .is_some_and(|idx| self.test.culls_in(self.mesh, t, idx))
     }
 }
 

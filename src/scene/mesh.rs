@@ -8,6 +8,7 @@ use crate::surface::RenderTarget;
 use crate::Error;
 
 use super::face_cull::{camera_centre, FaceCull};
+use super::face_planes::{check_face_planes, FacePlane};
 use super::{Camera, DirectionalLight};
 
 /// An indexed triangle mesh borrowed from slices (flash or RAM).
@@ -24,6 +25,8 @@ pub struct Mesh<'a> {
     /// Right shift that brings every coordinate into `-2^13..2^13` (the model-space cull
     /// test's precision, see `face_cull`).
     pub(super) coord_shift: u8,
+    /// Baked face planes, one per triangle, or empty ([`Mesh::with_face_planes`]).
+    pub(super) face_planes: &'a [FacePlane],
 }
 
 impl<'a> Mesh<'a> {
@@ -67,7 +70,27 @@ impl<'a> Mesh<'a> {
             uvs,
             indices,
             coord_shift: super::face_cull::coord_shift(positions),
+            face_planes: &[],
         })
+    }
+
+    /// The mesh with its baked face planes ([`face_planes`](super::face_planes) at compile
+    /// time, [`write_face_planes`](super::write_face_planes) at run time): the model-space
+    /// back-face test of every mesh draw then reads one plane per triangle instead of its
+    /// three corners' positions, and culls exactly the same triangles. Checks every plane
+    /// against the positions once (about as much work as one frame's tests):
+    /// [`Error::FacePlaneMismatch`] names the first triangle whose plane is not its own.
+    pub fn with_face_planes(self, planes: &'a [FacePlane]) -> Result<Self, Error> {
+        check_face_planes(self.positions, self.indices, self.coord_shift, planes)?;
+        Ok(Mesh {
+            face_planes: planes,
+            ..self
+        })
+    }
+
+    /// The baked face planes ([`Mesh::with_face_planes`]); empty when there are none.
+    pub fn face_planes(&self) -> &'a [FacePlane] {
+        self.face_planes
     }
 
     /// Number of triangles.
@@ -243,8 +266,8 @@ fn facing_triangles<const CULLS: bool>(
         }
     }
     let cache = cache.as_deref();
-    for tri in mesh.indices {
-        if faces.is_some_and(|f| f.culls(mesh.positions, tri)) {
+    for (t, tri) in mesh.indices.iter().enumerate() {
+        if faces.is_some_and(|f| f.culls_in(mesh, t, tri)) {
             continue;
         }
         let v = |k: usize| match cache {

@@ -37,6 +37,7 @@
 
 mod camera;
 mod face_cull;
+mod face_planes;
 mod light;
 mod lit_mesh;
 mod mesh;
@@ -45,6 +46,7 @@ mod walk;
 
 pub use camera::Camera;
 pub use face_cull::FacingTest;
+pub use face_planes::{face_planes, write_face_planes, FacePlane};
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
 pub use mesh::{

@@ -254,6 +254,14 @@ pub fn walk_mesh<C: TargetColor>(
     // Triangles that surely face the culled way are dropped before their vertices are
     // prepared.
     let faces = FaceCull::new(eye, mesh, cull);
+    // With baked face planes the model-space test runs first for every triangle (reading
+    // one plane costs less than the cache lookups), and the position-based one never.
+    let planes = mesh.face_planes;
+    let (baked, faces) = if planes.is_empty() {
+        (None, faces)
+    } else {
+        (faces, None)
+    };
     let n = mesh.positions.len();
     // Without caller storage, four slots of the walker's own (the corners always have one).
     let mut spare = [CachedVertex::EMPTY; 4];
@@ -287,18 +295,25 @@ pub fn walk_mesh<C: TargetColor>(
             .next_wanted(from, first_id + end)
             .max(from)
             .wrapping_sub(first_id);
-        let Some(idx) = mesh.indices.get(t).filter(|_| t < end) else {
+        if t >= end {
             break;
-        };
+        }
         next = t + 1;
         let id = first_id + t;
+        let known = out.kept(id);
+        // With baked planes a culled triangle reads nothing else, not even its indices.
+        if !known && baked.is_some_and(|f| planes.get(t).is_some_and(|p| f.culls_plane(p))) {
+            continue;
+        }
+        let Some(idx) = mesh.indices.get(t) else {
+            break;
+        };
         let full = out.attributes();
         let lit = full && ctx.light.is_some();
         // A triangle not known to pass the cull: its three corners prepared in their cache
         // slots, and only what the outcode and cull tests read copied out (12 bytes per
         // corner, not 32): a culled triangle (half of a closed mesh) copies nothing more.
         let slots = idx.map(|i| usize::from(i) & mask);
-        let known = out.kept(id);
         if !known {
             // Corners not prepared yet: unless the triangle surely faces the culled way
             // (then they are not prepared for it), prepared now.

@@ -6,6 +6,7 @@ use fixel::demo::{
     MeshData, FINE_SPHERE_TRIANGLES, FINE_SPHERE_VERTICES, SPHERE_TRIANGLES, SPHERE_VERTICES,
 };
 use fixel::math::{Fx, Vec3};
+use fixel::scene::{face_planes, FacePlane};
 use fixel::texture::{MipTexture, Texture};
 
 /// Raw little-endian RGB565 bytes to colours, at compile time.
@@ -104,6 +105,12 @@ const fn uv(u: i32, v: i32) -> [Fx; 2] {
 /// The benchmark sphere (`fixel::demo::sphere()`), ~52 KB of flash.
 pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/sphere.rs"));
+
+/// The benchmark sphere's face planes (`fixel::scene::face_planes`, baked at compile time):
+/// 24 bytes per triangle, 53 KB of flash, linked by the sphere firmwares (bands and whole
+/// frame).
+pub static SPHERE_FACES: [FacePlane; SPHERE_TRIANGLES] =
+    face_planes(&SPHERE.positions, &SPHERE.indices);
 
 /// The geometry benchmark's fine sphere (`fixel::demo::fine_sphere()`: 5,265 vertices,
 /// 10,080 triangles), ~230 KB of flash: linked by the whole-layout `geometry` firmware only.

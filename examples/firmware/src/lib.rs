@@ -218,7 +218,10 @@ where
 {
     let mut buf = scenes::Whole::new();
     let frame = core::hint::black_box(0);
-    let Ok(mesh) = core::hint::black_box(&data::SPHERE).mesh() else {
+    let Ok(mesh) = core::hint::black_box(&data::SPHERE)
+        .mesh()
+        .and_then(|m| m.with_face_planes(&data::SPHERE_FACES))
+    else {
         return false;
     };
     report(name, |pause, resume| {

@@ -50,7 +50,7 @@ fn geometry_table(
     for key in &order {
         let unit = match key.1.as_str() {
             "transform" | "lighting" | "project" => "vertex",
-            "face" | "cull" | "walk" => "mesh triangle",
+            "face" | "cull" | "walk" | "face_baked" | "walk_baked" => "mesh triangle",
             "clip" => "crossing triangle",
             _ => "kept triangle",
         };

@@ -12,7 +12,8 @@
 //! `setup` (the raster set-up of every kept triangle, into a one-row target no triangle
 //! reaches, so no span is drawn) and `walk` (the renderer's whole geometry stage,
 //! `walk_mesh` with one cached vertex per mesh vertex: lighting only for vertices of kept
-//! triangles). The printed `pixels=` is the number of items of the stage (vertices or
+//! triangles). `face_baked` and `walk_baked` are `face` and `walk` with the mesh's face
+//! planes baked (`Mesh::with_face_planes`): the same results. The printed `pixels=` is the number of items of the stage (vertices or
 //! triangles), so a count divided by it is the cost per item.
 //!
 //! Needs the whole-frame memory layout (the fine sphere is ~230 KB of flash and the
@@ -25,7 +26,8 @@ use fixel::demo::{self, MeshData};
 use fixel::geometry::{clip_and_project, keeps, prepare, ClipVertex, ScreenTriangle, ScreenVertex};
 use fixel::prelude::*;
 use fixel::scene::{
-    vertex_intensity, walk_mesh, CachedVertex, DirectionalLight, MeshTransform, TriangleOut,
+    vertex_intensity, walk_mesh, write_face_planes, CachedVertex, DirectionalLight, FacePlane,
+    MeshTransform, TriangleOut,
 };
 use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln, report_begin, scenes};
 
@@ -39,6 +41,7 @@ struct Scratch {
     kept: [u16; MAXT],
     crossing: [u16; MAXT],
     cache: [CachedVertex; MAXV],
+    planes: [FacePlane; MAXT],
 }
 
 /// Counts the walker's screen triangles.
@@ -196,6 +199,36 @@ fn stages<const V: usize, const T: usize>(
         );
         (t as u32, c.1 ^ c.0)
     });
+    // The same two stages with the mesh's face planes baked (here at run time, outside the
+    // regions; a firmware bakes them into flash with `face_planes`): the same culls and
+    // triangles (the same checksums), from one plane per triangle.
+    let planes = &mut s.planes[..t];
+    if write_face_planes(&m.positions, &m.indices, planes).is_err() {
+        return false;
+    }
+    let Ok(baked) = mesh.with_face_planes(planes) else {
+        return false;
+    };
+    stage(scene, "face_baked", || {
+        let Some(test) = transform.facing_test(&baked, Cull::Back) else {
+            return (t as u32, 0);
+        };
+        let culled = (0..t).filter(|&k| test.culls(k)).count();
+        (t as u32, culled as u32)
+    });
+    stage(scene, "walk_baked", || {
+        let mut c = Count(0, 0);
+        walk_mesh(
+            &draw,
+            &baked,
+            &MeshTransform::new(model, &camera),
+            Some(&light),
+            &mut s.cache,
+            0,
+            &mut c,
+        );
+        (t as u32, c.1 ^ c.0)
+    });
     true
 }
 
@@ -206,6 +239,7 @@ fn run() -> bool {
         kept: [0; MAXT],
         crossing: [0; MAXT],
         cache: [CachedVertex::default(); MAXV],
+        planes: [FacePlane::ZERO; MAXT],
     };
     let model = demo::sphere_model(0);
     report_begin();
