@@ -129,6 +129,16 @@ pub(super) struct FaceCull {
     /// Six times the bound on the error of `g' + W' p` against the exact value, in its
     /// units (below 2^20).
     err6: u32,
+    /// The margin of the mesh's largest baked edge bound (`Mesh::face_e_max`; 0 without
+    /// face planes): no triangle's margin is larger.
+    margin_max: u64,
+}
+
+/// The error margin of a triangle whose edge components are below `e` (`<= 2^14`), from
+/// the test's bounds `d_err` and `err6` (see [`FaceCull::culls`]); below 2^51.
+#[inline(always)]
+fn margin(e: u32, d_err: u32, err6: u32) -> u64 {
+    3 * mul_wide(4 * e + 2, d_err) + mul_wide(e * e, err6)
 }
 
 impl FaceCull {
@@ -171,12 +181,14 @@ impl FaceCull {
         let err = (2 << COORD_BITS) + w.unsigned_abs() + 4;
         let g_max = g.iter().map(|v| v.unsigned_abs()).max().unwrap_or(0);
         let d_max = g_max + (w.unsigned_abs() << COORD_BITS);
+        let (d_err, err6) = (d_max + err, 6 * err);
         Some(FaceCull {
             shift,
             g,
             w,
-            d_err: d_max + err,
-            err6: 6 * err,
+            d_err,
+            err6,
+            margin_max: margin(mesh.face_e_max, d_err, err6),
         })
     }
 
@@ -214,14 +226,14 @@ impl FaceCull {
         let e = or + 1;
         // n's error per component is below 2 (|e1| + |e2|) + 2 <= 4 e + 2, |n| <= 2 e^2:
         // |s - exact| <= 3 (4 e + 2) (|d| + err) + 3 (2 e^2) err (below 2^51).
-        let margin = 3 * mul_wide(4 * e + 2, self.d_err) + mul_wide(e * e, self.err6);
-        s < -(margin as i64)
+        s < -(margin(e, self.d_err, self.err6) as i64)
     }
 
     /// [`culls`](Self::culls) from the triangle's baked plane ([`FacePlane`]): the same
     /// `s`, since `n . g + W (n . p0)` is `n . (g + W p0)` exactly (every product and sum
     /// below 2^61 in `i64`), and the same margin, so the same decision. Five 32 x 32 -> 64-bit
-    /// products and no position, index or cross product.
+    /// products and no position, index or cross product. `f` must be a plane of the mesh
+    /// the test was built for (its margins are bounded by that mesh's largest).
     #[inline(always)]
     pub fn culls_plane(&self, f: &FacePlane) -> bool {
         let s = mul_wide_signed(f.n[0], self.g[0])
@@ -230,9 +242,14 @@ impl FaceCull {
         // W (n . p0) with n . p0 split at bit 16: |hi| < 2^30, 0 <= lo < 2^16.
         let (hi, lo) = ((f.np0 >> 16) as i32, (f.np0 & 0xFFFF) as i32);
         let wp = (mul_wide_signed(self.w, hi) << 16) + mul_wide_signed(self.w, lo);
-        let e = f.e;
-        let margin = 3 * mul_wide(4 * e + 2, self.d_err) + mul_wide(e * e, self.err6);
-        s + wp < -(margin as i64)
+        let s = s + wp;
+        // The margin grows with `e`: below minus the mesh's largest, or not negative, the
+        // triangle's own margin cannot change the answer (most of a sphere's back faces are
+        // far below).
+        if s < -(self.margin_max as i64) {
+            return true;
+        }
+        s < 0 && s < -(margin(f.e, self.d_err, self.err6) as i64)
     }
 
     /// The test of triangle `t` (corners `idx`) of `mesh`: from its baked plane when the

@@ -163,27 +163,28 @@ pub fn write_face_planes(
 }
 
 /// Checks that `planes` are the face planes of the mesh `positions`, `indices` cut by
-/// `shift` (the mesh's): the first that is not is [`Error::FacePlaneMismatch`].
+/// `shift` (the mesh's): the first that is not is [`Error::FacePlaneMismatch`]. Returns the
+/// largest edge bound `e` of the planes (the scale of the test's largest margin).
 pub(super) fn check_face_planes(
     positions: &[Vec3],
     indices: &[[u16; 3]],
     shift: u8,
     planes: &[FacePlane],
-) -> Result<(), Error> {
+) -> Result<u32, Error> {
     if planes.len() != indices.len() {
         return Err(Error::FacePlaneMismatch {
             triangle: planes.len().min(indices.len()),
         });
     }
     let shift = u32::from(shift);
-    match indices
-        .iter()
-        .zip(planes)
-        .position(|(idx, p)| FacePlane::of_triangle(positions, idx, shift) != Some(*p))
-    {
-        Some(triangle) => Err(Error::FacePlaneMismatch { triangle }),
-        None => Ok(()),
+    let mut e_max = 0;
+    for (triangle, (idx, p)) in indices.iter().zip(planes).enumerate() {
+        if FacePlane::of_triangle(positions, idx, shift) != Some(*p) {
+            return Err(Error::FacePlaneMismatch { triangle });
+        }
+        e_max = e_max.max(p.e);
     }
+    Ok(e_max)
 }
 
 #[cfg(test)]
@@ -248,7 +249,8 @@ mod tests {
             let mvp = camera.projection.mul(&camera.view.mul(&model));
             let eye = camera_centre(&mvp);
             for cull in [Cull::Back, Cull::Front] {
-                let test = FaceCull::new(&eye, &mesh, cull).unwrap();
+                // Built for the baked mesh: its largest margin bounds every plane's.
+                let test = FaceCull::new(&eye, &baked, cull).unwrap();
                 for (t, (idx, p)) in indices.iter().zip(&planes).enumerate() {
                     let by_positions = test.culls(&positions, idx);
                     assert_eq!(

@@ -27,6 +27,9 @@ pub struct Mesh<'a> {
     pub(super) coord_shift: u8,
     /// Baked face planes, one per triangle, or empty ([`Mesh::with_face_planes`]).
     pub(super) face_planes: &'a [FacePlane],
+    /// The largest edge bound `e` of the face planes (0 without them): the scale of the
+    /// back-face test's largest error margin over the mesh.
+    pub(super) face_e_max: u32,
 }
 
 impl<'a> Mesh<'a> {
@@ -71,6 +74,7 @@ impl<'a> Mesh<'a> {
             indices,
             coord_shift: super::face_cull::coord_shift(positions),
             face_planes: &[],
+            face_e_max: 0,
         })
     }
 
@@ -81,9 +85,10 @@ impl<'a> Mesh<'a> {
     /// against the positions once (about as much work as one frame's tests):
     /// [`Error::FacePlaneMismatch`] names the first triangle whose plane is not its own.
     pub fn with_face_planes(self, planes: &'a [FacePlane]) -> Result<Self, Error> {
-        check_face_planes(self.positions, self.indices, self.coord_shift, planes)?;
+        let e_max = check_face_planes(self.positions, self.indices, self.coord_shift, planes)?;
         Ok(Mesh {
             face_planes: planes,
+            face_e_max: e_max,
             ..self
         })
     }
