@@ -129,9 +129,6 @@ pub(super) struct FaceCull {
     /// Six times the bound on the error of `g' + W' p` against the exact value, in its
     /// units (below 2^20).
     err6: u32,
-    /// The margin of the mesh's largest baked edge bound (`Mesh::face_e_max`; 0 without
-    /// face planes): no triangle's margin is larger.
-    margin_max: u64,
 }
 
 /// The error margin of a triangle whose edge components are below `e` (`<= 2^14`), from
@@ -188,7 +185,6 @@ impl FaceCull {
             w,
             d_err,
             err6,
-            margin_max: margin(mesh.face_e_max, d_err, err6),
         })
     }
 
@@ -232,10 +228,10 @@ impl FaceCull {
     /// [`culls`](Self::culls) from the triangle's baked plane ([`FacePlane`]): the same
     /// `s`, since `n . g + W (n . p0)` is `n . (g + W p0)` exactly (every product and sum
     /// below 2^61 in `i64`), and the same margin, so the same decision. Five 32 x 32 -> 64-bit
-    /// products and no position, index or cross product. `f` must be a plane of the mesh
-    /// the test was built for (its margins are bounded by that mesh's largest).
+    /// products and no position, index or cross product. `margin_max` is
+    /// [`margin_max`](Self::margin_max) of the mesh `f` belongs to.
     #[inline(always)]
-    pub fn culls_plane(&self, f: &FacePlane) -> bool {
+    pub fn culls_plane(&self, f: &FacePlane, margin_max: u64) -> bool {
         let s = mul_wide_signed(f.n[0], self.g[0])
             + mul_wide_signed(f.n[1], self.g[1])
             + mul_wide_signed(f.n[2], self.g[2]);
@@ -246,10 +242,18 @@ impl FaceCull {
         // The margin grows with `e`: below minus the mesh's largest, or not negative, the
         // triangle's own margin cannot change the answer (most of a sphere's back faces are
         // far below).
-        if s < -(self.margin_max as i64) {
+        if s < -(margin_max as i64) {
             return true;
         }
         s < 0 && s < -(margin(f.e, self.d_err, self.err6) as i64)
+    }
+
+    /// The largest margin of `mesh`'s baked face planes (from their largest edge bound,
+    /// `Mesh::face_e_max`): no triangle's margin is larger. Kept apart from the test, so
+    /// that meshes without planes carry none of it.
+    #[inline(always)]
+    pub fn margin_max(&self, mesh: &Mesh<'_>) -> u64 {
+        margin(mesh.face_e_max, self.d_err, self.err6)
     }
 
     /// The test of triangle `t` (corners `idx`) of `mesh`: from its baked plane when the
@@ -257,7 +261,7 @@ impl FaceCull {
     #[inline(always)]
     pub fn culls_in(&self, mesh: &Mesh<'_>, t: usize, idx: &[u16; 3]) -> bool {
         match mesh.face_planes.get(t) {
-            Some(f) => self.culls_plane(f),
+            Some(f) => self.culls_plane(f, self.margin_max(mesh)),
             None => self.culls(mesh.positions, idx),
         }
     }

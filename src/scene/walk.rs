@@ -260,7 +260,7 @@ pub fn walk_mesh<C: TargetColor>(
     let (baked, faces) = if planes.is_empty() {
         (None, faces)
     } else {
-        (faces, None)
+        (faces.map(|f| (f, f.margin_max(mesh))), None)
     };
     let n = mesh.positions.len();
     // Without caller storage, four slots of the walker's own (the corners always have one).
@@ -302,7 +302,8 @@ pub fn walk_mesh<C: TargetColor>(
         let id = first_id + t;
         let known = out.kept(id);
         // With baked planes a culled triangle reads nothing else, not even its indices.
-        if !known && baked.is_some_and(|f| planes.get(t).is_some_and(|p| f.culls_plane(p))) {
+        if !known && baked.is_some_and(|(f, m)| planes.get(t).is_some_and(|p| f.culls_plane(p, m)))
+        {
             continue;
         }
         let Some(idx) = mesh.indices.get(t) else {
