@@ -329,11 +329,23 @@ impl<'m> FacingTest<'m> {
     }
 }
 
+/// The tests' camera: 50 degrees, 4:3, depth 0.5 to 200.
+#[cfg(test)]
+pub(super) fn test_camera() -> super::Camera {
+    use crate::math::{Angle, Fx};
+    super::Camera::perspective(
+        Angle::from_degrees(Fx::from_num(50)),
+        Fx::from_num(4) / 3,
+        Fx::from_num(0.5),
+        Fx::from_num(200),
+    )
+    .unwrap_or_else(|e| panic!("the test camera: {e}"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::math::{Angle, Fx};
-    use crate::scene::Camera;
     use crate::test_rng::Rng;
 
     /// `det[A P0, A P1, A P2]` exactly, `A` the rows x, y, w of `mvp`, `P = (p, 1)`.
@@ -409,13 +421,7 @@ mod tests {
         for i in 0..20_000u32 {
             let scale = [0.01f32, 0.5, 2.0, 9.0, 40.0][i as usize % 5];
             let turn = Angle((rng.next() >> 48) as u16);
-            let camera = Camera::perspective(
-                Angle::from_degrees(Fx::from_num(50)),
-                Fx::from_num(4) / 3,
-                Fx::from_num(0.5),
-                Fx::from_num(200),
-            )
-            .unwrap();
+            let camera = test_camera();
             let s = Fx::from_num(1.0 / scale.max(1.0));
             let model = Mat4::translation(Vec3::new(
                 fx_of(&mut rng, 1.0),

@@ -193,8 +193,8 @@ mod tests {
     use super::*;
     use crate::geometry::Cull;
     use crate::math::{Angle, Fx, Mat4};
-    use crate::scene::face_cull::{camera_centre, FaceCull};
-    use crate::scene::{Camera, Mesh};
+    use crate::scene::face_cull::{camera_centre, test_camera, FaceCull};
+    use crate::scene::Mesh;
     use crate::test_rng::Rng;
     use std::vec::Vec;
 
@@ -208,13 +208,7 @@ mod tests {
     #[test]
     fn the_plane_test_is_the_position_test() {
         let mut rng = Rng(0xface_91a7);
-        let camera = Camera::perspective(
-            Angle::from_degrees(Fx::from_num(50)),
-            Fx::from_num(4) / 3,
-            Fx::from_num(0.5),
-            Fx::from_num(200),
-        )
-        .unwrap();
+        let camera = test_camera();
         let (mut culled, mut total) = (0usize, 0usize);
         for round in 0..400u32 {
             let scale = [0.001f64, 0.3, 2.0, 40.0, 900.0, 30_000.0][round as usize % 6];
