@@ -202,24 +202,13 @@ impl FaceCull {
             return false;
         };
         // |p| <= 2^13: the edges and the cross product fit i32.
-        let e1 = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
-        let e2 = [p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]];
-        let n = [
-            e1[1] * e2[2] - e1[2] * e2[1],
-            e1[2] * e2[0] - e1[0] * e2[2],
-            e1[0] * e2[1] - e1[1] * e2[0],
-        ];
+        let (edges, n) = super::face_planes::edges_and_normal([p0, p1, p2]);
         // |g'| <= 2^29, |W' p| <= 2^29.
         let d = [0, 1, 2].map(|i| self.g[i] + self.w * p0[i]);
         // 32 x 32 -> 64-bit products (no library call on Cortex-M0+).
         let s = (0..3).fold(0i64, |acc, i| acc + mul_wide_signed(n[i], d[i]));
-        // An upper bound on every |edge component| (below 2^14): the or of the (one's
-        // complement) magnitudes, plus one.
-        let or = e1
-            .iter()
-            .chain(e2.iter())
-            .fold(0u32, |a, &c| a | (c ^ (c >> 31)) as u32);
-        let e = or + 1;
+        // An upper bound on every |edge component| (below 2^14).
+        let e = super::face_planes::edge_bound(edges);
         // n's error per component is below 2 (|e1| + |e2|) + 2 <= 4 e + 2, |n| <= 2 e^2:
         // |s - exact| <= 3 (4 e + 2) (|d| + err) + 3 (2 e^2) err (below 2^51).
         s < -(margin(e, self.d_err, self.err6) as i64)

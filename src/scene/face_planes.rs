@@ -71,23 +71,12 @@ impl FacePlane {
     /// `-2^13..2^13`, as `face_cull` cuts them): the cross product and edge bound of
     /// `FaceCull::culls`, bit for bit.
     pub(super) const fn of(p: [[i32; 3]; 3]) -> FacePlane {
-        let [p0, p1, p2] = p;
-        let e1 = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
-        let e2 = [p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]];
-        let n = [
-            e1[1] * e2[2] - e1[2] * e2[1],
-            e1[2] * e2[0] - e1[0] * e2[2],
-            e1[0] * e2[1] - e1[1] * e2[0],
-        ];
-        let mut or = 0u32;
-        let mut k = 0;
-        while k < 3 {
-            or |= (e1[k] ^ (e1[k] >> 31)) as u32 | (e2[k] ^ (e2[k] >> 31)) as u32;
-            k += 1;
-        }
+        let p0 = p[0];
+        let (edges, n) = edges_and_normal(p);
+        let e = edge_bound(edges);
         let np0 =
             n[0] as i64 * p0[0] as i64 + n[1] as i64 * p0[1] as i64 + n[2] as i64 * p0[2] as i64;
-        FacePlane { np0, n, e: or + 1 }
+        FacePlane { np0, n, e }
     }
 
     /// The plane of triangle `idx` of `positions` cut by `shift`, or `None` for an index out
@@ -185,6 +174,38 @@ pub(super) fn check_face_planes(
         e_max = e_max.max(p.e);
     }
     Ok(e_max)
+}
+
+/// The edges `(p1 - p0, p2 - p0)` of a triangle's cut model-space corners `p` and their
+/// cross product `n`, the face test's normal: shared by the baked plane ([`FacePlane`])
+/// and the test from positions ([`FaceCull::culls`](super::FaceCull::culls)). Corners
+/// within `2^13` in magnitude (the cut [`FaceCull`](super::FaceCull) applies): the edges
+/// and `n` fit `i32`.
+#[inline(always)]
+pub(super) const fn edges_and_normal(p: [[i32; 3]; 3]) -> ([[i32; 3]; 2], [i32; 3]) {
+    let [p0, p1, p2] = p;
+    let e1 = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+    let e2 = [p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]];
+    let n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
+    ([e1, e2], n)
+}
+
+/// An upper bound `e` on every edge component's magnitude: the or of their one's
+/// complement magnitudes, plus one (the error margin's input, see
+/// [`FaceCull::culls`](super::FaceCull::culls)).
+#[inline(always)]
+pub(super) const fn edge_bound(e: [[i32; 3]; 2]) -> u32 {
+    let mut or = 0u32;
+    let mut k = 0;
+    while k < 3 {
+        or |= (e[0][k] ^ (e[0][k] >> 31)) as u32 | (e[1][k] ^ (e[1][k] >> 31)) as u32;
+        k += 1;
+    }
+    or + 1
 }
 
 #[cfg(test)]
