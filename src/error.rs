@@ -72,6 +72,14 @@ pub enum Error {
         /// The first triangle whose plane differs (or the count, when the lengths differ).
         triangle: usize,
     },
+    /// A texture is not the size a sampler was built for (see
+    /// `texture::BilinearFootprintSized`).
+    TextureSizeMismatch {
+        /// The sampler's size, `(width, height)` in texels.
+        expected: (u32, u32),
+        /// The texture's level 0.
+        actual: (u32, u32),
+    },
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -150,6 +158,11 @@ impl fmt::Display for Error {
             Error::FacePlaneMismatch { triangle } => write!(
                 f,
                 "face plane {triangle} is not triangle {triangle}'s (bake face planes with face_planes or write_face_planes from the mesh's own positions and indices)"
+            ),
+            Error::TextureSizeMismatch { expected, actual } => write!(
+                f,
+                "texture is {}x{} texels but the sampler is built for {}x{}",
+                actual.0, actual.1, expected.0, expected.1
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

@@ -157,7 +157,10 @@
 //! holds each texel's bilinear footprint ([`texture::MipTexture::with_footprints`], 8 bytes
 //! per texel more, built in flash by [`texture::footprint_texels`]): one 64-bit load per
 //! sample instead of four texel loads. Only a chain that is given footprints holds them, and
-//! a draw that does not sample them does not link them.
+//! a draw that does not sample them does not link them. [`texture::BilinearFootprintSized`]
+//! does the same for a texture whose size is fixed at compile time (type parameters), with
+//! the footprint's index from instruction immediates; a chain of another size is refused
+//! ([`Error::TextureSizeMismatch`]).
 //!
 //! ## Robustness
 //!

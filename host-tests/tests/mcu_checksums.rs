@@ -191,6 +191,22 @@ fn mcu_frames() {
         "sphere: footprints differ from plain bilinear"
     );
     print("whole_sphere_footprint", &wf);
+    // The same with the texture's size fixed at compile time: the same pixels.
+    let ws = scenes::sphere_mip_as::<scenes::LitSphereSized, 0, 0, 0, 0>(
+        WholeTarget::Whole(&mut whole_buf),
+        fp,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    assert_eq!(
+        (ws.checksum, ws.stats.pixels),
+        (wf.checksum, wf.stats.pixels),
+        "sphere: the sized footprints differ from the footprints"
+    );
+    print("whole_sphere_sized", &ws);
 
     // Anti-aliasing (rotated grid through 4-row bands) and transparency.
     let t128b = texture(128, 128);

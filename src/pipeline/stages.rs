@@ -11,9 +11,9 @@ use core::marker::PhantomData;
 use crate::geometry::Cull;
 use crate::shading::{self, builtin::Classic, TexBinding};
 use crate::texture::{
-    Bilinear, BilinearFast, BilinearFootprint, ClampToBorder, ClampToEdge, DynMip, DynWrap, Filter,
-    Lod, MipFilter, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler, TexSampler, Wrap,
-    WrapMode,
+    Bilinear, BilinearFast, BilinearFootprint, BilinearFootprintSized, ClampToBorder, ClampToEdge,
+    DynMip, DynWrap, Filter, Lod, MipFilter, Mipmapped, MirroredRepeat, Nearest, Repeat, Sampler,
+    TexSampler, Wrap, WrapMode,
 };
 
 /// How texture coordinates (and colours) are interpolated across a triangle.
@@ -419,6 +419,11 @@ impl FromMode for Bilinear {
 impl FromMode for BilinearFootprint {
     fn from_mode(_: &DrawMode) -> Self {
         BilinearFootprint
+    }
+}
+impl<const LOG2_W: u32, const LOG2_H: u32> FromMode for BilinearFootprintSized<LOG2_W, LOG2_H> {
+    fn from_mode(_: &DrawMode) -> Self {
+        BilinearFootprintSized
     }
 }
 impl<Min: Sampler, Mag: Sampler, const LB: bool> FromMode for Mipmapped<Min, Mag, LB> {

@@ -49,8 +49,11 @@ pub struct TexBinding<'a, F, WU, WV> {
 /// Refuses a sampler that reads footprints ([`TexSampler::FOOTPRINTS`]) on a chain without
 /// them ([`MipTexture::with_footprints`]), or one that mipmaps (levels past 0 have none).
 ///
+/// A sampler built for one texture size ([`TexSampler::LEVEL0_SIZE`]) is refused on a
+/// chain of another.
+///
 /// # Errors
-/// [`Error::BadMode`], saying which.
+/// [`Error::BadMode`], saying which; [`Error::TextureSizeMismatch`] for the size.
 pub fn check_footprints_bound<F: TexSampler>(chain: &MipTexture<'_>) -> Result<(), Error> {
     if !F::FOOTPRINTS {
         return Ok(());
@@ -65,7 +68,10 @@ pub fn check_footprints_bound<F: TexSampler>(chain: &MipTexture<'_>) -> Result<(
             "BilinearFootprint needs a texture with footprints (MipTexture::with_footprints)",
         ));
     }
-    Ok(())
+    match F::LEVEL0_SIZE {
+        Some(size) => crate::texture::check_level0_size(chain, size),
+        None => Ok(()),
+    }
 }
 
 /// Per-triangle data of one texture binding.

@@ -4,11 +4,13 @@
 //! first (`v = 0` at row 0), texel centres at `i + 0.5`, sampling coordinates are raw I16F16
 //! texel units (`i32`, 65536 = one texel). Sides are powers of two, 1..=4096. Wrap modes and
 //! filters are zero-sized markers ([`Repeat`], [`MirroredRepeat`], [`ClampToEdge`],
-//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearFootprint`]) so the per-pixel path is monomorphised;
+//! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearFootprint`],
+//! [`BilinearFootprintSized`]) so the per-pixel path is monomorphised;
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
 //! raw RGB565 `u16`. See each submodule for the exact formulas.
 
 mod footprint;
+mod footprint_sized;
 mod height;
 pub(crate) mod mip;
 pub(crate) mod sample;
@@ -17,6 +19,8 @@ mod texture;
 mod wrap;
 
 pub use footprint::{footprint_texels, write_footprints, BilinearFootprint};
+pub(crate) use footprint_sized::check_level0_size;
+pub use footprint_sized::BilinearFootprintSized;
 pub use height::{generate_height_mips, HeightMap};
 pub use mip::{
     chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,

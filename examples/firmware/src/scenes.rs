@@ -18,7 +18,9 @@ use fixel::scene::{
 };
 use fixel::surface::BandRange;
 use fixel::surface::{BandStats, Binned};
-use fixel::texture::{Bilinear, BilinearFootprint, MipTexture, Nearest, Repeat};
+use fixel::texture::{
+    Bilinear, BilinearFootprint, BilinearFootprintSized, MipTexture, Nearest, Repeat,
+};
 
 /// Frame size of every scene.
 pub const W: u32 = demo::WIDTH;
@@ -74,6 +76,11 @@ pub type LitSphereAdaptive =
 /// sphere's texture): `whole_sphere_footprint`.
 pub type LitSphereFootprint =
     Pipeline<Adaptive, BilinearFootprint, Repeat, Repeat, ModulateIntensity, DepthLess>;
+/// [`LitSphereFootprint`] with the texture's size (256 x 128) fixed at compile time
+/// (`BilinearFootprintSized`: the same pixels, the footprint's index from immediates; a
+/// chain of another size is refused when the draw is built): `whole_sphere_sized`.
+pub type LitSphereSized =
+    Pipeline<Adaptive, BilinearFootprintSized<8, 7>, Repeat, Repeat, ModulateIntensity, DepthLess>;
 /// `floor` with nearest filtering (unlit).
 pub type FloorNearest = Pipeline<SubdividedBy<6>, Nearest, Repeat, Repeat, Replace, DepthLess>;
 /// `floor` with bilinear filtering (unlit).

@@ -17,6 +17,11 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     /// True when the sampler reads level 0's footprints ([`MipTexture::with_footprints`]):
     /// bindings and draws refuse a chain without them.
     const FOOTPRINTS: bool = false;
+    /// Level 0's size in texels, `(width, height)`, when the sampler is built for one size
+    /// ([`BilinearFootprintSized`](crate::texture::BilinearFootprintSized)): bindings and
+    /// draws refuse a chain of another size
+    /// ([`Error::TextureSizeMismatch`](crate::Error::TextureSizeMismatch)).
+    const LEVEL0_SIZE: Option<(u32, u32)> = None;
     /// Samples at level-0 texel coordinates `u, v` (I16F16 bits) with `lambda` (Q8.8,
     /// already biased and clamped; ignored unless `LOD`).
     fn sample_mip<WU: WrapMode, WV: WrapMode>(

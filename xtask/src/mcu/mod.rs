@@ -100,11 +100,12 @@ const SCENES: [&str; 20] = [
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers; and `bump`
 /// (per-pixel lit, bump-mapped sphere), whose per-pixel shader has no band path yet.
-const WHOLE_SCENES: [&str; 7] = [
+const WHOLE_SCENES: [&str; 8] = [
     "whole_cube",
     "whole_sphere",
     "whole_sphere_adaptive",
     "whole_sphere_footprint",
+    "whole_sphere_sized",
     "whole_floor",
     "whole_floor_bilinear",
     "bump",

@@ -1,0 +1,328 @@
+//! [`BilinearFootprintSized`]: [`BilinearFootprint`] for a texture whose size is fixed at
+//! compile time.
+//!
+//! [`BilinearFootprint`] finds a sample's footprint from the texture's width, read at run
+//! time: a shift by its base-2 logarithm, a mask of its columns and a mask of the
+//! footprints' count. In the span loop these are three values more to keep, which on a
+//! 13-register Cortex-M core are reloaded from the stack at every pixel. Here the width
+//! and height are type parameters (`LOG2_W`, `LOG2_H`, base-2 logarithms of the sides in
+//! texels), so the shift and masks are instruction immediates.
+//!
+//! The pixels are [`BilinearFootprint`]'s, bit for bit, on a texture of that size (the same
+//! index, weights and blend; tested). A binding or a draw refuses a chain of another size
+//! with [`Error::TextureSizeMismatch`](crate::Error::TextureSizeMismatch) (or whose
+//! footprints are missing, as for [`BilinearFootprint`]), so a wrong texture is an error
+//! where it enters, never a wrong image.
+//!
+//! Cost, per drawn pixel on the benchmark sphere drawn whole (`whole_sphere_footprint`, a
+//! 256 x 128 texture): Cortex-M4F 190.78 -> 186.90 instructions.
+//!
+//! ```
+//! use fixel::shading::TexBinding;
+//! use fixel::texture::{footprint_texels, BilinearFootprint, BilinearFootprintSized};
+//! use fixel::texture::{MipTexture, Repeat, Texture};
+//! use fixel::{Error, Rgb565};
+//!
+//! const RAW: [u16; 8] = [0xF800, 0x07E0, 0x001F, 0xFFFF, 0x0000, 0x8410, 0x1234, 0xFEDC];
+//! static TEXELS: [Rgb565; 8] = [Rgb565::new(0, 0, 0); 8];
+//! static FOOTPRINTS: [u64; 8] = footprint_texels(&RAW, 4);
+//! // 4 x 2 texels: `LOG2_W = 2`, `LOG2_H = 1`.
+//! static TEX: Texture<'static> = Texture::from_static(&TEXELS, 4, 2);
+//! static CHAIN: MipTexture<'static> = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);
+//!
+//! type Sized4x2 = BilinearFootprintSized<2, 1>;
+//! // The same pixel as `BilinearFootprint` anywhere on the texture.
+//! for (u, v) in [(0, 0), (0x1_8000, 0x8000), (0x3_C123, 0x1_7F00), (-0x5000, 0x2_4000)] {
+//!     assert_eq!(
+//!         Sized4x2::sample(CHAIN.footprints(), Repeat, Repeat, &TEX, u, v),
+//!         BilinearFootprint::sample(&TEX, CHAIN.footprints(), Repeat, Repeat, u, v),
+//!     );
+//! }
+//! // A binding checks the size.
+//! assert!(TexBinding::new(&CHAIN, Sized4x2::default(), Repeat, Repeat, Default::default()).is_ok());
+//! let wrong = TexBinding::new(&CHAIN, BilinearFootprintSized::<3, 1>, Repeat, Repeat, Default::default());
+//! assert_eq!(
+//!     wrong.err(),
+//!     Some(Error::TextureSizeMismatch { expected: (8, 2), actual: (4, 2) })
+//! );
+//! ```
+
+use super::footprint::BilinearFootprint;
+use super::mip::{MipTexture, TexSampler};
+use super::sample::{blend_rows_q8, Bilinear, Sampler};
+use super::texture::Texture;
+use super::wrap::WrapMode;
+use crate::Error;
+
+/// [`BilinearFootprint`] for a level 0 of `2^LOG2_W x 2^LOG2_H` texels, fixed at compile
+/// time: the same pixels, with the footprint's index from immediates (see the
+/// [module docs](self)).
+///
+/// Bindings and draws refuse a chain of another size
+/// ([`Error::TextureSizeMismatch`](crate::Error::TextureSizeMismatch)) or without footprints
+/// ([`Error::BadMode`](crate::Error::BadMode)). Other wraps than repeat on both axes read
+/// the texels as [`Bilinear`] does, as [`BilinearFootprint`] does.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BilinearFootprintSized<const LOG2_W: u32, const LOG2_H: u32>;
+
+/// `2^k`, or 0 when it does not fit `u32` (such a size matches no texture).
+const fn pow2(k: u32) -> u32 {
+    match 1u32.checked_shl(k) {
+        Some(p) => p,
+        None => 0,
+    }
+}
+
+impl<const LOG2_W: u32, const LOG2_H: u32> BilinearFootprintSized<LOG2_W, LOG2_H> {
+    /// Width of the texture it samples, in texels (0 when `2^LOG2_W` does not fit `u32`).
+    pub const WIDTH: u32 = pow2(LOG2_W);
+    /// Height of the texture it samples, in texels (0 when `2^LOG2_H` does not fit `u32`).
+    pub const HEIGHT: u32 = pow2(LOG2_H);
+
+    /// Footprints of a texture of this size (0 when their count does not fit `u32`).
+    const TEXELS: u32 = pow2(LOG2_W.saturating_add(LOG2_H));
+
+    /// [`BilinearFootprint`]'s gather with the width and the footprints' count as
+    /// constants: the same row words and Q8 weights for a texture of this size.
+    #[inline(always)]
+    fn gather(footprints: &[u64], u: i32, v: i32) -> (u32, u32, u32, u32) {
+        let tu = u.wrapping_sub(0x7F80);
+        let tv = v.wrapping_sub(0x7F80);
+        let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
+        let row = ((tv >> 16) as u32).wrapping_shl(LOG2_W);
+        let col = (tu >> 16) as u32 & Self::WIDTH.wrapping_sub(1);
+        let idx = (row | col) & Self::TEXELS.wrapping_sub(1);
+        let f = match footprints.get(idx as usize) {
+            Some(&w) => w,
+            None => 0,
+        };
+        (f as u32, (f >> 32) as u32, a, b)
+    }
+
+    /// Samples `tex` (level 0, `2^LOG2_W x 2^LOG2_H` texels) at raw I16F16 texel
+    /// coordinates `(u, v)` with wrap modes `wu`, `wv`, reading `footprints` when both wraps
+    /// repeat. Returns raw RGB565, [`BilinearFootprint::sample`]'s pixel. Never panics:
+    /// footprints of another count read as black past their end (bindings refuse them
+    /// before a draw gets here).
+    #[inline(always)]
+    pub fn sample<WU: WrapMode, WV: WrapMode>(
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        tex: &Texture<'_>,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            let (top, bot, a, b) = Self::gather(footprints, u, v);
+            return blend_rows_q8(top, bot, a, b, None);
+        }
+        Bilinear::sample(tex, wu, wv, u, v)
+    }
+
+    /// [`Self::sample`] times intensity `i` (Q8, `0..=256`; larger is 256), as
+    /// [`BilinearFootprint::sample_scaled`]: one rounding.
+    #[inline(always)]
+    pub fn sample_scaled<WU: WrapMode, WV: WrapMode>(
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        tex: &Texture<'_>,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        if WU::REPEAT && WV::REPEAT {
+            let (top, bot, a, b) = Self::gather(footprints, u, v);
+            return blend_rows_q8(top, bot, a, b, Some(u32::from(i.min(256))));
+        }
+        Bilinear::sample_scaled(tex, wu, wv, u, v, i)
+    }
+}
+
+impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized<LOG2_W, LOG2_H> {
+    const LOD: bool = false;
+    const FILTER: super::Filter = super::Filter::Bilinear;
+    const FOOTPRINTS: bool = true;
+    const LEVEL0_SIZE: Option<(u32, u32)> = Some((Self::WIDTH, Self::HEIGHT));
+
+    #[inline(always)]
+    fn sample_mip<WU: WrapMode, WV: WrapMode>(
+        self,
+        t: &MipTexture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        _: i32,
+    ) -> u16 {
+        Self::sample(t.footprints(), wu, wv, t.base(), u, v)
+    }
+
+    /// Without the footprints at hand: [`Bilinear`] (the same pixels).
+    #[inline(always)]
+    fn sample_base<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        BilinearFootprint.sample_base(base, wu, wv, u, v)
+    }
+
+    /// Without the footprints at hand: [`Bilinear`] (the same pixels).
+    #[inline(always)]
+    fn sample_base_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        BilinearFootprint.sample_base_scaled(base, wu, wv, u, v, i)
+    }
+
+    #[inline(always)]
+    fn sample_level0<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+    ) -> u16 {
+        Self::sample(footprints, wu, wv, base, u, v)
+    }
+
+    #[inline(always)]
+    fn sample_level0_scaled<WU: WrapMode, WV: WrapMode>(
+        self,
+        base: &Texture<'_>,
+        footprints: &[u64],
+        wu: WU,
+        wv: WV,
+        u: i32,
+        v: i32,
+        i: u16,
+    ) -> u16 {
+        Self::sample_scaled(footprints, wu, wv, base, u, v, i)
+    }
+}
+
+/// Refuses a chain whose level 0 is not `size` texels (`(width, height)`): what
+/// [`TexSampler::LEVEL0_SIZE`] asks of a binding. (A chain's footprints, when it has any,
+/// are one per texel of level 0: [`MipTexture::with_footprints`] checks them.)
+pub(crate) fn check_level0_size(chain: &MipTexture<'_>, size: (u32, u32)) -> Result<(), Error> {
+    let base = chain.base();
+    let actual = (base.width(), base.height());
+    if actual != size {
+        return Err(Error::TextureSizeMismatch {
+            expected: size,
+            actual,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+    use crate::texture::{write_footprints, ClampToEdge, Repeat};
+    use crate::Rgb565;
+
+    /// The pixels of `BilinearFootprint` on textures of the sampler's size, over random
+    /// coordinates (negative and far outside included), plain and scaled, and `Bilinear`'s
+    /// for a wrap other than repeat.
+    fn same_pixels<const LW: u32, const LH: u32>(seed: u64) {
+        let (w, h) = (1usize << LW, 1usize << LH);
+        let mut rng = Rng(seed);
+        let raw: std::vec::Vec<u16> = (0..w * h).map(|_| rng.next() as u16).collect();
+        let texels: std::vec::Vec<Rgb565> = raw
+            .iter()
+            .map(|&c| Rgb565::new((c >> 11) as u8, ((c >> 5) & 63) as u8, (c & 31) as u8))
+            .collect();
+        let tex = Texture::new(&texels, w as u32, h as u32).unwrap();
+        let mut fp = std::vec![0u64; w * h];
+        write_footprints(&tex, &mut fp).unwrap();
+        type S<const A: u32, const B: u32> = BilinearFootprintSized<A, B>;
+        for k in 0..20_000u32 {
+            let r = rng.next();
+            let (u, v) = ((r as i32) >> (k % 9), ((r >> 32) as i32) >> (k % 11));
+            let i = (k % 300) as u16;
+            assert_eq!(
+                S::<LW, LH>::sample(&fp, Repeat, Repeat, &tex, u, v),
+                BilinearFootprint::sample(&tex, &fp, Repeat, Repeat, u, v),
+                "{u} {v}"
+            );
+            assert_eq!(
+                S::<LW, LH>::sample_scaled(&fp, Repeat, Repeat, &tex, u, v, i),
+                BilinearFootprint::sample_scaled(&tex, &fp, Repeat, Repeat, u, v, i),
+                "{u} {v} {i}"
+            );
+            assert_eq!(
+                S::<LW, LH>::sample(&fp, ClampToEdge, Repeat, &tex, u, v),
+                Bilinear::sample(&tex, ClampToEdge, Repeat, u, v),
+            );
+        }
+    }
+
+    extern crate std;
+
+    #[test]
+    fn the_pixels_are_bilinear_footprints() {
+        same_pixels::<0, 0>(1);
+        same_pixels::<2, 1>(2);
+        same_pixels::<3, 5>(3);
+        same_pixels::<6, 6>(4);
+        same_pixels::<8, 7>(5);
+    }
+
+    #[test]
+    fn a_chain_of_another_size_is_refused() {
+        static T: [Rgb565; 8] = [Rgb565::new(0, 0, 0); 8];
+        static F: [u64; 8] = [0; 8];
+        let tex = Texture::from_static(&T, 4, 2);
+        let chain = MipTexture::single(tex).with_footprints_static(&F);
+        assert_eq!(check_level0_size(&chain, (4, 2)), Ok(()));
+        assert_eq!(
+            check_level0_size(&chain, (2, 4)),
+            Err(Error::TextureSizeMismatch {
+                expected: (2, 4),
+                actual: (4, 2)
+            })
+        );
+        // A typed draw checks the size as a binding does.
+        use crate::geometry::{Cull, Viewport};
+        use crate::pipeline::{DepthLess, Draw, Exact, ModulateIntensity, Pipeline};
+        type Lit<F> = Pipeline<Exact, F, Repeat, Repeat, ModulateIntensity, DepthLess>;
+        let vp = Viewport::new(0, 0, 8, 8).unwrap();
+        let ok = Draw::<Rgb565>::new_mip::<Lit<BilinearFootprintSized<2, 1>>>(
+            Some(chain),
+            vp,
+            Cull::None,
+        );
+        assert!(ok.is_ok());
+        let wrong = Draw::<Rgb565>::new_mip::<Lit<BilinearFootprintSized<1, 2>>>(
+            Some(chain),
+            vp,
+            Cull::None,
+        );
+        assert_eq!(
+            wrong.err(),
+            Some(Error::TextureSizeMismatch {
+                expected: (2, 4),
+                actual: (4, 2)
+            })
+        );
+        // Sizes beyond `u32` match no texture, and sampling with them never panics.
+        type Huge = BilinearFootprintSized<40, 40>;
+        assert_eq!((Huge::WIDTH, Huge::HEIGHT), (0, 0));
+        assert_eq!(Huge::sample(&F, Repeat, Repeat, &tex, 0x7FFF_FFFF, -1), 0);
+    }
+}
