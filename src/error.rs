@@ -75,10 +75,14 @@ pub enum Error {
     /// A texture is not the size a sampler was built for (see
     /// `texture::BilinearFootprintSized`).
     TextureSizeMismatch {
-        /// The sampler's size, `(width, height)` in texels.
-        expected: (u32, u32),
-        /// The texture's level 0.
-        actual: (u32, u32),
+        /// Width of the texture's level 0, texels.
+        width: u32,
+        /// Height of the texture's level 0, texels.
+        height: u32,
+        /// Width the sampler is built for, texels.
+        sampler_width: u32,
+        /// Height the sampler is built for, texels.
+        sampler_height: u32,
     },
     /// A fixed-capacity store is full.
     CapacityExceeded {
@@ -159,10 +163,14 @@ impl fmt::Display for Error {
                 f,
                 "face plane {triangle} is not triangle {triangle}'s (bake face planes with face_planes or write_face_planes from the mesh's own positions and indices)"
             ),
-            Error::TextureSizeMismatch { expected, actual } => write!(
+            Error::TextureSizeMismatch {
+                width,
+                height,
+                sampler_width,
+                sampler_height,
+            } => write!(
                 f,
-                "texture is {}x{} texels but the sampler is built for {}x{}",
-                actual.0, actual.1, expected.0, expected.1
+                "texture is {width}x{height} texels but the sampler is built for {sampler_width}x{sampler_height}"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

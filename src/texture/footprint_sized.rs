@@ -43,7 +43,7 @@
 //! let wrong = TexBinding::new(&CHAIN, BilinearFootprintSized::<3, 1>, Repeat, Repeat, Default::default());
 //! assert_eq!(
 //!     wrong.err(),
-//!     Some(Error::TextureSizeMismatch { expected: (8, 2), actual: (4, 2) })
+//!     Some(Error::TextureSizeMismatch { width: 4, height: 2, sampler_width: 8, sampler_height: 2 })
 //! );
 //! ```
 
@@ -219,11 +219,13 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
 /// are one per texel of level 0: [`MipTexture::with_footprints`] checks them.)
 pub(crate) fn check_level0_size(chain: &MipTexture<'_>, size: (u32, u32)) -> Result<(), Error> {
     let base = chain.base();
-    let actual = (base.width(), base.height());
-    if actual != size {
+    let (width, height) = (base.width(), base.height());
+    if (width, height) != size {
         return Err(Error::TextureSizeMismatch {
-            expected: size,
-            actual,
+            width,
+            height,
+            sampler_width: size.0,
+            sampler_height: size.1,
         });
     }
     Ok(())
@@ -293,8 +295,10 @@ mod tests {
         assert_eq!(
             check_level0_size(&chain, (2, 4)),
             Err(Error::TextureSizeMismatch {
-                expected: (2, 4),
-                actual: (4, 2)
+                width: 4,
+                height: 2,
+                sampler_width: 2,
+                sampler_height: 4
             })
         );
         // A typed draw checks the size as a binding does.
@@ -316,8 +320,10 @@ mod tests {
         assert_eq!(
             wrong.err(),
             Some(Error::TextureSizeMismatch {
-                expected: (2, 4),
-                actual: (4, 2)
+                width: 4,
+                height: 2,
+                sampler_width: 2,
+                sampler_height: 4
             })
         );
         // Sizes beyond `u32` match no texture, and sampling with them never panics.
