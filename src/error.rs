@@ -73,16 +73,14 @@ pub enum Error {
         triangle: usize,
     },
     /// A texture is not the size a sampler was built for (see
-    /// `texture::BilinearFootprintSized`).
+    /// `texture::BilinearFootprintSized`); the fields are the sampler's. (Two fields, not
+    /// four: every firmware that formats an error links this variant's `Debug`, which with
+    /// four fields cost up to 0.8 KB of flash.)
     TextureSizeMismatch {
-        /// Width of the texture's level 0, texels.
-        width: u32,
-        /// Height of the texture's level 0, texels.
-        height: u32,
         /// Width the sampler is built for, texels.
-        sampler_width: u32,
+        width: u32,
         /// Height the sampler is built for, texels.
-        sampler_height: u32,
+        height: u32,
     },
     /// A fixed-capacity store is full.
     CapacityExceeded {
@@ -163,14 +161,9 @@ impl fmt::Display for Error {
                 f,
                 "face plane {triangle} is not triangle {triangle}'s (bake face planes with face_planes or write_face_planes from the mesh's own positions and indices)"
             ),
-            Error::TextureSizeMismatch {
-                width,
-                height,
-                sampler_width,
-                sampler_height,
-            } => write!(
+            Error::TextureSizeMismatch { width, height } => write!(
                 f,
-                "texture is {width}x{height} texels but the sampler is built for {sampler_width}x{sampler_height}"
+                "texture is not the {width}x{height} texels the sampler is built for"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")
