@@ -95,8 +95,16 @@ fn whole_sphere<M: fixel::pipeline::Stages + 'static>(
     tex: Texture<'_>,
     mesh: &fixel::scene::Mesh<'_>,
 ) -> FrameResult {
+    whole_sphere_mip::<M>(buf, MipTexture::single(tex), mesh)
+}
+
+/// [`whole_sphere`] from a mip chain (one with footprints, for the footprint samplers).
+fn whole_sphere_mip<M: fixel::pipeline::Stages + 'static>(
+    buf: &mut Whole,
+    tex: MipTexture<'_>,
+    mesh: &fixel::scene::Mesh<'_>,
+) -> FrameResult {
     let (mut nop1, mut nop2) = (|| {}, || {});
-    let tex = MipTexture::single(tex);
     scenes::sphere_mip_as::<M, 0, 0, 0, 0>(
         WholeTarget::Whole(buf),
         tex,
@@ -175,16 +183,7 @@ fn mcu_frames() {
     // The same from the texture's bilinear footprints: the same pixels.
     let f256 = footprints(&tex);
     let fp = MipTexture::single(tex).with_footprints(&f256).unwrap();
-    let (mut nop1, mut nop2) = (|| {}, || {});
-    let wf = scenes::sphere_mip_as::<scenes::LitSphereFootprint, 0, 0, 0, 0>(
-        WholeTarget::Whole(&mut whole_buf),
-        fp,
-        &mesh,
-        0,
-        &mut nop1,
-        &mut nop2,
-    )
-    .unwrap();
+    let wf = whole_sphere_mip::<scenes::LitSphereFootprint>(&mut whole_buf, fp, &mesh);
     assert_eq!(
         (wf.checksum, wf.stats.pixels),
         (wa.checksum, wa.stats.pixels),
@@ -192,15 +191,7 @@ fn mcu_frames() {
     );
     print("whole_sphere_footprint", &wf);
     // The same with the texture's size fixed at compile time: the same pixels.
-    let ws = scenes::sphere_mip_as::<scenes::LitSphereSized, 0, 0, 0, 0>(
-        WholeTarget::Whole(&mut whole_buf),
-        fp,
-        &mesh,
-        0,
-        &mut nop1,
-        &mut nop2,
-    )
-    .unwrap();
+    let ws = whole_sphere_mip::<scenes::LitSphereSized>(&mut whole_buf, fp, &mesh);
     assert_eq!(
         (ws.checksum, ws.stats.pixels),
         (wf.checksum, wf.stats.pixels),

@@ -16,38 +16,8 @@
 //!
 //! Cost, in instructions per drawn pixel on the benchmark sphere drawn whole (a 256 x 128
 //! texture; `whole_sphere_footprint` against `whole_sphere_sized`): Cortex-M4F 190.78 ->
-//! 186.91, Cortex-M0+ 339.09 -> 330.91. On RV32IMC it costs more (209.45 -> 212.57): keep
+//! 186.90, Cortex-M0+ 339.09 -> 330.94. On RV32IMC it costs more (209.45 -> 212.57): keep
 //! [`BilinearFootprint`] there.
-//!
-//! ```
-//! use fixel::shading::TexBinding;
-//! use fixel::texture::{footprint_texels, BilinearFootprint, BilinearFootprintSized};
-//! use fixel::texture::{MipTexture, Repeat, Texture};
-//! use fixel::{Error, Rgb565};
-//!
-//! const RAW: [u16; 8] = [0xF800, 0x07E0, 0x001F, 0xFFFF, 0x0000, 0x8410, 0x1234, 0xFEDC];
-//! static TEXELS: [Rgb565; 8] = [Rgb565::new(0, 0, 0); 8];
-//! static FOOTPRINTS: [u64; 8] = footprint_texels(&RAW, 4);
-//! // 4 x 2 texels: `LOG2_W = 2`, `LOG2_H = 1`.
-//! static TEX: Texture<'static> = Texture::from_static(&TEXELS, 4, 2);
-//! static CHAIN: MipTexture<'static> = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);
-//!
-//! type Sized4x2 = BilinearFootprintSized<2, 1>;
-//! // The same pixel as `BilinearFootprint` anywhere on the texture.
-//! for (u, v) in [(0, 0), (0x1_8000, 0x8000), (0x3_C123, 0x1_7F00), (-0x5000, 0x2_4000)] {
-//!     assert_eq!(
-//!         Sized4x2::sample(CHAIN.footprints(), Repeat, Repeat, &TEX, u, v),
-//!         BilinearFootprint::sample(&TEX, CHAIN.footprints(), Repeat, Repeat, u, v),
-//!     );
-//! }
-//! // A binding checks the size.
-//! assert!(TexBinding::new(&CHAIN, Sized4x2::default(), Repeat, Repeat, Default::default()).is_ok());
-//! let wrong = TexBinding::new(&CHAIN, BilinearFootprintSized::<3, 1>, Repeat, Repeat, Default::default());
-//! assert_eq!(
-//!     wrong.err(),
-//!     Some(Error::TextureSizeMismatch { width: 8, height: 2 })
-//! );
-//! ```
 
 use super::footprint::BilinearFootprint;
 use super::mip::{MipTexture, TexSampler};
@@ -57,8 +27,41 @@ use super::wrap::WrapMode;
 use crate::Error;
 
 /// [`BilinearFootprint`] for a level 0 of `2^LOG2_W x 2^LOG2_H` texels, fixed at compile
-/// time: the same pixels, with the footprint's index from immediates (see the
-/// [module docs](self)).
+/// time: the same pixels, with the footprint's row shift and masks as instruction
+/// immediates instead of three more values for the span loop to keep (on a 13-register
+/// Cortex-M core it reloaded them from the stack at every pixel). On the benchmark sphere
+/// drawn whole: Cortex-M4F 190.78 -> 186.90 instructions per pixel, Cortex-M0+ 339.09 ->
+/// 330.94; on RV32IMC 209.45 -> 212.57 (keep [`BilinearFootprint`] there).
+///
+/// ```
+/// use fixel::shading::TexBinding;
+/// use fixel::texture::{footprint_texels, BilinearFootprint, BilinearFootprintSized};
+/// use fixel::texture::{MipTexture, Repeat, Texture};
+/// use fixel::{Error, Rgb565};
+///
+/// const RAW: [u16; 8] = [0xF800, 0x07E0, 0x001F, 0xFFFF, 0x0000, 0x8410, 0x1234, 0xFEDC];
+/// static TEXELS: [Rgb565; 8] = [Rgb565::new(0, 0, 0); 8];
+/// static FOOTPRINTS: [u64; 8] = footprint_texels(&RAW, 4);
+/// // 4 x 2 texels: `LOG2_W = 2`, `LOG2_H = 1`.
+/// static TEX: Texture<'static> = Texture::from_static(&TEXELS, 4, 2);
+/// static CHAIN: MipTexture<'static> = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);
+///
+/// type Sized4x2 = BilinearFootprintSized<2, 1>;
+/// // The same pixel as `BilinearFootprint` anywhere on the texture.
+/// for (u, v) in [(0, 0), (0x1_8000, 0x8000), (0x3_C123, 0x1_7F00), (-0x5000, 0x2_4000)] {
+///     assert_eq!(
+///         Sized4x2::sample(CHAIN.footprints(), Repeat, Repeat, &TEX, u, v),
+///         BilinearFootprint::sample(&TEX, CHAIN.footprints(), Repeat, Repeat, u, v),
+///     );
+/// }
+/// // A binding checks the size.
+/// assert!(TexBinding::new(&CHAIN, Sized4x2::default(), Repeat, Repeat, Default::default()).is_ok());
+/// let wrong = TexBinding::new(&CHAIN, BilinearFootprintSized::<3, 1>, Repeat, Repeat, Default::default());
+/// assert_eq!(
+///     wrong.err(),
+///     Some(Error::TextureSizeMismatch { width: 8, height: 2 })
+/// );
+/// ```
 ///
 /// Bindings and draws refuse a chain of another size
 /// ([`Error::TextureSizeMismatch`](crate::Error::TextureSizeMismatch)) or without footprints
