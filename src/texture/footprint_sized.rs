@@ -38,15 +38,30 @@ use crate::Error;
 /// use fixel::texture::{footprint_texels, BilinearFootprint, BilinearFootprintSized};
 /// use fixel::texture::{MipTexture, Repeat, Texture};
 /// use fixel::{Error, Rgb565};
+/// use embedded_graphics_core::pixelcolor::IntoStorage;
 ///
 /// const RAW: [u16; 8] = [0xF800, 0x07E0, 0x001F, 0xFFFF, 0x0000, 0x8410, 0x1234, 0xFEDC];
-/// static TEXELS: [Rgb565; 8] = [Rgb565::new(0, 0, 0); 8];
+/// // The same texels as colours (footprints must be built from a texture's own texels).
+/// static TEXELS: [Rgb565; 8] = [
+///     Rgb565::new(31, 0, 0),
+///     Rgb565::new(0, 63, 0),
+///     Rgb565::new(0, 0, 31),
+///     Rgb565::new(31, 63, 31),
+///     Rgb565::new(0, 0, 0),
+///     Rgb565::new(16, 32, 16),
+///     Rgb565::new(2, 17, 20),
+///     Rgb565::new(31, 54, 28),
+/// ];
 /// static FOOTPRINTS: [u64; 8] = footprint_texels(&RAW, 4);
 /// // 4 x 2 texels: `LOG2_W = 2`, `LOG2_H = 1`.
 /// static TEX: Texture<'static> = Texture::from_static(&TEXELS, 4, 2);
 /// static CHAIN: MipTexture<'static> = MipTexture::single(TEX).with_footprints_static(&FOOTPRINTS);
 ///
 /// type Sized4x2 = BilinearFootprintSized<2, 1>;
+/// // The texels and the footprints agree.
+/// for (c, raw) in TEXELS.iter().zip(RAW) {
+///     assert_eq!(c.into_storage(), raw);
+/// }
 /// // The same pixel as `BilinearFootprint` anywhere on the texture.
 /// for (u, v) in [(0, 0), (0x1_8000, 0x8000), (0x3_C123, 0x1_7F00), (-0x5000, 0x2_4000)] {
 ///     assert_eq!(
