@@ -32,6 +32,23 @@ use crate::Error;
 const HOIST_FOOTPRINT_TEST: bool = cfg!(target_pointer_width = "32")
     && !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
 
+/// The fewest footprints a binding of sampler `F` draws with: one, or every texel of the
+/// level 0 size `F` is built for ([`TexSampler::LEVEL0_SIZE`]), so that the span loop's
+/// test of [`TexBinding::can_draw`] also proves every masked footprint index in bounds.
+const fn footprints_needed<F: TexSampler>() -> usize {
+    match F::LEVEL0_SIZE {
+        Some((w, h)) => {
+            let n = (w as usize).saturating_mul(h as usize);
+            if n == 0 {
+                1
+            } else {
+                n
+            }
+        }
+        None => 1,
+    }
+}
+
 /// A texture bound for sampling by a shader: level 0 by value (so its pointer and sizes stay
 /// in registers through a span), the chain by reference, the filter `F` and wraps `WU`, `WV`.
 #[derive(Clone, Copy, Debug)]
@@ -147,7 +164,9 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     #[inline(always)]
     pub fn can_draw(&self) -> bool {
         !self.base.texels().is_empty()
-            && (!F::FOOTPRINTS || !HOIST_FOOTPRINT_TEST || !self.footprints.is_empty())
+            && (!F::FOOTPRINTS
+                || !HOIST_FOOTPRINT_TEST
+                || self.footprints.len() >= footprints_needed::<F>())
     }
 
     /// Level 0.
