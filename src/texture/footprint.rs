@@ -69,18 +69,17 @@ use crate::Error;
 pub struct BilinearFootprint;
 
 impl BilinearFootprint {
-    /// The two row words (`c00 | c10 << 16`, `c01 | c11 << 16`) and Q8 weights `a`, `b`
-    /// (`0..=255`) of a repeat-wrapped sample at `(u, v)`, split as `Bilinear`'s
-    /// `gather_repeat` splits them (`t = u - 1/2 + 1/512`). The row offset is not wrapped:
-    /// `footprint_at` masks with the count, which wraps the row too.
+    /// [`gather_footprint`] with `tex`'s width and the footprints' count, read at run time.
     #[inline(always)]
     fn gather(tex: &Texture<'_>, footprints: &[u64], u: i32, v: i32) -> (u32, u32, u32, u32) {
-        let tu = u.wrapping_sub(0x7F80);
-        let tv = v.wrapping_sub(0x7F80);
-        let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
-        let row = ((tv >> 16) as u32) << tex.log2_width();
-        let f = footprint_at(footprints, row | ((tu >> 16) as u32 & (tex.width() - 1)));
-        (f as u32, (f >> 32) as u32, a, b)
+        gather_footprint(
+            footprints,
+            u,
+            v,
+            tex.log2_width(),
+            tex.width().wrapping_sub(1),
+            footprints.len().wrapping_sub(1),
+        )
     }
 
     /// Samples `tex` (level 0) at raw I16F16 texel coordinates `(u, v)` with wrap modes
@@ -123,15 +122,33 @@ impl BilinearFootprint {
     }
 }
 
-/// Footprint `idx`, taken modulo their count (a power of two), or 0 when there are none.
-/// Never panics.
+/// The two row words (`c00 | c10 << 16`, `c01 | c11 << 16`) and Q8 weights `a`, `b`
+/// (`0..=255`) of a repeat-wrapped sample at `(u, v)` (raw I16F16 texel coordinates), split
+/// as `Bilinear`'s `gather_repeat` splits them (`t = u - 1/2 + 1/512`), for a level 0 of
+/// `2^log2_w` columns (`col_mask = 2^log2_w - 1`) and `count_mask + 1` footprints (a power
+/// of two). The row offset is not wrapped: masking the index with the count wraps the row
+/// too. A footprint past the end (footprints of another count) reads as black: never
+/// panics. Shared by [`BilinearFootprint`] (the masks from the texture, at run time) and
+/// [`BilinearFootprintSized`](super::BilinearFootprintSized) (constants).
 #[inline(always)]
-fn footprint_at(footprints: &[u64], idx: u32) -> u64 {
-    let idx = idx as usize & footprints.len().wrapping_sub(1);
-    match footprints.get(idx) {
+pub(super) fn gather_footprint(
+    footprints: &[u64],
+    u: i32,
+    v: i32,
+    log2_w: u32,
+    col_mask: u32,
+    count_mask: usize,
+) -> (u32, u32, u32, u32) {
+    let tu = u.wrapping_sub(0x7F80);
+    let tv = v.wrapping_sub(0x7F80);
+    let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
+    let row = ((tv >> 16) as u32).wrapping_shl(log2_w);
+    let idx = (row | ((tu >> 16) as u32 & col_mask)) as usize & count_mask;
+    let f = match footprints.get(idx) {
         Some(&w) => w,
         None => 0,
-    }
+    };
+    (f as u32, (f >> 32) as u32, a, b)
 }
 
 impl TexSampler for BilinearFootprint {

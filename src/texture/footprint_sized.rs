@@ -19,7 +19,7 @@
 //! 186.90, Cortex-M0+ 339.09 -> 330.94. On RV32IMC it costs more (209.45 -> 212.57): keep
 //! [`BilinearFootprint`] there.
 
-use super::footprint::BilinearFootprint;
+use super::footprint::{gather_footprint, BilinearFootprint};
 use super::mip::{MipTexture, TexSampler};
 use super::sample::{blend_rows_q8, Bilinear, Sampler};
 use super::texture::Texture;
@@ -102,21 +102,18 @@ impl<const LOG2_W: u32, const LOG2_H: u32> BilinearFootprintSized<LOG2_W, LOG2_H
     /// Footprints of a texture of this size (0 when their count does not fit `u32`).
     const TEXELS: u32 = pow2(LOG2_W.saturating_add(LOG2_H));
 
-    /// [`BilinearFootprint`]'s gather with the width and the footprints' count as
-    /// constants: the same row words and Q8 weights for a texture of this size.
+    /// [`gather_footprint`] with the width and the footprints' count as constants: the same
+    /// row words and Q8 weights for a texture of this size.
     #[inline(always)]
     fn gather(footprints: &[u64], u: i32, v: i32) -> (u32, u32, u32, u32) {
-        let tu = u.wrapping_sub(0x7F80);
-        let tv = v.wrapping_sub(0x7F80);
-        let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
-        let row = ((tv >> 16) as u32).wrapping_shl(LOG2_W);
-        let col = (tu >> 16) as u32 & Self::WIDTH.wrapping_sub(1);
-        let idx = (row | col) & Self::TEXELS.wrapping_sub(1);
-        let f = match footprints.get(idx as usize) {
-            Some(&w) => w,
-            None => 0,
-        };
-        (f as u32, (f >> 32) as u32, a, b)
+        gather_footprint(
+            footprints,
+            u,
+            v,
+            LOG2_W,
+            Self::WIDTH.wrapping_sub(1),
+            Self::TEXELS.wrapping_sub(1) as usize,
+        )
     }
 
     /// Samples `tex` (level 0, `2^LOG2_W x 2^LOG2_H` texels) at raw I16F16 texel
