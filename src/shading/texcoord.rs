@@ -360,4 +360,45 @@ mod tests {
         }
         assert!(taken > 50_000, "{taken}");
     }
+
+    /// A sized sampler's binding draws only with every footprint there: the span loop's
+    /// `can_draw` test is then what keeps its masked index in bounds.
+    #[test]
+    fn a_sized_binding_needs_every_footprint() {
+        use crate::texture::{BilinearFootprint, BilinearFootprintSized, Repeat};
+        use crate::Rgb565;
+        static TEXELS: [Rgb565; 8] = [Rgb565::new(1, 2, 3); 8];
+        static ALL: [u64; 8] = [0; 8];
+        let tex = Texture::from_static(&TEXELS, 4, 2);
+        let full = MipTexture::single(tex).with_footprints_static(&ALL);
+        // A 2 x 2 texture's four footprints: fewer than the sampler's 4 x 2 (a binding
+        // refuses the size; an unchecked one must still not draw).
+        let small = Texture::from_static(&TEXELS[..4], 2, 2);
+        let short = MipTexture::single(small).with_footprints_static(&ALL[..4]);
+        let bind = |chain| {
+            TexBinding::new_unchecked(
+                chain,
+                BilinearFootprintSized::<2, 1>,
+                Repeat,
+                Repeat,
+                Lod::default(),
+            )
+            .can_draw()
+        };
+        // What 32-bit targets test per span (hosts skip the test).
+        assert_eq!(footprints_needed::<BilinearFootprintSized<2, 1>>(), 8);
+        assert_eq!(footprints_needed::<BilinearFootprintSized<40, 1>>(), 1);
+        assert_eq!(footprints_needed::<BilinearFootprint>(), 1);
+        assert!(bind(&full));
+        assert_eq!(bind(&short), !HOIST_FOOTPRINT_TEST);
+        // The run-time-sized sampler needs one.
+        let any = |chain| {
+            TexBinding::new_unchecked(chain, BilinearFootprint, Repeat, Repeat, Lod::default())
+                .can_draw()
+        };
+        assert!(any(&short));
+        let none = MipTexture::single(tex);
+        assert!(!any(&none) || !HOIST_FOOTPRINT_TEST);
+        assert!(any(&full));
+    }
 }
