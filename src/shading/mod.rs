@@ -168,6 +168,24 @@ pub trait Shader: Copy {
         0
     }
 
+    /// True when [`Shader::shade_in_range`] shades every pixel of a linear piece of `n`
+    /// pixels, whose varyings start at `start` and change by `slope` (wrapping) per pixel,
+    /// exactly as [`Shader::shade`] does. A shader that clamps a varying at every pixel
+    /// checks the piece's two ends here once (a linear varying lies between them) and skips
+    /// the clamp in [`Shader::shade_in_range`]. The default, `false`, links no second loop.
+    #[inline(always)]
+    fn piece_in_range(&self, start: &Self::Varyings, slope: &Self::Varyings, n: u32) -> bool {
+        let _ = (start, slope, n);
+        false
+    }
+
+    /// [`Shader::shade`] for the fragments of a piece [`Shader::piece_in_range`] accepted
+    /// (the same colour, with fewer instructions). The default calls [`Shader::shade`].
+    #[inline(always)]
+    fn shade_in_range(&self, fragment: &Fragment<Self::Varyings, Self::Triangle>) -> Option<u16> {
+        self.shade(fragment)
+    }
+
     /// False when the shader cannot draw anything (for example a binding to an empty texel
     /// slice, which fixel's constructors never produce). The span loop checks it once per
     /// chunk, so the compiler can drop the per-texel bounds branch of every fetch.

@@ -133,6 +133,15 @@ macro_rules! shade_linear_fn {
             };
             let mut written = 0u32;
             if !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
+                if !S::BLENDS && shader.piece_in_range(&v, &slope, out.len() as u32) {
+                    for (k, o) in out.iter_mut().enumerate() {
+                        if let Some(c) = shader.shade_in_range(&frag(v, k)) {
+                            *o = C::from_rgb565(c);
+                        }
+                        step(&mut v, &slope);
+                    }
+                    return out.len() as u32;
+                }
                 for (k, o) in out.iter_mut().enumerate() {
                     if let Some(c) = color(&shader, &frag(v, k), o) {
                         *o = C::from_rgb565(c);
