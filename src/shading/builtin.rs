@@ -115,7 +115,8 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     /// The intensity (Q8.16) in `0..256` at both ends, so at every pixel between: its
     /// integer part needs no clamp, and the blend knows it fits 8 bits. On the benchmark
     /// sphere drawn whole (`whole_sphere_sized`), Cortex-M4F 183.93 -> 180.63 instructions
-    /// per pixel, RV32IMC 205.13 -> 204.22. Not on ARMv6-M ([`CLAMP_FREE_PIECES`]).
+    /// per pixel, RV32IMC 205.13 -> 204.22. Not on ARMv6-M, where the second loop cost
+    /// more than it saved (Cortex-M0+ 330.94 -> 336.31).
     #[inline(always)]
     fn piece_in_range(&self, start: &[i32; 3], slope: &[i32; 3], n: u32) -> bool {
         const END: i64 = (COLOR_ONE as i64) << 16;

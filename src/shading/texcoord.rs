@@ -158,9 +158,11 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
     }
 
     /// True when level 0 has texels and, for a sampler that reads footprints on
-    /// 32-bit cores other than ARMv6-M, they are there (always, for a binding built
-    /// from fixel's textures: [`TexBinding::new`] refuses a footprint sampler on a chain
-    /// without them).
+    /// 32-bit cores other than ARMv6-M, they are there: all `w x h` of them for a sampler
+    /// built for a `w x h` level 0 ([`TexSampler::LEVEL0_SIZE`]), so that its masked index
+    /// needs no bounds test per pixel (always true for a binding built from fixel's
+    /// textures: [`TexBinding::new`] refuses a footprint sampler on a chain without them,
+    /// or of another size).
     #[inline(always)]
     pub fn can_draw(&self) -> bool {
         !self.base.texels().is_empty()

@@ -14,10 +14,13 @@
 //! footprints are missing, as for [`BilinearFootprint`]), so a wrong texture is an error
 //! where it enters, never a wrong image.
 //!
+//! A binding of it draws only with every footprint of that size there
+//! ([`TexBinding::can_draw`](crate::shading::TexBinding::can_draw), which the span loop tests
+//! once per span), so the masked index needs no bounds test per pixel either.
+//!
 //! Cost, in instructions per drawn pixel on the benchmark sphere drawn whole (a 256 x 128
-//! texture; `whole_sphere_footprint` against `whole_sphere_sized`): Cortex-M4F 190.78 ->
-//! 186.90, Cortex-M0+ 339.09 -> 330.94. On RV32IMC it costs more (209.45 -> 212.57): keep
-//! [`BilinearFootprint`] there.
+//! texture; `whole_sphere_footprint` against `whole_sphere_sized`, session 31): Cortex-M4F
+//! 188.59 -> 180.63, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
 
 use super::footprint::{gather_footprint, BilinearFootprint};
 use super::mip::{MipTexture, TexSampler};
@@ -29,9 +32,9 @@ use crate::Error;
 /// [`BilinearFootprint`] for a level 0 of `2^LOG2_W x 2^LOG2_H` texels, fixed at compile
 /// time: the same pixels, with the footprint's row shift and masks as instruction
 /// immediates instead of three more values for the span loop to keep (on a 13-register
-/// Cortex-M core it reloaded them from the stack at every pixel). On the benchmark sphere
-/// drawn whole: Cortex-M4F 190.78 -> 186.90 instructions per pixel, Cortex-M0+ 339.09 ->
-/// 330.94; on RV32IMC 209.45 -> 212.57 (keep [`BilinearFootprint`] there).
+/// Cortex-M core it reloaded them from the stack at every pixel), and no bounds test per
+/// pixel. On the benchmark sphere drawn whole: Cortex-M4F 188.59 -> 180.63 instructions per
+/// pixel, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
 ///
 /// ```
 /// use fixel::shading::TexBinding;
