@@ -109,8 +109,7 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     textured_common!();
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 3], TexTriangle>) -> Option<u16> {
-        let [u, v, i] = f.varyings;
-        Some(self.tex.sample_scaled(f.triangle, u, v, f.lambda, q8(i)))
+        self.shade_scaled(f, q8(f.varyings[2]))
     }
     /// The intensity (Q8.16) in `0..256` at both ends, so at every pixel between: its
     /// integer part needs no clamp, and the blend knows it fits 8 bits. On the benchmark
@@ -129,10 +128,22 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     }
     #[inline(always)]
     fn shade_in_range(&self, f: &Fragment<[i32; 3], TexTriangle>) -> Option<u16> {
-        let [u, v, i] = f.varyings;
         // `q8(i)` for `i` in `0..256 << 16`.
-        let i = ((i >> 16) & 0xFF) as u16;
-        Some(self.tex.sample_scaled(f.triangle, u, v, f.lambda, i))
+        self.shade_scaled(f, ((f.varyings[2] >> 16) & 0xFF) as u16)
+    }
+}
+
+impl<F: TexSampler, WU: WrapMode, WV: WrapMode> ModulateIntensity<'_, F, WU, WV> {
+    /// The texel at the fragment's `u, v` times `intensity` (Q8, `0..=256`), taken from the
+    /// fragment's third varying by [`Shader::shade`] (clamped) or
+    /// [`Shader::shade_in_range`] (known in range).
+    #[inline(always)]
+    fn shade_scaled(&self, f: &Fragment<[i32; 3], TexTriangle>, intensity: u16) -> Option<u16> {
+        let [u, v, _] = f.varyings;
+        Some(
+            self.tex
+                .sample_scaled(f.triangle, u, v, f.lambda, intensity),
+        )
     }
 }
 
