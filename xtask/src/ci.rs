@@ -1,5 +1,5 @@
 //! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, docs, cross builds,
-//! `mcu`), run fail-fast, and the summary table.
+//! firmware clippy, `mcu`), run fail-fast, and the summary table.
 
 use std::env;
 use std::fmt::Write as _;
@@ -17,6 +17,9 @@ const CROSS_TARGETS: [&str; 3] = [
     "thumbv7em-none-eabihf",
     "riscv32imc-unknown-none-elf",
 ];
+
+/// The target the firmware clippy step checks every firmware binary for.
+const FIRMWARE_TARGET: &str = "thumbv7em-none-eabihf";
 
 /// Rustup components the CI steps need.
 const COMPONENTS: [&str; 2] = ["rustfmt", "clippy"];
@@ -96,6 +99,25 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
             })
         });
     }
+
+    // Every firmware binary compiles, lint-clean: `mcu` builds only the ones it runs (the
+    // `report_*` and `size_*` ones are built by `cargo xtask report` and `size`).
+    steps.push(if no_cross {
+        skipped("firmware clippy", "--no-cross")
+    } else {
+        step("firmware clippy", || {
+            let lint = ["clippy", "--release", "--bins", "--target", FIRMWARE_TARGET];
+            let deny = ["--", "-D", "warnings"];
+            cargo(&[&lint[..], &deny[..]].concat())
+                .in_dir("examples/firmware")
+                .run()?;
+            let whole = ["--features", "whole", "--target-dir", "target/whole"];
+            cargo(&[&lint[..], &whole[..], &deny[..]].concat())
+                .in_dir("examples/firmware")
+                .env("FIXEL_FW_MEMORY", "whole")
+                .run()
+        })
+    });
 
     // Firmware under QEMU: checksums must equal the host's (and the report is printed).
     steps.push(if no_cross {

@@ -40,6 +40,19 @@ impl Cmd {
         self
     }
 
+    /// Runs in `dir`, relative to the workspace root (a crate outside the workspace, such as
+    /// the firmware's), with the caller's target settings removed.
+    pub(crate) fn in_dir(mut self, dir: &str) -> Self {
+        self.shown = format!("(cd {dir} && {})", self.shown);
+        self.cmd
+            .current_dir(root().join(dir))
+            .env_remove("RUSTFLAGS")
+            .env_remove("CARGO_ENCODED_RUSTFLAGS")
+            .env_remove("CARGO_BUILD_TARGET")
+            .env_remove("CARGO_TARGET_DIR");
+        self
+    }
+
     /// Runs with inherited stdout/stderr; Err carries a readable message.
     pub(crate) fn run(mut self) -> Result<(), String> {
         match self.cmd.status() {

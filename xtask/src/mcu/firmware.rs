@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use super::tools::{output, run_visible};
-use super::{firmware_dir, Mcu, GEOMETRY, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES};
+use super::{firmware_dir, Mcu, GEOMETRY, MCUS, WHOLE_MCUS, WHOLE_SCENES};
 
 /// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
 /// directory so the default build's artefacts stay), or only those of them `keep` selects
@@ -45,27 +45,27 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
     )
 }
 
-/// Builds every firmware binary for every MCU target (one cargo invocation), or only the
-/// scenes `only` names (`--only`; nothing when it names none of [`SCENES`]).
+/// Builds firmware binaries for every MCU target (one cargo invocation): every binary
+/// (`None`: `cargo xtask size`, whose rows are most of them), or only `bins` (nothing when
+/// it is empty). `cargo xtask mcu` builds only the scenes it runs: building every binary
+/// there (the `report_*` and `size_*` ones too, 52 in all against its 20) was most of CI's
+/// time.
 pub(super) fn build_firmware(
     extra_env: &[(&str, &str)],
     target_dir: Option<&Path>,
-    only: &[String],
+    bins: Option<&[&str]>,
 ) -> Result<(), String> {
     let mut cmd = Command::new("cargo");
     cmd.current_dir(firmware_dir()).args(["build", "--release"]);
-    if only.is_empty() {
-        cmd.arg("--bins");
-    } else {
-        let bins: Vec<&String> = only
-            .iter()
-            .filter(|o| SCENES.contains(&o.as_str()))
-            .collect();
-        if bins.is_empty() {
-            return Ok(());
+    match bins {
+        None => {
+            cmd.arg("--bins");
         }
-        for b in bins {
-            cmd.args(["--bin", b]);
+        Some([]) => return Ok(()),
+        Some(bins) => {
+            for b in bins {
+                cmd.args(["--bin", b]);
+            }
         }
     }
     cmd.env_remove("RUSTFLAGS")
@@ -83,8 +83,8 @@ pub(super) fn build_firmware(
     }
     run_visible(
         &mut cmd,
-        "(cd examples/firmware && cargo build --release --bins (or the --only ones) \
-         --target <3 MCU targets>)",
+        "(cd examples/firmware && cargo build --release --bin <each scene, or the --only ones; \
+         every binary for size> --target <3 MCU targets>)",
     )
 }
 

@@ -144,7 +144,13 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         Ok(p) => p,
         Err(e) => return fail(e),
     };
-    if let Err(e) = build_firmware(&[], None, &flags.only) {
+    // The band scenes it runs (all of them, or the `--only` ones).
+    let scenes: Vec<&str> = SCENES
+        .iter()
+        .copied()
+        .filter(|s| flags.runs_firmware(s))
+        .collect();
+    if let Err(e) = build_firmware(&[], None, Some(&scenes)) {
         return fail(e);
     }
     // The real-display example (ST7789 via mipidsi): compile check only (not with `--only`,
@@ -163,7 +169,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         if let Err(e) = build_firmware(
             &[("CARGO_PROFILE_RELEASE_OPT_LEVEL", "s")],
             Some(&opt_s_dir),
-            &flags.only,
+            Some(&scenes),
         ) {
             return fail(e);
         }

@@ -50,7 +50,7 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
         Ok(l) => l,
         Err(e) => return fail(e),
     };
-    if let Err(e) = build_firmware(&[], None, &[]) {
+    if let Err(e) = build_firmware(&[], None, None) {
         return fail(e);
     }
     let opt_s_dir = firmware_dir().join("target").join("opt-s");
@@ -58,7 +58,7 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
         if let Err(e) = build_firmware(
             &[("CARGO_PROFILE_RELEASE_OPT_LEVEL", "s")],
             Some(&opt_s_dir),
-            &[],
+            None,
         ) {
             return fail(e);
         }
