@@ -129,8 +129,9 @@ impl CachedVertex {
         }
     }
 
+    /// The screen vertex with its texture coordinates; its colour varyings are left zero
+    /// (the walker sets them once the vertex is lit).
     fn screen(&self) -> ScreenVertex {
-        let c = i32::from(self.color.min(COLOR_ONE)) << 16;
         let sub = |p: i32| ((p & ((2 << SUB_BITS) - 1)) - (1 << (SUB_BITS - 1))) as i16;
         let (x, y) = self.xy();
         ScreenVertex {
@@ -139,7 +140,7 @@ impl CachedVertex {
             sub: [sub(self.x), sub(self.y)],
             z: self.z,
             w: self.w,
-            varyings: [self.uv[0], self.uv[1], c, c, c],
+            varyings: [self.uv[0], self.uv[1], 0, 0, 0],
         }
     }
 }
