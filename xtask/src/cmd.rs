@@ -44,12 +44,7 @@ impl Cmd {
     /// the firmware's), with the caller's target settings removed.
     pub(crate) fn in_dir(mut self, dir: &str) -> Self {
         self.shown = format!("(cd {dir} && {})", self.shown);
-        self.cmd
-            .current_dir(root().join(dir))
-            .env_remove("RUSTFLAGS")
-            .env_remove("CARGO_ENCODED_RUSTFLAGS")
-            .env_remove("CARGO_BUILD_TARGET")
-            .env_remove("CARGO_TARGET_DIR");
+        without_target_env(self.cmd.current_dir(root().join(dir)));
         self
     }
 
@@ -71,6 +66,15 @@ impl Cmd {
             Err(e) => Err(format!("could not start `{}`: {e}", self.shown)),
         }
     }
+}
+
+/// `cmd` without the caller's flags, target and target directory: a crate built for the
+/// MCU targets (the firmware's, the display example's) sets its own.
+pub(crate) fn without_target_env(cmd: &mut Command) -> &mut Command {
+    cmd.env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("CARGO_TARGET_DIR")
 }
 
 /// `cargo <args>`, using the same cargo that launched us when known.

@@ -7,6 +7,7 @@ use std::process::Command;
 
 use super::tools::{output, run_visible};
 use super::{firmware_dir, Mcu, GEOMETRY, MCUS, WHOLE_MCUS, WHOLE_SCENES};
+use crate::cmd::without_target_env;
 
 /// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
 /// directory so the default build's artefacts stay), or only those of them `keep` selects
@@ -17,11 +18,8 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
         .args(["build", "--release", "--features", "whole"])
         .arg("--target-dir")
         .arg(td)
-        .env("FIXEL_FW_MEMORY", "whole")
-        .env_remove("RUSTFLAGS")
-        .env_remove("CARGO_ENCODED_RUSTFLAGS")
-        .env_remove("CARGO_BUILD_TARGET")
-        .env_remove("CARGO_TARGET_DIR");
+        .env("FIXEL_FW_MEMORY", "whole");
+    without_target_env(&mut cmd);
     let bins: Vec<&str> = WHOLE_SCENES
         .iter()
         .chain(&[GEOMETRY])
@@ -68,10 +66,7 @@ pub(super) fn build_firmware(
             }
         }
     }
-    cmd.env_remove("RUSTFLAGS")
-        .env_remove("CARGO_ENCODED_RUSTFLAGS")
-        .env_remove("CARGO_BUILD_TARGET")
-        .env_remove("CARGO_TARGET_DIR");
+    without_target_env(&mut cmd);
     for m in &MCUS {
         cmd.args(["--target", m.triple]);
     }

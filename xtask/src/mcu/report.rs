@@ -10,6 +10,7 @@ use super::firmware::elf;
 use super::qemu::{measure_modes, ModeCount};
 use super::tools::{build_plugin, ensure_tools, run_visible};
 use super::{firmware_dir, Mcu};
+use crate::cmd::without_target_env;
 
 /// The report's microcontrollers. Both builds run on `mps2-an386` (4 MB of RAM: the
 /// report firmwares hold up to 20 span loops and exceed the microbit's 256 KB / 16 KB);
@@ -68,11 +69,8 @@ pub fn report_mcu(
         .args(["build", "--release"])
         .arg("--target-dir")
         .arg(&td)
-        .env("FIXEL_FW_MEMORY", "report")
-        .env_remove("RUSTFLAGS")
-        .env_remove("CARGO_ENCODED_RUSTFLAGS")
-        .env_remove("CARGO_BUILD_TARGET")
-        .env_remove("CARGO_TARGET_DIR");
+        .env("FIXEL_FW_MEMORY", "report");
+    without_target_env(&mut cmd);
     for b in REPORT_BINS {
         cmd.args(["--bin", b]);
     }

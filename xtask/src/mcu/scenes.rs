@@ -15,6 +15,7 @@ use super::{
     fail, firmware_dir, out_dir, McuArgs, GEOMETRY, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES,
 };
 use crate::cmd::root;
+use crate::cmd::without_target_env;
 use crate::progress::Progress;
 
 /// The geometry firmware on each MCU: a table of instructions per item and stage. One
@@ -123,12 +124,11 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
 /// Builds the real-display example (ST7789 via mipidsi) for Cortex-M4F: a compile check.
 fn check_display_example() -> Result<(), String> {
     run_visible(
-        Command::new("cargo")
-            .current_dir(root().join("examples").join("display"))
-            .args(["build", "--release", "--target", "thumbv7em-none-eabihf"])
-            .env_remove("RUSTFLAGS")
-            .env_remove("CARGO_ENCODED_RUSTFLAGS")
-            .env_remove("CARGO_TARGET_DIR"),
+        without_target_env(
+            Command::new("cargo")
+                .current_dir(root().join("examples").join("display"))
+                .args(["build", "--release", "--target", "thumbv7em-none-eabihf"]),
+        ),
         "(cd examples/display && cargo build --release --target thumbv7em-none-eabihf)",
     )
 }
