@@ -18,6 +18,7 @@
 
 use super::Varyings;
 use crate::math::wide;
+use crate::texture::mip::footprints_needed;
 use crate::texture::{Lod, MipTexture, TexSampler, Texture, Wrap, WrapMode};
 use crate::Error;
 
@@ -31,23 +32,6 @@ use crate::Error;
 /// +1.3).
 const HOIST_FOOTPRINT_TEST: bool = cfg!(target_pointer_width = "32")
     && !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
-
-/// The fewest footprints a binding of sampler `F` draws with: one, or every texel of the
-/// level 0 size `F` is built for ([`TexSampler::LEVEL0_SIZE`]), so that the span loop's
-/// test of [`TexBinding::can_draw`] also proves every masked footprint index in bounds.
-const fn footprints_needed<F: TexSampler>() -> usize {
-    match F::LEVEL0_SIZE {
-        Some((w, h)) => {
-            let n = (w as usize).saturating_mul(h as usize);
-            if n == 0 {
-                1
-            } else {
-                n
-            }
-        }
-        None => 1,
-    }
-}
 
 /// A texture bound for sampling by a shader: level 0 by value (so its pointer and sizes stay
 /// in registers through a span), the chain by reference, the filter `F` and wraps `WU`, `WV`.

@@ -23,7 +23,7 @@
 //! 188.59 -> 180.63, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
 
 use super::footprint::{gather_footprint, BilinearFootprint};
-use super::mip::{MipTexture, TexSampler};
+use super::mip::{footprints_needed, MipTexture, TexSampler};
 use super::sample::{blend_rows_q8, Bilinear, Sampler};
 use super::texture::Texture;
 use super::wrap::WrapMode;
@@ -102,9 +102,6 @@ impl<const LOG2_W: u32, const LOG2_H: u32> BilinearFootprintSized<LOG2_W, LOG2_H
     /// Height of the texture it samples, in texels (0 when `2^LOG2_H` does not fit `u32`).
     pub const HEIGHT: u32 = pow2(LOG2_H);
 
-    /// Footprints of a texture of this size (0 when their count does not fit `u32`).
-    const TEXELS: u32 = pow2(LOG2_W.saturating_add(LOG2_H));
-
     /// [`gather_footprint`] with the width and the footprints' count as constants: the same
     /// row words and Q8 weights for a texture of this size.
     #[inline(always)]
@@ -115,7 +112,8 @@ impl<const LOG2_W: u32, const LOG2_H: u32> BilinearFootprintSized<LOG2_W, LOG2_H
             v,
             LOG2_W,
             Self::WIDTH.wrapping_sub(1),
-            Self::TEXELS.wrapping_sub(1) as usize,
+            // What a binding requires (`can_draw`), less one: every masked index in bounds.
+            footprints_needed::<Self>() - 1,
         )
     }
 

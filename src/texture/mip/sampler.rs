@@ -338,6 +338,26 @@ impl TexSampler for DynMip {
     }
 }
 
+/// The fewest footprints a binding of sampler `F` draws with: one, or every texel of the
+/// level 0 size `F` is built for ([`TexSampler::LEVEL0_SIZE`]), so that the span loop's
+/// test of [`TexBinding::can_draw`](crate::shading::TexBinding::can_draw) also proves
+/// every masked footprint index in bounds. The sized sampler
+/// ([`BilinearFootprintSized`](crate::texture::BilinearFootprintSized)) masks its index with
+/// this count less one: one derivation, so the test and the mask cannot disagree.
+pub(crate) const fn footprints_needed<F: TexSampler>() -> usize {
+    match F::LEVEL0_SIZE {
+        Some((w, h)) => {
+            let n = (w as usize).saturating_mul(h as usize);
+            if n == 0 {
+                1
+            } else {
+                n
+            }
+        }
+        None => 1,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
