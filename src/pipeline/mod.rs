@@ -9,6 +9,7 @@
 mod depth_only;
 mod draw;
 mod dyn_interp;
+mod in_range;
 mod interp;
 mod quadratic;
 mod raster;

@@ -179,6 +179,21 @@ pub trait Shader: Copy {
         false
     }
 
+    /// The varying whose range alone decides [`Shader::piece_in_range`], if there is one
+    /// ([`Shader::values_in_range`] then says which values are in range): the rasterizer
+    /// bounds it over a whole affine triangle once and, when the bound is in range, skips
+    /// the check of each span. Default `None`.
+    const RANGE_VARYING: Option<usize> = None;
+
+    /// True when [`Shader::shade_in_range`] shades every fragment whose
+    /// [`Shader::RANGE_VARYING`] lies in `lo..=hi` (the other varyings anything) exactly as
+    /// [`Shader::shade`] does. Default `false`.
+    #[inline(always)]
+    fn values_in_range(&self, lo: i64, hi: i64) -> bool {
+        let _ = (lo, hi);
+        false
+    }
+
     /// [`Shader::shade`] for the fragments of a piece [`Shader::piece_in_range`] accepted
     /// (the same colour, with fewer instructions). The default calls [`Shader::shade`].
     #[inline(always)]
