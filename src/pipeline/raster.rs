@@ -203,7 +203,7 @@ where
                 pixels: 0,
                 _stages: core::marker::PhantomData,
             };
-            if S::RANGE_VARYING.is_some() {
+            if let Some(_) = S::RANGE_VARYING {
                 // Two writers (`S` and `InRange<S>`): each with its own rasterizer, which
                 // calls it directly (behind one `dyn` sink the rasterizer stayed out of
                 // line, with an indirect call per row: +0.6 per pixel on the Cortex-M4F
@@ -219,10 +219,13 @@ where
             (w.pixels, w.bound.lowest)
         }};
     }
-    let (pixels, mut lowest) = if range_known::<S, P, D>(shader, &vary, setup, &corners) {
-        draw_with!(InRange(*shader))
-    } else {
-        draw_with!(*shader)
+    // A match on the constant, so that a shader without a range-checked varying does not
+    // even instantiate `InRange` (the compiler collects only the reachable arm).
+    let (pixels, mut lowest) = match S::RANGE_VARYING {
+        Some(_) if range_known::<S, P, D>(shader, &vary, setup, &corners) => {
+            draw_with!(InRange(*shader))
+        }
+        _ => draw_with!(*shader),
     };
     if inline_short_path::<S, P, D>() && pixels != 0 {
         lowest = lowest.min(depth_lower_bound(&pos, vp));
