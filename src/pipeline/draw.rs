@@ -40,9 +40,6 @@ pub struct Draw<'a, C: TargetColor> {
     texture: MipTexture<'a>,
     viewport: Viewport,
     flat: u16,
-    /// What the rasterization of each triangle reads from `mode` and `viewport`, decoded
-    /// once here rather than per triangle (kept in step by the `with_*` methods).
-    params: RasterParams,
     raster: RasterFn<'a, C>,
 }
 
@@ -138,7 +135,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),
             viewport,
             flat: 0xFFFF,
-            params: params_of(&mode, &viewport),
             raster: raster_triangle::<M, C>,
         })
     }
@@ -172,7 +168,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             texture: texture.unwrap_or(MipTexture::single(Texture::from_static(&NO_TEXELS, 1, 1))),
             viewport,
             flat: 0xFFFF,
-            params: params_of(&mode, &viewport),
             raster: select::<C>(&mode),
         })
     }
@@ -221,7 +216,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
             }
             _ => {}
         }
-        self.params = params_of(&self.mode, &self.viewport);
         Ok(self)
     }
 
@@ -229,7 +223,6 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
     pub fn with_adaptive_budget(mut self, budget: u16) -> Self {
         if let Projection::Adaptive { .. } = self.mode.projection {
             self.mode.projection = Projection::Adaptive { budget };
-            self.params = params_of(&self.mode, &self.viewport);
         }
         self
     }
@@ -388,19 +381,19 @@ where
         mode.lod,
     );
     let shader = <M::S as ShadingStage>::shader(tex, draw.flat);
+    let params = RasterParams::new(
+        &draw.viewport,
+        mode.projection,
+        mode.depth == DepthTest::Less,
+    );
     raster_shaded::<_, M::P, M::D, C, { crate::geometry::CLASSIC_VARYINGS }>(
         &shader,
         tri,
         <M::S as ShadingStage>::Shader::<'_, M::F, M::WU, M::WV>::from_classic,
-        &draw.params,
+        &params,
         target,
         slot,
     )
-}
-
-/// The rasterization parameters of a draw in `mode` through `viewport`.
-fn params_of(mode: &DrawMode, viewport: &Viewport) -> RasterParams {
-    RasterParams::new(viewport, mode.projection, mode.depth == DepthTest::Less)
 }
 
 /// The run-time dispatch table: one instance per (filter, shading); projection, wraps and
