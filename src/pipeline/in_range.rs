@@ -15,8 +15,97 @@
 //! core never takes the path. A shader without a range-checked varying never builds an
 //! `InRange`, so nothing of it is linked.
 
+use super::span::{span, DepthBound, Scratch, SpanCtx};
+use super::stages::{DepthStage, ProjectionStage};
+use crate::color::TargetColor;
 use crate::shading::{Fragment, Shader};
 use crate::texture::LodGranularity;
+
+/// What the rasterizer knows of a triangle's range ([`Unproven`] or [`Proven`]): the
+/// shader type its short spans run (`S`, or `InRange<S>`), and how its other spans run.
+/// Those always run the plain shader, so a proven triangle links no second copy of the
+/// long-span loops (about 8 KB on Cortex-M4F), only of the short path.
+pub(crate) trait RangeProof {
+    /// The shader of the triangle's short spans.
+    type Short<S: Shader>: Shader<Varyings = S::Varyings, Triangle = S::Triangle>;
+
+    /// `shader` as the short spans run it.
+    fn short<S: Shader>(shader: S) -> Self::Short<S>;
+
+    /// A span the short path does not take, drawn by [`span`] with the plain shader.
+    #[allow(clippy::too_many_arguments)]
+    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
+        ctx: &SpanCtx<'_, Self::Short<S>>,
+        bound: &mut DepthBound,
+        scratch: &mut Option<Scratch<S::Varyings>>,
+        y: i32,
+        x0: i32,
+        out: &mut [C],
+        depth: Option<&mut [u16]>,
+    ) -> u32;
+}
+
+/// Nothing known: the plain shader everywhere.
+pub(crate) struct Unproven;
+
+impl RangeProof for Unproven {
+    type Short<S: Shader> = S;
+
+    #[inline(always)]
+    fn short<S: Shader>(shader: S) -> S {
+        shader
+    }
+
+    #[inline(always)]
+    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
+        ctx: &SpanCtx<'_, S>,
+        bound: &mut DepthBound,
+        scratch: &mut Option<Scratch<S::Varyings>>,
+        y: i32,
+        x0: i32,
+        out: &mut [C],
+        depth: Option<&mut [u16]>,
+    ) -> u32 {
+        span::<S, P, D, C>(ctx, bound, scratch, y, x0, out, depth)
+    }
+}
+
+/// In range throughout: [`InRange`] on the short spans.
+pub(crate) struct Proven;
+
+impl RangeProof for Proven {
+    type Short<S: Shader> = InRange<S>;
+
+    #[inline(always)]
+    fn short<S: Shader>(shader: S) -> InRange<S> {
+        InRange(shader)
+    }
+
+    /// The span context rebuilt around the plain shader (a few word copies, for the rare
+    /// span longer than a chunk).
+    #[inline(always)]
+    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
+        ctx: &SpanCtx<'_, InRange<S>>,
+        bound: &mut DepthBound,
+        scratch: &mut Option<Scratch<S::Varyings>>,
+        y: i32,
+        x0: i32,
+        out: &mut [C],
+        depth: Option<&mut [u16]>,
+    ) -> u32 {
+        let plain = SpanCtx {
+            setup: ctx.setup,
+            shader: ctx.shader.0,
+            triangle: ctx.triangle,
+            tri_lambda: ctx.tri_lambda,
+            log2_n: ctx.log2_n,
+            coord_shift: ctx.coord_shift,
+            kind: ctx.kind,
+            depth_on: ctx.depth_on,
+        };
+        span::<S, P, D, C>(&plain, bound, scratch, y, x0, out, depth)
+    }
+}
 
 /// `S`, known in range for the triangle being drawn (see the module docs).
 #[derive(Clone, Copy, Debug)]

@@ -6,11 +6,11 @@
 //! projection, depth stage, target colour and varying count: each draw type a firmware
 //! uses links exactly one copy.
 
-use super::in_range::InRange;
+use super::in_range::{Proven, RangeProof, Unproven};
 use super::interp::lambda_at;
 use super::setup::{centroid, setup, TriSetup};
 use super::setup_cache::SetupSlot;
-use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
+use super::span::{inline_short_path, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -60,8 +60,10 @@ impl RasterParams {
     }
 }
 
-struct Writer<'t, S: Shader, P, D, C> {
-    ctx: SpanCtx<'t, S>,
+/// `K`: what is known of the triangle's range ([`RangeProof`]): its short spans run
+/// `K::Short<S>`, its other spans `S`.
+struct Writer<'t, S: Shader, P, D, C, K: RangeProof> {
+    ctx: SpanCtx<'t, K::Short<S>>,
     scratch: Option<Scratch<S::Varyings>>,
     /// The target's depth floor, read once per triangle: a triangle writes each pixel at
     /// most once, so its own writes never matter to its later spans. Lowered once, after.
@@ -69,11 +71,11 @@ struct Writer<'t, S: Shader, P, D, C> {
     /// The target's rows, lent for the triangle.
     rows: Rows<'t, C>,
     pixels: u32,
-    _stages: core::marker::PhantomData<(P, D)>,
+    _stages: core::marker::PhantomData<(P, D, K)>,
 }
 
-impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
-    for Writer<'_, S, P, D, C>
+impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof> SpanSink
+    for Writer<'_, S, P, D, C, K>
 {
     // Not inlined into the rasterizer's row loop: one copy per draw type (inlined there, each
     // draw type's `raster_triangle` carried the edge walk and the short path again: +9.8 KB
@@ -84,7 +86,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
         // rasterizer clipped the span to the target: the slicing checks alone).
         if let Some((out, mut depth)) = self.rows.span_in_clip(y, x0, x1) {
             // The short path inlined here; every other span through `span`, out of line.
-            let short = span_short::<S, P, D, C>(
+            let short = span_short::<K::Short<S>, P, D, C>(
                 &self.ctx,
                 &mut self.bound,
                 y,
@@ -94,7 +96,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor> SpanSink
             );
             let n = match short {
                 Some(n) => n,
-                None => span::<S, P, D, C>(
+                None => K::long_span::<S, P, D, C>(
                     &self.ctx,
                     &mut self.bound,
                     &mut self.scratch,
@@ -181,12 +183,11 @@ where
     ];
     // The writer for the shader `$shader` (`S` or `InRange<S>`), built in place.
     macro_rules! draw_with {
-        ($shader:expr) => {{
-            let shader = $shader;
-            let mut w = Writer::<_, P, D, C> {
+        ($proof:ty) => {{
+            let mut w = Writer::<S, P, D, C, $proof> {
                 ctx: SpanCtx {
                     setup,
-                    shader,
+                    shader: <$proof>::short(*shader),
                     triangle,
                     tri_lambda,
                     log2_n: params.log2_n,
@@ -223,9 +224,9 @@ where
     // even instantiate `InRange` (the compiler collects only the reachable arm).
     let (pixels, mut lowest) = match S::RANGE_VARYING {
         Some(_) if range_known::<S, P, D>(shader, &vary, setup, &corners) => {
-            draw_with!(InRange(*shader))
+            draw_with!(Proven)
         }
-        _ => draw_with!(*shader),
+        _ => draw_with!(Unproven),
     };
     if inline_short_path::<S, P, D>() && pixels != 0 {
         lowest = lowest.min(depth_lower_bound(&pos, vp));
