@@ -15,9 +15,9 @@
 //! core never takes the path. A shader without a range-checked varying never builds an
 //! `InRange`, so nothing of it is linked.
 
-use super::span::{span, DepthBound, Scratch, SpanCtx};
-use super::stages::{DepthStage, ProjectionStage};
-use crate::color::TargetColor;
+#[cfg(doc)]
+use super::span::span;
+use super::span::SpanCtx;
 use crate::shading::{Fragment, Shader};
 use crate::texture::LodGranularity;
 
@@ -32,17 +32,12 @@ pub(crate) trait RangeProof {
     /// `shader` as the short spans run it.
     fn short<S: Shader>(shader: S) -> Self::Short<S>;
 
-    /// A span the short path does not take, drawn by [`span`] with the plain shader.
-    #[allow(clippy::too_many_arguments)]
-    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
-        ctx: &SpanCtx<'_, Self::Short<S>>,
-        bound: &mut DepthBound,
-        scratch: &mut Option<Scratch<S::Varyings>>,
-        y: i32,
-        x0: i32,
-        out: &mut [C],
-        depth: Option<&mut [u16]>,
-    ) -> u32;
+    /// Calls `f` with the triangle's span context around the plain shader: the one its
+    /// spans that the short path does not take run with ([`span`]).
+    fn with_plain<'s, S: Shader, R>(
+        ctx: &SpanCtx<'s, Self::Short<S>>,
+        f: impl FnOnce(&SpanCtx<'s, S>) -> R,
+    ) -> R;
 }
 
 /// Nothing known: the plain shader everywhere.
@@ -57,16 +52,11 @@ impl RangeProof for Unproven {
     }
 
     #[inline(always)]
-    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
-        ctx: &SpanCtx<'_, S>,
-        bound: &mut DepthBound,
-        scratch: &mut Option<Scratch<S::Varyings>>,
-        y: i32,
-        x0: i32,
-        out: &mut [C],
-        depth: Option<&mut [u16]>,
-    ) -> u32 {
-        span::<S, P, D, C>(ctx, bound, scratch, y, x0, out, depth)
+    fn with_plain<'s, S: Shader, R>(
+        ctx: &SpanCtx<'s, S>,
+        f: impl FnOnce(&SpanCtx<'s, S>) -> R,
+    ) -> R {
+        f(ctx)
     }
 }
 
@@ -84,16 +74,11 @@ impl RangeProof for Proven {
     /// The span context rebuilt around the plain shader (a few word copies, for the rare
     /// span longer than a chunk).
     #[inline(always)]
-    fn long_span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
-        ctx: &SpanCtx<'_, InRange<S>>,
-        bound: &mut DepthBound,
-        scratch: &mut Option<Scratch<S::Varyings>>,
-        y: i32,
-        x0: i32,
-        out: &mut [C],
-        depth: Option<&mut [u16]>,
-    ) -> u32 {
-        let plain = SpanCtx {
+    fn with_plain<'s, S: Shader, R>(
+        ctx: &SpanCtx<'s, InRange<S>>,
+        f: impl FnOnce(&SpanCtx<'s, S>) -> R,
+    ) -> R {
+        f(&SpanCtx {
             setup: ctx.setup,
             shader: ctx.shader.0,
             triangle: ctx.triangle,
@@ -102,8 +87,7 @@ impl RangeProof for Proven {
             coord_shift: ctx.coord_shift,
             kind: ctx.kind,
             depth_on: ctx.depth_on,
-        };
-        span::<S, P, D, C>(&plain, bound, scratch, y, x0, out, depth)
+        })
     }
 }
 

@@ -10,7 +10,7 @@ use super::in_range::{Proven, RangeProof, Unproven};
 use super::interp::lambda_at;
 use super::setup::{centroid, setup, TriSetup};
 use super::setup_cache::SetupSlot;
-use super::span::{inline_short_path, span_short, DepthBound, Scratch, SpanCtx};
+use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
@@ -96,15 +96,9 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof
             );
             let n = match short {
                 Some(n) => n,
-                None => K::long_span::<S, P, D, C>(
-                    &self.ctx,
-                    &mut self.bound,
-                    &mut self.scratch,
-                    y,
-                    x0,
-                    out,
-                    depth,
-                ),
+                None => K::with_plain(&self.ctx, |ctx| {
+                    span::<S, P, D, C>(ctx, &mut self.bound, &mut self.scratch, y, x0, out, depth)
+                }),
             };
             self.pixels = self.pixels.wrapping_add(n);
         }
