@@ -187,15 +187,23 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         );
         // The common case in 32-bit arithmetic (the same integers; the 64-bit path costs
         // library shifts on Cortex-M0+, once per triangle and band).
+        // A sampler built for one size binds only a level 0 of that size (checked where the
+        // binding is made): its sides are then constants, and the shifts below immediates.
+        let (log2_w, log2_h) = match F::LEVEL0_SIZE {
+            Some((w, h)) if w.is_power_of_two() && h.is_power_of_two() => {
+                (w.trailing_zeros(), h.trailing_zeros())
+            }
+            _ => (self.base.log2_width(), self.base.log2_height()),
+        };
         if let (Some(tu), Some(tv)) = (
-            texel_coords_small(u, self.base.log2_width(), self.wu.mode()),
-            texel_coords_small(v, self.base.log2_height(), self.wv.mode()),
+            texel_coords_small(u, log2_w, self.wu.mode()),
+            texel_coords_small(v, log2_h, self.wv.mode()),
         ) {
             write_pair(vary, pair, tu, tv);
             return TexTriangle { shift: 0 };
         }
-        let mut tu = texel_coords(u, self.base.log2_width(), self.wu.mode());
-        let mut tv = texel_coords(v, self.base.log2_height(), self.wv.mode());
+        let mut tu = texel_coords(u, log2_w, self.wu.mode());
+        let mut tv = texel_coords(v, log2_h, self.wv.mode());
         const LIM: i64 = 1 << 30;
         for (t, w) in [(&mut tu, self.wu.mode()), (&mut tv, self.wv.mode())] {
             if !periodic(w) {
