@@ -78,7 +78,7 @@ impl<'a> DepthMap<'a> {
 
     /// Fills the map with [`DEPTH_CLEAR`] (the far plane: nothing casts a shadow).
     pub fn clear(&mut self) {
-        self.texels.fill(DEPTH_CLEAR);
+        super::fill::fill(self.texels, DEPTH_CLEAR);
     }
 
     /// The texels, row-major.

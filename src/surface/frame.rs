@@ -30,6 +30,11 @@ pub struct Frame<'a, C> {
     y0: i32,
     /// Every stored depth is at least this (0 until a `clear` makes it known).
     depth_floor: u16,
+    /// Every stored depth is [`DEPTH_CLEAR`]: filled by [`Frame::with_depth`] or
+    /// [`Frame::clear`] and not lent since ([`RenderTarget::rows_mut`] turns it off), so the
+    /// next `clear` need not fill it again (a frame built with `with_depth` and cleared at
+    /// once fills its depth once).
+    depth_filled: bool,
 }
 
 impl<'a, C: TargetColor> Frame<'a, C> {
@@ -56,6 +61,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
             height,
             y0: 0,
             depth_floor: 0,
+            depth_filled: false,
         })
     }
 
@@ -65,9 +71,10 @@ impl<'a, C: TargetColor> Frame<'a, C> {
     pub fn with_depth(self, depth: &'a mut [u16]) -> Result<Self, Error> {
         let mut frame = self.with_depth_as_is(depth)?;
         if let Some(d) = frame.depth.as_deref_mut() {
-            d.fill(DEPTH_CLEAR);
+            super::fill::fill(d, DEPTH_CLEAR);
         }
         frame.depth_floor = DEPTH_CLEAR;
+        frame.depth_filled = true;
         Ok(frame)
     }
 
@@ -88,6 +95,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         }
         self.depth = Some(depth);
         self.depth_floor = 0;
+        self.depth_filled = false;
         Ok(self)
     }
 
@@ -107,11 +115,16 @@ impl<'a, C: TargetColor> Frame<'a, C> {
         self.y0
     }
 
-    /// Fills colour with `c` and depth (if any) with [`DEPTH_CLEAR`].
+    /// Fills colour with `c` and depth (if any) with [`DEPTH_CLEAR`]. A depth buffer that
+    /// is still as [`with_depth`](Self::with_depth) or the last `clear` filled it (not lent
+    /// to a draw since) is not filled again.
     pub fn clear(&mut self, c: C) {
-        self.color.fill(c);
+        super::fill::fill(self.color, c);
         if let Some(d) = self.depth.as_deref_mut() {
-            d.fill(DEPTH_CLEAR);
+            if !self.depth_filled {
+                super::fill::fill(d, DEPTH_CLEAR);
+            }
+            self.depth_filled = true;
         }
         self.depth_floor = DEPTH_CLEAR;
     }
@@ -159,6 +172,8 @@ impl<C: TargetColor> RenderTarget for Frame<'_, C> {
 
     #[inline]
     fn rows_mut(&mut self) -> super::Rows<'_, C> {
+        // The depth rows may be written through what is lent.
+        self.depth_filled = false;
         super::Rows {
             color: &mut *self.color,
             depth: self.depth.as_deref_mut(),
@@ -202,5 +217,37 @@ mod tests {
                 assert_eq!(row, want, "row {y}, depth {with_depth}");
             }
         }
+    }
+
+    /// `clear` skips the depth fill only while the depth is as the last fill left it: once
+    /// rows are lent (a draw may write them), the next `clear` fills it again.
+    #[test]
+    fn clear_refills_depth_after_rows_are_lent() {
+        let mut colour = [Rgb565::default(); 600];
+        let mut depth = [7u16; 600];
+        let mut frame = Frame::new(&mut colour, 30, 20)
+            .unwrap()
+            .with_depth(&mut depth)
+            .unwrap();
+        frame.clear(Rgb565::new(1, 2, 3));
+        assert!(frame.depth().unwrap().iter().all(|&d| d == DEPTH_CLEAR));
+        for round in 0..2 {
+            if let Some(d) = frame.rows_mut().depth {
+                d[5 + round] = 100;
+                d[599] = 0;
+            }
+            frame.clear(Rgb565::new(1, 2, 3));
+            assert!(frame.depth().unwrap().iter().all(|&d| d == DEPTH_CLEAR));
+            assert!(frame.pixels().iter().all(|&c| c == Rgb565::new(1, 2, 3)));
+        }
+        // Attached as it is: the first clear fills.
+        let mut depth = [7u16; 600];
+        let mut colour = [Rgb565::default(); 600];
+        let mut frame = Frame::new(&mut colour, 30, 20)
+            .unwrap()
+            .with_depth_kept(&mut depth)
+            .unwrap();
+        frame.clear(Rgb565::new(0, 0, 0));
+        assert!(frame.depth().unwrap().iter().all(|&d| d == DEPTH_CLEAR));
     }
 }

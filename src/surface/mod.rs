@@ -15,6 +15,7 @@
 pub(crate) mod accum_bands;
 pub(crate) mod band;
 pub(crate) mod depth_map;
+mod fill;
 pub(crate) mod frame;
 pub(crate) mod resample;
 mod setup_queue;
