@@ -12,7 +12,7 @@
 //! `cot(fovy/2)` and quotients are computed from Q2.30 sines and correctly rounded
 //! division-free quotients, so every entry is within about one ulp of the exact value.
 
-use super::acc::{dot3_plus_fit, dot3_q16_shared, fit, prod, saturate, sum_q32};
+use super::acc::{dot3_plus_fit, prod, saturate, sum_q32};
 use super::recip::{div_round, signed_fx};
 use super::trig::{sin_cos, sin_cos_q30};
 use super::{Angle, Fx, Vec3, Vec4};
@@ -230,12 +230,18 @@ impl Mat4 {
     // every caller they cost flash for no speed.
     #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
     pub fn transform_vector(&self, v: Vec3) -> Option<Vec3> {
+        // As a row plus a zero translation: the same value where it fits, `None` where it
+        // does not, and where 64-bit products are single instructions three
+        // multiply-accumulates and one rounding (tested against the exact split sums; the
+        // lit whole-frame sphere's normals, Cortex-M4F: 174.46 -> 173.97 instructions per
+        // pixel).
         let r = |i: usize| {
             let row = &self.m[i];
-            fit(dot3_q16_shared(
+            dot3_plus_fit(
                 [row[0].to_bits(), row[1].to_bits(), row[2].to_bits()],
                 [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()],
-            ))
+                0,
+            )
         };
         Some(Vec3::new(r(0)?, r(1)?, r(2)?))
     }
@@ -580,5 +586,50 @@ mod tests {
         assert!(bad(Mat4::look_at(e, Vec3::ZERO, v([-1., -2., -3.]))));
         let far = Vec3::new(Fx::MAX, Fx::ZERO, Fx::ZERO);
         assert!(bad(Mat4::look_at(far, -far, v([0., 1., 0.]))));
+    }
+
+    /// `transform_vector` gives the exactly rounded row sums (`sum_q32` of the exact
+    /// products) where they fit `Fx` and `None` where they do not, on random, extreme and
+    /// overflowing operands.
+    #[test]
+    fn transform_vector_is_the_exact_row_sum() {
+        let mut rng = crate::test_rng::Rng(0x7e57_0001);
+        // Every other case in normal ranges (below 8 in magnitude), the rest anywhere.
+        let pick = |r: u64, small: bool| -> i32 {
+            if small {
+                return ((r >> 8) as i32) >> (12 + r % 8);
+            }
+            match r % 5 {
+                0 => i32::MIN,
+                1 => i32::MAX,
+                2 => (r >> 8) as i32 >> (r % 31),
+                3 => ((r >> 8) as i32 % (1 << 17)) - (1 << 16),
+                _ => (r >> 16) as i32,
+            }
+        };
+        let mut fits = [0u32; 2];
+        for n in 0..50_000 {
+            let small = n % 2 == 0;
+            let mut m = Mat4::IDENTITY;
+            for row in m.m.iter_mut() {
+                for e in row.iter_mut() {
+                    *e = Fx::from_bits(pick(rng.next(), small));
+                }
+            }
+            let v = Vec3::new(
+                Fx::from_bits(pick(rng.next(), small)),
+                Fx::from_bits(pick(rng.next(), small)),
+                Fx::from_bits(pick(rng.next(), small)),
+            );
+            let exact = |i: usize| {
+                let p = |k: usize, x: Fx| prod(m.m[i][k], x);
+                let bits = sum_q32([p(0, v.x), p(1, v.y), p(2, v.z)]);
+                i32::try_from(bits).ok().map(Fx::from_bits)
+            };
+            let want = (|| Some(Vec3::new(exact(0)?, exact(1)?, exact(2)?)))();
+            assert_eq!(m.transform_vector(v), want);
+            fits[usize::from(want.is_some())] += 1;
+        }
+        assert!(fits[0] > 1000 && fits[1] > 1000, "{fits:?}");
     }
 }
