@@ -4,7 +4,7 @@
 //! short path). A blending shader reads the pixel it covers; a discarding one writes its
 //! depth here (the depth pass, [`super::depth_pass`], only tested it).
 
-use super::depth_pass::low_bits;
+use super::depth_pass::{low_bits, low_bits_short};
 use crate::color::TargetColor;
 use crate::pipeline::interp::step;
 use crate::pipeline::stages::DepthStage;
@@ -122,7 +122,7 @@ macro_rules! shade_every {
 /// out-of-line function measured one instruction per pixel more on Cortex-M4F (LLVM
 /// inlines its callees in another order), so the two are expanded separately.
 macro_rules! shade_linear_fn {
-    ($(#[$attr:meta])* $name:ident) => {
+    ($(#[$attr:meta])* $name:ident, $full:ident) => {
         $(#[$attr])*
         #[allow(clippy::too_many_arguments)]
         pub(super) fn $name<S: Shader, C: TargetColor, D: DepthStage, const ZW: bool>(
@@ -150,7 +150,7 @@ macro_rules! shade_linear_fn {
                 triangle,
             };
             let mut written = 0u32;
-            if !ZW && !S::DISCARDS && (!D::TEST || mask == low_bits(out.len())) {
+            if !ZW && !S::DISCARDS && (!D::TEST || mask == $full(out.len())) {
                 if !S::BLENDS && shader.piece_in_range(&v, &slope, out.len() as u32) {
                     shade_every!(out, v, slope, frag, |f, _o| shader.shade_in_range(f));
                 }
@@ -184,12 +184,16 @@ shade_linear_fn!(
     /// and a shader that never discards, every mask is full: only the unmasked loop is
     /// linked (about 0.7 KB less on Cortex-M4F).
     #[inline(never)]
-    shade_linear
+    shade_linear,
+    low_bits
 );
 
 shade_linear_fn!(
     /// [`shade_linear`] inlined, for the short path ([`span_short`](super::span_short)): a short span then
     /// costs no call and no reload of the shader's uniforms.
+    /// Its spans are never empty and at most a chunk long (the full mask is
+    /// [`low_bits_short`]).
     #[inline(always)]
-    shade_linear_inline
+    shade_linear_inline,
+    low_bits_short
 );
