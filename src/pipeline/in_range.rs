@@ -26,6 +26,10 @@ use crate::texture::LodGranularity;
 /// Those always run the plain shader, so a proven triangle links no second copy of the
 /// long-span loops (about 8 KB on Cortex-M4F), only of the short path.
 pub(crate) trait RangeProof {
+    /// Whether the triangle is known to be affine (a proof is only ever made for an affine
+    /// triangle: its short spans then skip the per-span test of it).
+    const AFFINE: bool;
+
     /// The shader of the triangle's short spans.
     type Short<S: Shader>: Shader<Varyings = S::Varyings, Triangle = S::Triangle>;
 
@@ -44,6 +48,7 @@ pub(crate) trait RangeProof {
 pub(crate) struct Unproven;
 
 impl RangeProof for Unproven {
+    const AFFINE: bool = false;
     type Short<S: Shader> = S;
 
     #[inline(always)]
@@ -64,6 +69,7 @@ impl RangeProof for Unproven {
 pub(crate) struct Proven;
 
 impl RangeProof for Proven {
+    const AFFINE: bool = true;
     type Short<S: Shader> = InRange<S>;
 
     #[inline(always)]

@@ -93,6 +93,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof
                 x0,
                 out,
                 depth.as_deref_mut(),
+                K::AFFINE,
             );
             let n = match short {
                 Some(n) => n,
@@ -121,6 +122,9 @@ where
     D: DepthStage,
     C: TargetColor,
 {
+    // A typed draw's depth stage is its mode: only the run-time projection's draws switch
+    // the test off at run time (the span loops read the switch for those alone).
+    debug_assert!(P::KIND == ProjKind::Dynamic || !D::TEST || params.depth_on);
     let vp = params.viewport;
     let (r0, r1) = target.row_range();
     let clip = Rect {
