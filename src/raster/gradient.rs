@@ -145,10 +145,19 @@ impl PlaneSetup {
                 let gxw = wide::dot2(d1, d2, c[0], c[1]);
                 let gyw = wide::dot2(d1, d2, c[2], c[3]);
                 let round = self.bary_round;
-                (
-                    wide::sar(gxw.wrapping_add(round), cs),
-                    wide::sar(gyw.wrapping_add(round), cs),
-                )
+                // `cs` is in 1..=62: each half of the shift written for its range (see
+                // `sar_below_32`).
+                if cs >= 32 {
+                    (
+                        i64::from(sar_high(gxw.wrapping_add(round), cs)),
+                        i64::from(sar_high(gyw.wrapping_add(round), cs)),
+                    )
+                } else {
+                    (
+                        sar_below_32(gxw.wrapping_add(round), cs),
+                        sar_below_32(gyw.wrapping_add(round), cs),
+                    )
+                }
             } else {
                 self.exact_gradients(a)
             };
@@ -204,6 +213,26 @@ impl PlaneSetup {
             dy: (gy.wrapping_add(half) >> EXTRA) as i32,
         }
     }
+}
+
+/// `x >> s` (arithmetic) for `s` in `32..=63`: the high word shifted by `s - 32` (the
+/// value fits `i32`), in two instructions on 32-bit cores.
+#[inline(always)]
+fn sar_high(x: i64, s: u32) -> i32 {
+    ((x >> 32) as i32) >> (s.wrapping_sub(32) & 31)
+}
+
+/// `x >> s` (arithmetic) for `s` in `1..=31`, word by word: five instructions on 32-bit
+/// cores, where LLVM's 64-bit shift by a register tests for shifts past 32 (eleven). With
+/// [`sar_high`], the barycentric planes' shift (`cs`, `1..=62`) of
+/// [`PlaneSetup::plane`]: Cortex-M4F whole-frame sphere 170.04 -> 168.93 instructions per
+/// pixel, Cortex-M0+ 322.91 -> 322.42, RV32IMC 198.92 -> 198.62.
+#[inline(always)]
+fn sar_below_32(x: i64, s: u32) -> i64 {
+    let (hi, lo) = ((x >> 32) as i32, x as u32);
+    let s = s & 31;
+    let lo = (lo >> s) | (hi as u32).wrapping_shl(32 - s);
+    (i64::from(hi >> s) << 32) | i64::from(lo)
 }
 
 /// `num 2^(SHIFT + cshift) / area2` for the four numerators (the barycentric weights'
@@ -358,6 +387,22 @@ impl Plane {
 mod tests {
     extern crate std;
     use super::*;
+
+    /// The plane's two word-wise shifts are `wide::sar` over their ranges of `s`.
+    #[test]
+    fn split_shifts_equal_the_64_bit_shift() {
+        let mut rng = crate::test_rng::Rng(0x5A5_1F7);
+        for i in 0..200_000u32 {
+            let x = (rng.next() as i64) >> (i % 40);
+            let s = 1 + i % 62;
+            let want = wide::sar(x, s);
+            if s >= 32 {
+                assert_eq!(i64::from(sar_high(x, s)), want, "{x} >> {s}");
+            } else {
+                assert_eq!(sar_below_32(x, s), want, "{x} >> {s}");
+            }
+        }
+    }
 
     fn exact(v: [(i32, i32); 3], a: [i32; 3], px: i32, py: i32) -> f64 {
         let one = f64::from(1u32 << ATTR_SUBPIXEL_BITS);
