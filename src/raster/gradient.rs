@@ -136,10 +136,15 @@ impl PlaneSetup {
     #[inline(never)]
     pub fn plane(&self, a: [i32; 3]) -> Plane {
         let cs = self.cshift;
-        let (d1, o1) = a[1].overflowing_sub(a[0]);
-        let (d2, o2) = a[2].overflowing_sub(a[0]);
+        let d1 = a[1].wrapping_sub(a[0]);
+        let d2 = a[2].wrapping_sub(a[0]);
+        // A difference overflowed when it has not the sign of `a[k] - a[0]`: both operands'
+        // signs differ and the result's differs from the minuend's. Both tests in one sign
+        // bit (fewer instructions than two overflow flags on Cortex-M).
+        let wrapped = ((a[1] ^ a[0]) & (a[1] ^ d1)) | ((a[2] ^ a[0]) & (a[2] ^ d2));
         let (gx, gy) =
-            if cs != 0 && !(o1 | o2) && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
+            if cs != 0 && wrapped >= 0 && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below
+            {
                 let c = &self.bary;
                 // Each product is below 2^62 in magnitude: the sums fit i64.
                 let gxw = wide::dot2(d1, d2, c[0], c[1]);
@@ -387,6 +392,24 @@ impl Plane {
 mod tests {
     extern crate std;
     use super::*;
+
+    /// The plane's one-sign-bit test of its two differences is their overflow flags'.
+    #[test]
+    fn wrapped_differences_are_the_overflow_flags() {
+        let mut rng = crate::test_rng::Rng(0x0F1_0A7);
+        let edges = [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX - 1, i32::MAX];
+        for i in 0..300_000u32 {
+            let pick = |rng: &mut crate::test_rng::Rng| match i % 3 {
+                0 => edges[(rng.next() % 7) as usize],
+                _ => (rng.next() >> (32 + i % 32)) as u32 as i32,
+            };
+            let a = [pick(&mut rng), pick(&mut rng), pick(&mut rng)];
+            let (d1, o1) = a[1].overflowing_sub(a[0]);
+            let (d2, o2) = a[2].overflowing_sub(a[0]);
+            let wrapped = ((a[1] ^ a[0]) & (a[1] ^ d1)) | ((a[2] ^ a[0]) & (a[2] ^ d2));
+            assert_eq!(wrapped < 0, o1 | o2, "{a:?}");
+        }
+    }
 
     /// The plane's two word-wise shifts are `wide::sar` over their ranges of `s`.
     #[test]
