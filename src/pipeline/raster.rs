@@ -74,6 +74,38 @@ struct Writer<'t, S: Shader, P, D, C, K: RangeProof> {
     _stages: core::marker::PhantomData<(P, D, K)>,
 }
 
+/// The body of the writer's span functions: the span `$x0..$x1` of row `$y` sliced out of
+/// the target's buffers (the rasterizer clipped the span to the target: the slicing checks
+/// alone) and drawn, then `$drawn` with the pixels written bound to `$n`; `$none` when the
+/// slicing refuses it. One body, two functions ([`COUNT_IN_LOOP`](crate::raster::COUNT_IN_LOOP)
+/// picks which one the row loop calls): as a shared inlined method, the Cortex-M0+ span
+/// writer allocated its registers worse (whole-frame sphere +4 instructions per pixel).
+macro_rules! draw_span {
+    ($w:ident, $y:ident, $x0:ident, $x1:ident, |$n:ident| $drawn:expr, $none:expr) => {
+        if let Some((out, mut depth)) = $w.rows.span_in_clip($y, $x0, $x1) {
+            // The short path inlined here; every other span through `span`, out of line.
+            let short = span_short::<K::Short<S>, P, D, C>(
+                &$w.ctx,
+                &mut $w.bound,
+                $y,
+                $x0,
+                out,
+                depth.as_deref_mut(),
+                K::AFFINE,
+            );
+            let $n = match short {
+                Some(n) => n,
+                None => K::with_plain(&$w.ctx, |ctx| {
+                    span::<S, P, D, C>(ctx, &mut $w.bound, &mut $w.scratch, $y, $x0, out, depth)
+                }),
+            };
+            $drawn
+        } else {
+            $none
+        }
+    };
+}
+
 impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof> SpanSink
     for Writer<'_, S, P, D, C, K>
 {
@@ -82,27 +114,21 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof
     // for `Draw::dynamic` on Cortex-M4F).
     #[inline(never)]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
-        // The span's pixels, colour and depth, sliced out of the target's buffers (the
-        // rasterizer clipped the span to the target: the slicing checks alone).
-        if let Some((out, mut depth)) = self.rows.span_in_clip(y, x0, x1) {
-            // The short path inlined here; every other span through `span`, out of line.
-            let short = span_short::<K::Short<S>, P, D, C>(
-                &self.ctx,
-                &mut self.bound,
-                y,
-                x0,
-                out,
-                depth.as_deref_mut(),
-                K::AFFINE,
-            );
-            let n = match short {
-                Some(n) => n,
-                None => K::with_plain(&self.ctx, |ctx| {
-                    span::<S, P, D, C>(ctx, &mut self.bound, &mut self.scratch, y, x0, out, depth)
-                }),
-            };
-            self.pixels = self.pixels.wrapping_add(n);
-        }
+        draw_span!(
+            self,
+            y,
+            x0,
+            x1,
+            |n| self.pixels = self.pixels.wrapping_add(n),
+            ()
+        )
+    }
+
+    /// [`span`](SpanSink::span) returning the pixels written, which the row loop sums in a
+    /// register where it calls this ([`COUNT_IN_LOOP`](crate::raster::COUNT_IN_LOOP)).
+    #[inline(never)]
+    fn span_counted(&mut self, y: i32, x0: i32, x1: i32) -> u32 {
+        draw_span!(self, y, x0, x1, |n| n, 0)
     }
 }
 
@@ -203,20 +229,22 @@ where
                 pixels: 0,
                 _stages: core::marker::PhantomData,
             };
-            if let Some(_) = S::RANGE_VARYING {
+            // The pixels written, summed by the row loop.
+            let pixels = if let Some(_) = S::RANGE_VARYING {
                 // Two writers (`S` and `InRange<S>`): each with its own rasterizer, which
                 // calls it directly (behind one `dyn` sink the rasterizer stayed out of
                 // line, with an indirect call per row: +1.9 per pixel on the Cortex-M4F
                 // sphere).
-                rasterize(corners, clip, &mut w);
+                rasterize(corners, clip, &mut w)
             } else {
                 // Through `dyn`: one copy of the edge walker for every span loop (LLVM
                 // calls the writer directly where it sees which it is).
                 let sink: &mut dyn SpanSink = &mut w;
-                rasterize(corners, clip, sink);
-            }
-            // Read out before the target is borrowed again (the writer lends its rows).
-            (w.pixels, w.bound.lowest)
+                rasterize(corners, clip, sink)
+            };
+            // Read out before the target is borrowed again (the writer lends its rows). The
+            // row loop summed the pixels, or the writer did (`COUNT_IN_LOOP`).
+            (pixels.wrapping_add(w.pixels), w.bound.lowest)
         }};
     }
     // A match on the constant, so that a shader without a range-checked varying does not
