@@ -120,26 +120,18 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
     }
     let mut count = 0u32;
     let mut long = EdgeWalker::new(top, bot, row_top);
-    // Upper half: rows with centre in [top.y, mid.y).
-    if row_top < row_mid {
-        let mut short = EdgeWalker::new(top, mid, row_top);
-        count = walk(
-            &mut long,
-            &mut short,
-            mid_right,
-            row_top,
-            row_mid.min(row_bot),
-            clip,
-            sink,
-        );
-    }
-    // Lower half: rows with centre in [mid.y, bot.y).
+    // Upper half: rows with centre in [top.y, mid.y); lower half: [mid.y, bot.y). One
+    // loop over the two, so the row loop and the short edge's set-up are one copy each.
     let start = row_mid.max(row_top);
-    if start < row_bot {
-        let mut short = EdgeWalker::new(mid, bot, start);
-        count = count.wrapping_add(walk(
-            &mut long, &mut short, mid_right, start, row_bot, clip, sink,
-        ));
+    let halves = [
+        (top, mid, row_top, row_mid.min(row_bot)),
+        (mid, bot, start, row_bot),
+    ];
+    for (a, b, y0, y1) in halves {
+        if y0 < y1 {
+            let mut short = EdgeWalker::new(a, b, y0);
+            count = count.wrapping_add(walk(&mut long, &mut short, mid_right, y0, y1, clip, sink));
+        }
     }
     count
 }
