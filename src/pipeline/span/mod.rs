@@ -492,7 +492,9 @@ const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")
 /// With the short path's known affine flag, on the whole-frame sphere: Cortex-M4F 172.43 ->
 /// 170.04 instructions per pixel, RV32IMC 200.01 -> 198.92. ARMv6-M reads the switch
 /// still: without the read there its span writer allocated registers worse (322.91 ->
-/// 324.43).
+/// 324.43). Only the inlined short path ([`span_short`]) uses it: the out-of-line span loop
+/// ([`span`]) reads the switch, as without it the whole-frame cube cost 100.24 -> 101.55 on
+/// Cortex-M4F (the span loop's registers allocated worse).
 #[inline(always)]
 pub(crate) fn depth_enabled<S: Shader, P: ProjectionStage>(ctx: &SpanCtx<'_, S>) -> bool {
     (P::KIND != ProjKind::Dynamic && !ARMV6M) || ctx.depth_on
@@ -504,13 +506,13 @@ pub(crate) fn depth_enabled<S: Shader, P: ProjectionStage>(ctx: &SpanCtx<'_, S>)
 /// 47.34 -> 46.47 instructions per pixel); on Cortex-M4F and x86-64 the cut costs (floor
 /// 27.11 -> 27.49, callgrind 39.35 -> 39.71).
 #[inline(always)]
-fn span_depth<'z, S: Shader, P: ProjectionStage, D: DepthStage>(
+fn span_depth<'z, S: Shader, D: DepthStage>(
     ctx: &SpanCtx<'_, S>,
     depth: Option<&'z mut [u16]>,
     len: usize,
 ) -> Option<&'z mut [u16]> {
     const CUT: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
-    if !(D::TEST && depth_enabled::<S, P>(ctx)) {
+    if !(D::TEST && ctx.depth_on) {
         None
     } else if CUT {
         depth.and_then(|d| d.get_mut(..len))
@@ -532,7 +534,7 @@ pub(crate) fn span<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>
     out: &mut [C],
     depth: Option<&mut [u16]>,
 ) -> u32 {
-    let zrow = span_depth::<S, P, D>(ctx, depth, out.len());
+    let zrow = span_depth::<S, D>(ctx, depth, out.len());
     type E<S> = ExactInterp<<S as Shader>::Varyings>;
     type L<S, const SUB: bool> = Linear<<S as Shader>::Varyings, SUB>;
     type Q<S> = Quadratic<<S as Shader>::Varyings, false>;
