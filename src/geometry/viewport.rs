@@ -189,12 +189,17 @@ pub(crate) fn depth_div(z: i32, w: i32) -> i32 {
 }
 
 /// Whether projection divides (two 64-bit quotients per axis and one for depth) rather
-/// than multiplying by one reciprocal of `w` (`project_recip`: the same integers). Only on
-/// 64-bit hosts, where a 64-bit division is one instruction. On 32-bit cores the quotients
-/// are library divisions even with a 32-bit divide instruction, and the reciprocal costs
-/// less: whole-frame sphere on Cortex-M4F 168.93 -> 167.89 instructions per pixel, RV32IMC
-/// 198.72 -> 196.95 (Cortex-M0+, without a divide instruction, used it already).
-const PROJECT_BY_DIVISION: bool = cfg!(target_pointer_width = "64");
+/// than multiplying by one reciprocal of `w` (`project_recip`: the same integers). On
+/// RV32IMC the quotients are library divisions despite its divide instruction, and the
+/// reciprocal costs less: whole-frame sphere 198.72 -> 196.78 instructions per pixel.
+/// Cortex-M0+, without a divide instruction, always used it. Cortex-M4F keeps dividing:
+/// the reciprocal saved it 1.0 per pixel on the sphere (168.93 -> 167.93) but links its
+/// 1 KB table into every firmware, which took the minimal open-stage firmware over its
+/// 10 KB bar (10,084 -> 11,172 B). 64-bit hosts divide in one instruction.
+const PROJECT_BY_DIVISION: bool = !cfg!(any(
+    target_arch = "riscv32",
+    all(target_arch = "arm", not(target_has_atomic = "32"))
+));
 
 /// The guard band's half-extent in 1/16 pixel: window positions beyond it are clamped
 /// (only vertices the clipper will cut). A constant, not a captured local: the closure

@@ -136,23 +136,31 @@ impl PlaneSetup {
     #[inline(never)]
     pub fn plane(&self, a: [i32; 3]) -> Plane {
         let cs = self.cshift;
-        let d1 = a[1].wrapping_sub(a[0]);
-        let d2 = a[2].wrapping_sub(a[0]);
-        // A difference overflowed when it has not the sign of `a[k] - a[0]`: both operands'
-        // signs differ and the result's differs from the minuend's. Both tests in one sign
-        // bit (fewer instructions than two overflow flags on Cortex-M).
-        let wrapped = ((a[1] ^ a[0]) & (a[1] ^ d1)) | ((a[2] ^ a[0]) & (a[2] ^ d2));
+        let (d1, o1) = a[1].overflowing_sub(a[0]);
+        let (d2, o2) = a[2].overflowing_sub(a[0]);
+        // On 32-bit cores both tests in one sign bit (fewer instructions than two overflow
+        // flags there): a difference overflowed when both operands' signs differ and the
+        // result's differs from the minuend's.
+        let wrapped = if cfg!(target_pointer_width = "64") {
+            o1 | o2
+        } else {
+            ((a[1] ^ a[0]) & (a[1] ^ d1)) | ((a[2] ^ a[0]) & (a[2] ^ d2)) < 0
+        };
         let (gx, gy) =
-            if cs != 0 && wrapped >= 0 && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below
-            {
+            if cs != 0 && !wrapped && (d1.unsigned_abs() | d2.unsigned_abs()) < self.bary_below {
                 let c = &self.bary;
                 // Each product is below 2^62 in magnitude: the sums fit i64.
                 let gxw = wide::dot2(d1, d2, c[0], c[1]);
                 let gyw = wide::dot2(d1, d2, c[2], c[3]);
                 let round = self.bary_round;
-                // `cs` is in 1..=62: each half of the shift written for its range (see
-                // `sar_below_32`).
-                if cs >= 32 {
+                // `cs` is in 1..=62: on 32-bit cores each half of the shift written for
+                // its range (see `sar_below_32`).
+                if cfg!(target_pointer_width = "64") {
+                    (
+                        wide::sar(gxw.wrapping_add(round), cs),
+                        wide::sar(gyw.wrapping_add(round), cs),
+                    )
+                } else if cs >= 32 {
                     (
                         i64::from(sar_high(gxw.wrapping_add(round), cs)),
                         i64::from(sar_high(gyw.wrapping_add(round), cs)),

@@ -68,13 +68,11 @@ pub trait SpanSink {
 /// Whether the row loop sums the sink's counts ([`SpanSink::span_counted`]) or calls
 /// [`SpanSink::span`], leaving a sink to count for itself: on Cortex-M4F the sum in a
 /// register spares the span writer a load and a store per span (whole-frame sphere 167.93
-/// -> 166.97 instructions per pixel); on Cortex-M0+ (eight low registers) and RV32IMC the
-/// one more value in the row loop cost more (321.31 -> 326.30, 196.78 -> 197.63). A sink
-/// that counts implements both: [`rasterize`] returns 0 where the loop does not sum.
-pub const COUNT_IN_LOOP: bool = !cfg!(any(
-    all(target_arch = "arm", not(target_has_atomic = "32")),
-    target_arch = "riscv32"
-));
+/// -> 166.97 instructions per pixel); on Cortex-M0+ (eight low registers), RV32IMC and
+/// x86-64 the one more value in the row loop cost more (321.31 -> 326.30, 196.78 ->
+/// 197.63, callgrind 239.4 -> 241.4). A sink that counts implements both: [`rasterize`]
+/// returns 0 where the loop does not sum.
+pub const COUNT_IN_LOOP: bool = cfg!(all(target_arch = "arm", target_has_atomic = "32"));
 
 /// First pixel row whose centre is at or below `y` (sub-pixel units): `ceil((y - 8) / 16)`.
 #[inline]
