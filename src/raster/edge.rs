@@ -149,11 +149,15 @@ impl EdgeWalker {
     /// Starts the walk at pixel row `py` for the edge `top -> bottom` (sub-pixel units,
     /// `top.1 < bottom.1`, both inside the guard band).
     ///
-    /// Inlined: the rasterizer calls it at two places (the long edge, and the short one in
-    /// its loop over the two halves). Whole-frame sphere 167.06 -> 165.38 instructions per
-    /// pixel on Cortex-M4F, 196.78 -> 194.54 on RV32IMC, 321.31 -> 321.83 on Cortex-M0+,
-    /// for about 0.4 KB of flash per rasterizer (0.7 KB on Cortex-M0+).
-    #[inline(always)]
+    /// Inlined but on ARMv6-M: the rasterizer calls it at two places (the long edge, and the
+    /// short one in its loop over the two halves). Whole-frame sphere 167.06 -> 165.38
+    /// instructions per pixel on Cortex-M4F, 196.78 -> 194.54 on RV32IMC, for about 0.4 KB
+    /// of flash per rasterizer; on Cortex-M0+ inlined it cost 0.5 per pixel more and 0.7 KB
+    /// per rasterizer (2.2 KB in the shadow firmwares), so there it stays out of line.
+    #[cfg_attr(
+        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+        inline(always)
+    )]
     pub fn new(top: (i32, i32), bottom: (i32, i32), py: i32) -> Self {
         // Inside the guard band every difference and product operand fits `i32`; the two
         // products are `i32 x i32 -> i64` (no 64-bit library multiply on Cortex-M0+).
