@@ -9,6 +9,7 @@
 //! its per-row stepping in `i32`.
 
 use super::project_recip::depth_recip;
+use crate::math::div::HW_DIVIDE;
 use crate::math::recip32::Recip32;
 use crate::math::{div_floor_i64, div_round_i64};
 use crate::raster::{
@@ -189,17 +190,13 @@ pub(crate) fn depth_div(z: i32, w: i32) -> i32 {
 }
 
 /// Whether projection divides (two 64-bit quotients per axis and one for depth) rather
-/// than multiplying by one reciprocal of `w` (`project_recip`: the same integers). On
-/// RV32IMC the quotients are library divisions despite its divide instruction, and the
-/// reciprocal costs less: whole-frame sphere 198.72 -> 196.78 instructions per pixel.
-/// Cortex-M0+, without a divide instruction, always used it. Cortex-M4F keeps dividing:
-/// the reciprocal saved it 1.0 per pixel on the sphere (168.93 -> 167.93) but links its
-/// 1 KB table into every firmware, which took the minimal open-stage firmware over its
-/// 10 KB bar (10,084 -> 11,172 B). 64-bit hosts divide in one instruction.
-const PROJECT_BY_DIVISION: bool = !cfg!(any(
-    target_arch = "riscv32",
-    all(target_arch = "arm", not(target_has_atomic = "32"))
-));
+/// than multiplying by one reciprocal of `w` (`project_recip`: the same integers): on every
+/// core with a divide instruction. Cortex-M0+ has none. Measured in session 35 on the
+/// others: the reciprocal saved the whole-frame sphere 1.0 instructions per pixel on
+/// Cortex-M4F and 1.9 on RV32IMC, but on Cortex-M4F its 1 KB table took the minimal
+/// open-stage firmware over its 10 KB bar (10,084 -> 11,172 B), and on RV32IMC LLVM then
+/// inlined the vertex preparation into the mesh walk (+7 KB in every whole-frame firmware).
+const PROJECT_BY_DIVISION: bool = HW_DIVIDE;
 
 /// The guard band's half-extent in 1/16 pixel: window positions beyond it are clamped
 /// (only vertices the clipper will cut). A constant, not a captured local: the closure
