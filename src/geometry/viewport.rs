@@ -103,8 +103,15 @@ impl Viewport {
     /// `0..=65535 << 14`: the exact roundings of the exact values, by division where the
     /// core has a divide instruction, through one reciprocal of `w` where it has not (see
     /// `project_recip`; the same integers).
+    ///
+    /// Measured in session 35 on the cores with a divide instruction, where the 64-bit
+    /// quotients are library divisions: the reciprocal saved the whole-frame sphere 1.0
+    /// instructions per pixel on Cortex-M4F and 1.9 on RV32IMC, but on Cortex-M4F its 1 KB
+    /// table took the minimal open-stage firmware over its 10 KB bar (10,084 -> 11,172 B),
+    /// and on RV32IMC LLVM then inlined the vertex preparation into the mesh walk (+7 KB in
+    /// every whole-frame firmware). They divide.
     pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
-        if PROJECT_BY_DIVISION {
+        if HW_DIVIDE {
             let (sx, sy, sub) = self.project_xy_div(x, y, w);
             (sx, sy, sub, depth_div(z, w))
         } else {
@@ -136,7 +143,7 @@ impl Viewport {
     /// small quotient. Both are the exact roundings of the exact position: divisions where
     /// the core has a divide instruction, a reciprocal of `w` where it has not.
     pub(crate) fn project_xy(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
-        if PROJECT_BY_DIVISION {
+        if HW_DIVIDE {
             self.project_xy_div(x, y, w)
         } else {
             self.project_xy_recip(x, y, &Recip32::at_least_one(w))
@@ -172,7 +179,7 @@ impl Viewport {
     /// The depth part of [`project`](Self::project) alone (the walker's binning pass
     /// needs only rows and winding, and completes the depth when a band needs it).
     pub(crate) fn project_z(&self, z: i32, w: i32) -> i32 {
-        if PROJECT_BY_DIVISION {
+        if HW_DIVIDE {
             depth_div(z, w)
         } else {
             depth_recip(z, &Recip32::at_least_one(w))
@@ -188,15 +195,6 @@ pub(crate) fn depth_div(z: i32, w: i32) -> i32 {
     let d = div_round_i64(mul_i32_i64(z, DEPTH_K), i64::from(w.max(1)));
     (d + DEPTH_K).clamp(0, 65535 << 14) as i32
 }
-
-/// Whether projection divides (two 64-bit quotients per axis and one for depth) rather
-/// than multiplying by one reciprocal of `w` (`project_recip`: the same integers): on every
-/// core with a divide instruction. Cortex-M0+ has none. Measured in session 35 on the
-/// others: the reciprocal saved the whole-frame sphere 1.0 instructions per pixel on
-/// Cortex-M4F and 1.9 on RV32IMC, but on Cortex-M4F its 1 KB table took the minimal
-/// open-stage firmware over its 10 KB bar (10,084 -> 11,172 B), and on RV32IMC LLVM then
-/// inlined the vertex preparation into the mesh walk (+7 KB in every whole-frame firmware).
-const PROJECT_BY_DIVISION: bool = HW_DIVIDE;
 
 /// The guard band's half-extent in 1/16 pixel: window positions beyond it are clamped
 /// (only vertices the clipper will cut). A constant, not a captured local: the closure

@@ -32,6 +32,10 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
+/// True on ARMv6-M (Cortex-M0/M0+): no divide instruction, no 32 x 32 -> 64-bit multiply,
+/// eight low registers. The measured per-core choices of the pipeline test it.
+pub(crate) const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+
 pub(crate) mod acc;
 pub(crate) mod div;
 pub(crate) mod mat;

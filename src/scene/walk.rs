@@ -448,7 +448,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
 /// Not on ARMv6-M, whose plane test is four 64-bit products in software (about 190
 /// instructions either way): there the calls cost more than the loop saved (322.91 ->
 /// 323.45).
-const SKIP_RUNS: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+const SKIP_RUNS: bool = !crate::math::ARMV6M;
 
 /// The first of `from..end` whose baked plane (`planes`) the test `f` (largest margin
 /// `margin`) does not cull, or `end`: the rest of a run of culled triangles, in a loop that

@@ -29,7 +29,7 @@ pub(super) fn low_bits(n: usize) -> u32 {
 /// its shifts by a register do not mask the amount, so the wrapping shift costs an `and`).
 #[inline(always)]
 pub(super) fn low_bits_short(n: usize) -> u32 {
-    if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
+    if crate::math::ARMV6M {
         low_bits(n)
     } else {
         u32::MAX.wrapping_shr(32u32.wrapping_sub(n as u32))

@@ -481,9 +481,6 @@ pub(crate) const fn inline_short_path<S: Shader, P: ProjectionStage, D: DepthSta
     D::TEST && !S::LOD && matches!(P::KIND, ProjKind::Affine | ProjKind::Adaptive)
 }
 
-/// ARMv6-M (Cortex-M0+), where some choices below measured the other way.
-const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
-
 /// Whether the draw tests depth, given that its depth stage does
 /// ([`DepthStage::TEST`]): a typed draw's stages are its mode, so only the run-time
 /// projection's draws (`Draw::dynamic`) read their run-time switch (one test fewer per span
@@ -497,7 +494,7 @@ const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_has_atomic = "32")
 /// Cortex-M4F (the span loop's registers allocated worse).
 #[inline(always)]
 pub(crate) fn depth_enabled<S: Shader, P: ProjectionStage>(ctx: &SpanCtx<'_, S>) -> bool {
-    (P::KIND != ProjKind::Dynamic && !ARMV6M) || ctx.depth_on
+    (P::KIND != ProjKind::Dynamic && !crate::math::ARMV6M) || ctx.depth_on
 }
 
 /// The span's depths when the draw tests depth. On ARMv6-M they are cut to the span's
