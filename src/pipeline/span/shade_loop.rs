@@ -197,3 +197,63 @@ shade_linear_fn!(
     shade_linear_inline,
     low_bits_short
 );
+
+/// The inlined short path's loop with the depth test in it: for each pixel, the 16-bit
+/// depth (`z >> 14` saturated) tested (`GL_LESS`) and written, then the shader and the
+/// store, for a shader that neither discards nor blends. The same pixels and depths as the
+/// depth pass ([`super::depth_pass`]) followed by [`shade_linear_inline`], without the mask
+/// between them. Returns the pixels that passed the test.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn shade_depth_inline<S: Shader, C: TargetColor>(
+    shader: &S,
+    triangle: S::Triangle,
+    start: &S::Varyings,
+    slope: &S::Varyings,
+    out: &mut [C],
+    zrow: &mut [u16],
+    pos: Pos,
+) -> u32 {
+    let shader = *shader;
+    let (mut z, dz) = (pos.z, pos.dz);
+    if !shader.can_draw() {
+        // The depths alone, as the depth pass writes them before the shading loop (which
+        // then writes nothing).
+        super::depth_pass::depth_chunk::<true>(z, dz, zrow);
+        return 0;
+    }
+    let slope = *slope;
+    let mut v = *start;
+    let mut hidden = 0u32;
+    macro_rules! fused {
+        (|$f:ident, $o:ident| $colour:expr) => {
+            for (k, ($o, zb)) in out.iter_mut().zip(zrow.iter_mut()).enumerate() {
+                let d = super::depth_pass::depth_of::<true>(z);
+                if d < i32::from(*zb) {
+                    *zb = d as u16;
+                    let $f = &Fragment {
+                        varyings: v,
+                        x: pos.x.wrapping_add(k as i32),
+                        y: pos.y,
+                        depth: d as u16,
+                        lambda: pos.lambda,
+                        triangle,
+                    };
+                    if let Some(c) = $colour {
+                        *$o = C::from_rgb565(c);
+                    }
+                } else {
+                    hidden += 1;
+                }
+                z = z.wrapping_add(dz);
+                step(&mut v, &slope);
+            }
+        };
+    }
+    if shader.piece_in_range(&v, &slope, out.len() as u32) {
+        fused!(|f, _o| shader.shade_in_range(f));
+    } else {
+        fused!(|f, o| color(&shader, f, o));
+    }
+    (out.len().min(zrow.len()) as u32).wrapping_sub(hidden)
+}
