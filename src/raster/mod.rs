@@ -27,6 +27,7 @@ pub(crate) mod triangle;
 
 pub use edge::EdgeWalker;
 pub use gradient::{Plane, PlaneSetup};
+pub(crate) use triangle::rasterize_rows;
 pub use triangle::{first_row_at_or_below, rasterize, Rect, SpanSink, COUNT_IN_LOOP};
 
 /// Fractional bits of screen coordinates: 4, so one pixel is 16 sub-pixel units.

@@ -85,6 +85,23 @@ pub fn first_row_at_or_below(y: i32) -> i32 {
 /// ([`SpanSink::span_counted`]) where the row loop sums them ([`COUNT_IN_LOOP`]), else 0.
 /// Zero-area triangles emit nothing.
 pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mut S) -> u32 {
+    rasterize_rows(v, clip, sink, false)
+}
+
+/// [`rasterize`], with `unclamped_rows`: a triangle within the columns of `clip`
+/// ([`within_columns`]) then takes row loops that do not clamp its spans to them (the same
+/// spans). A constant where it is inlined: the draws of meshes of small triangles pass
+/// `true` and link two more copies of the row loop (about 0.3 KB on Cortex-M4F; the minimal
+/// firmwares, which pass `false`, do not). On the whole-frame sphere: Cortex-M4F 162.96 ->
+/// 162.29 instructions per pixel, RV32IMC 193.66 -> 193.15; not on ARMv6-M (see the
+/// caller).
+#[inline(always)]
+pub(crate) fn rasterize_rows<S: SpanSink + ?Sized>(
+    v: [(i32, i32); 3],
+    clip: Rect,
+    sink: &mut S,
+    unclamped_rows: bool,
+) -> u32 {
     let mut p = v;
     // Sort by y (a stable 3-element network).
     if p[1].1 < p[0].1 {
@@ -125,20 +142,44 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
         (top, mid, row_top, row_mid.min(row_bot)),
         (mid, bot, start, row_bot),
     ];
+    let inside = unclamped_rows && within_columns([top.0, mid.0, bot.0], clip);
     for (a, b, y0, y1) in halves {
         if y0 < y1 {
             let mut short = EdgeWalker::new(a, b, y0);
-            count = count.wrapping_add(walk(&mut long, &mut short, mid_right, y0, y1, clip, sink));
+            let (long, short) = (&mut long, &mut short);
+            count = count.wrapping_add(match (inside, mid_right) {
+                (true, true) => walk::<S, false, true>(long, short, y0, y1, clip, sink),
+                (true, false) => walk::<S, false, false>(long, short, y0, y1, clip, sink),
+                (false, true) => walk::<S, true, true>(long, short, y0, y1, clip, sink),
+                (false, false) => walk::<S, true, false>(long, short, y0, y1, clip, sink),
+            });
         }
     }
     count
 }
 
+/// Whether every span of a triangle whose corners have the sub-pixel columns `x` lies
+/// within the columns of `clip`: its edges' crossings of the rows it covers lie between
+/// its corners' columns, and a corner at or right of `16 clip.x0` (at or left of `16
+/// clip.x1`) puts a span's first pixel (its end) at or right of `clip.x0` (at or left of
+/// `clip.x1`), pixel centres being half a pixel in. Then the row loop need not clamp its
+/// spans (two compares and two moves per row).
 #[inline(always)]
-fn walk<S: SpanSink + ?Sized>(
+fn within_columns(x: [i32; 3], clip: Rect) -> bool {
+    let (lo, hi) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    match (
+        clip.x0.checked_mul(SUBPIXEL_ONE),
+        clip.x1.checked_mul(SUBPIXEL_ONE),
+    ) {
+        (Some(x0), Some(x1)) => lo >= x0 && hi <= x1,
+        _ => false,
+    }
+}
+
+#[inline(always)]
+fn walk<S: SpanSink + ?Sized, const CLIP: bool, const SHORT_IS_RIGHT: bool>(
     long: &mut EdgeWalker,
     short: &mut EdgeWalker,
-    short_is_right: bool,
     y0: i32,
     y1: i32,
     clip: Rect,
@@ -146,12 +187,16 @@ fn walk<S: SpanSink + ?Sized>(
 ) -> u32 {
     let mut count = 0u32;
     for y in y0..y1 {
-        let (l, r) = if short_is_right {
+        let (l, r) = if SHORT_IS_RIGHT {
             (long.x(), short.x())
         } else {
             (short.x(), long.x())
         };
-        let (l, r) = (l.max(clip.x0), r.min(clip.x1));
+        let (l, r) = if CLIP {
+            (l.max(clip.x0), r.min(clip.x1))
+        } else {
+            (l, r)
+        };
         if l < r {
             if COUNT_IN_LOOP {
                 count = count.wrapping_add(sink.span_counted(y, l, r));
