@@ -345,6 +345,44 @@ mod tests {
         assert!(g.hits.iter().all(|&c| c == 0));
     }
 
+    /// The unclamped row loops emit the spans the clamped ones do: random triangles near
+    /// and across the clip's columns (corners on, just inside and just outside them).
+    #[test]
+    fn unclamped_rows_emit_the_clamped_spans() {
+        struct Spans(Vec<(i32, i32, i32)>);
+        impl SpanSink for Spans {
+            fn span(&mut self, y: i32, x0: i32, x1: i32) {
+                self.0.push((y, x0, x1));
+            }
+        }
+        let mut rng = crate::test_rng::Rng(0xC0_1A_B5);
+        let clip = Rect {
+            x0: 5,
+            y0: 0,
+            x1: 29,
+            y1: 40,
+        };
+        let mut inside = 0;
+        for _ in 0..20_000 {
+            let mut corner = || {
+                let r = rng.next();
+                let x = match r % 4 {
+                    0 => clip.x0 * 16 + (r >> 8) as i32 % 3 - 1,
+                    1 => clip.x1 * 16 + (r >> 8) as i32 % 3 - 1,
+                    _ => (r >> 8) as i32 % (40 * 16),
+                };
+                (x, (r >> 32) as i32 % (40 * 16))
+            };
+            let tri = [corner(), corner(), corner()];
+            inside += usize::from(within_columns([tri[0].0, tri[1].0, tri[2].0], clip));
+            let (mut a, mut b) = (Spans(Vec::new()), Spans(Vec::new()));
+            rasterize_rows(tri, clip, &mut a, false);
+            rasterize_rows(tri, clip, &mut b, true);
+            assert_eq!(a.0, b.0, "{tri:?}");
+        }
+        assert!(inside > 1_000, "{inside}");
+    }
+
     #[test]
     fn clipping_to_rows_and_columns_equals_cropping() {
         let tri = [(-300, -50), (900, 200), (100, 1000)];
