@@ -146,6 +146,17 @@ impl CachedVertex {
     }
 }
 
+impl CachedVertex {
+    /// [`CachedVertex::screen`] with its colour varyings: the vertex's intensity, capped at
+    /// [`COLOR_ONE`], on every channel (as the walker completes them).
+    #[inline(always)]
+    fn screen_lit(&self) -> ScreenVertex {
+        let mut s = self.screen();
+        s.varyings[2..].fill(i32::from(self.color.min(COLOR_ONE)) << 16);
+        s
+    }
+}
+
 /// Where the walker's screen triangles go, and which triangles it should skip.
 pub trait TriangleOut {
     /// True when every triangle is wanted and none is known to pass the cull
@@ -371,6 +382,32 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
             if !inside {
                 to_clip(draw, &ctx, idx, lit, id, codes, out);
                 continue;
+            }
+            // Corners in three distinct slots (always, with a slot per vertex), placed with
+            // depth: lit where they lie and read straight out of the cache, without the
+            // copies of the general path below (the same triangle).
+            if full && slots[0] != slots[1] && slots[1] != slots[2] && slots[0] != slots[2] {
+                let mut ready = true;
+                for k in 0..3 {
+                    match cache.get_mut(slots[k]) {
+                        Some(c) if c.state == PLACED || c.state == LIT => {
+                            if lit && c.state == PLACED {
+                                light_vertex(&ctx, usize::from(idx[k]), c);
+                            }
+                            ready &= c.state != FAILED;
+                        }
+                        _ => ready = false,
+                    }
+                }
+                if let (true, Some(a), Some(b), Some(c)) = (
+                    ready,
+                    cache.get(slots[0]),
+                    cache.get(slots[1]),
+                    cache.get(slots[2]),
+                ) {
+                    out.triangle(id, &[a.screen_lit(), b.screen_lit(), c.screen_lit()]);
+                    continue;
+                }
             }
         }
         // The corners copied out whole (prepared now for a triangle known to pass the cull, a
