@@ -108,15 +108,22 @@ use shade_loop::{shade_chunk, shade_depth_inline, shade_linear, shade_linear_inl
 /// the second loop's set-up per span.
 ///
 /// Measured on the whole-frame spheres (instructions per pixel, same checksums):
-/// - Cortex-M4F: spans of up to 4 pixels, where LLVM unrolls the fused loop whole: sized
-///   texture 166.38 -> 162.91, footprints 175.21 -> 168.42, plain bilinear 189.43 ->
-///   190.43. Every span fused cost 171.68 (the 13-register core spills in the loop); up to
-///   3 pixels gave 163.45 on the sized texture.
+/// - Cortex-M4F: spans of up to 3 pixels, where LLVM unrolls the fused loop whole: sized
+///   texture 166.38 -> 162.91 with 4, and later (with this session's other changes) 159.17
+///   (4) -> 158.59 (3); footprints 166.66 (4) -> 169.10 (3), plain bilinear 187.16 (4) ->
+///   182.34 (3). Every span fused cost 171.68 (the 13-register core spills in the loop), 5
+///   pixels 163.80.
 /// - Cortex-M0+, every span: 320.72 -> 317.10, 330.17 -> 324.82, 358.88 -> 352.86.
 /// - RV32IMC, up to 4 pixels: 196.47 -> 193.66, 200.71 -> 199.18, 224.27 -> 224.57
 ///   (every span: 191.63 on the sized texture but 234.93 on the plain bilinear one).
 /// - x86-64 (`cargo xtask count`, up to 4 pixels): 236.7 -> 235.1.
-const FUSED_MAX: usize = if crate::math::ARMV6M { CHUNK } else { 4 };
+const FUSED_MAX: usize = if crate::math::ARMV6M {
+    CHUNK
+} else if cfg!(target_arch = "arm") {
+    3
+} else {
+    4
+};
 
 /// Affine and subdivided spans: per chunk, the depth mask, then each linear piece of the
 /// chunk shaded with its varyings stepped in registers.
