@@ -8,7 +8,7 @@
 
 use super::in_range::{Proven, RangeProof, Unproven};
 use super::interp::lambda_at;
-use super::setup::{centroid, setup, TriSetup};
+use super::setup::{centroid, setup, setup_inline, TriSetup};
 use super::setup_cache::SetupSlot;
 use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
@@ -178,16 +178,29 @@ where
     });
     // Kept where the call writes it and lent to the span loop (see `setup`, which also takes
     // it from, or keeps it in, a band renderer's cache: `slot`).
-    let built = setup(
-        pos,
-        &vary,
-        vp,
-        kind,
-        D::TEST,
-        S::TEXCOORDS,
-        params.budget,
-        slot,
-    );
+    let built = if inline_short_path::<S, P, D>() && !crate::math::ARMV6M {
+        setup_inline(
+            pos,
+            &vary,
+            vp,
+            kind,
+            D::TEST,
+            S::TEXCOORDS,
+            params.budget,
+            slot,
+        )
+    } else {
+        setup(
+            pos,
+            &vary,
+            vp,
+            kind,
+            D::TEST,
+            S::TEXCOORDS,
+            params.budget,
+            slot,
+        )
+    };
     // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {
         return 0;
