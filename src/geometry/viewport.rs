@@ -152,6 +152,11 @@ impl Viewport {
 
     /// [`project_xy`](Self::project_xy) by division (two per axis; one instruction each
     /// on cores with a divide instruction).
+    ///
+    /// Inlined on ARMv7-M: whole-frame sphere 157.75 -> 157.40 instructions per pixel on
+    /// Cortex-M4F, with less flash. Inlined on RV32IMC it gained 0.89 but took 10 KB more
+    /// flash.
+    #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
     pub(crate) fn project_xy_div(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));
         let (hw, hh, cx, cy) = self.scales();
