@@ -548,6 +548,9 @@ fn place(
 }
 
 /// Lights a placed vertex (its colour becomes the light's intensity on all channels).
+/// Inlined on ARMv7-M, where the walk calls it at two places: whole-frame sphere 157.40 ->
+/// 157.06 instructions per pixel on Cortex-M4F, for 56 bytes of flash.
+#[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
 fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     let Some(l) = ctx.light else {
         return;
