@@ -14,7 +14,7 @@ use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, Span
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
-use crate::raster::{rasterize_rows, Rect, SpanSink, SUBPIXEL_BITS};
+use crate::raster::{rasterize_rows, rasterize_shared, Rect, SpanSink, SUBPIXEL_BITS};
 use crate::shading::{Shader, Varyings};
 use crate::surface::{RenderTarget, Rows};
 use crate::texture::LodGranularity;
@@ -257,7 +257,12 @@ where
                 // Through `dyn`: one copy of the edge walker for every span loop (LLVM
                 // calls the writer directly where it sees which it is).
                 let sink: &mut dyn SpanSink = &mut w;
-                rasterize_rows(corners, clip, sink, unclamped_rows)
+                // The run-time draw's many draw types share one rasterizer.
+                if P::KIND == ProjKind::Dynamic {
+                    rasterize_shared(corners, clip, sink)
+                } else {
+                    rasterize_rows(corners, clip, sink, unclamped_rows)
+                }
             };
             // Read out before the target is borrowed again (the writer lends its rows). The
             // row loop summed the pixels, or the writer did (`COUNT_IN_LOOP`).

@@ -27,8 +27,8 @@ pub(crate) mod triangle;
 
 pub use edge::EdgeWalker;
 pub use gradient::{Plane, PlaneSetup};
-pub(crate) use triangle::rasterize_rows;
 pub use triangle::{first_row_at_or_below, rasterize, Rect, SpanSink, COUNT_IN_LOOP};
+pub(crate) use triangle::{rasterize_rows, rasterize_shared};
 
 /// Fractional bits of screen coordinates: 4, so one pixel is 16 sub-pixel units.
 pub const SUBPIXEL_BITS: u32 = 4;

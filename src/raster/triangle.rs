@@ -88,6 +88,18 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
     rasterize_rows(v, clip, sink, false)
 }
 
+/// [`rasterize`], out of line: the run-time draw's (`Draw::dynamic`) one copy for all its
+/// span writers behind `dyn SpanSink`. Inlined into each of its draw types' raster
+/// functions, as the typed draws' rasterizer is, its firmware grew by 9 KB (session 36).
+#[inline(never)]
+pub(crate) fn rasterize_shared<S: SpanSink + ?Sized>(
+    v: [(i32, i32); 3],
+    clip: Rect,
+    sink: &mut S,
+) -> u32 {
+    rasterize(v, clip, sink)
+}
+
 /// [`rasterize`], with `unclamped_rows`: a triangle within the columns of `clip`
 /// ([`within_columns`]) then takes row loops that do not clamp its spans to them (the same
 /// spans). A constant where it is inlined: the draws of meshes of small triangles pass

@@ -79,7 +79,7 @@ pub(super) fn build_firmware(
     run_visible(
         &mut cmd,
         "(cd examples/firmware && cargo build --release --bin <each scene, or the --only ones; \
-         every binary for size> --target <3 MCU targets>)",
+         the size ones for size> --target <3 MCU targets>)",
     )
 }
 

@@ -50,7 +50,10 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
         Ok(l) => l,
         Err(e) => return fail(e),
     };
-    if let Err(e) = build_firmware(&[], None, None) {
+    // Only the size firmwares: the others are built (and laid out) by `mcu` and `report`;
+    // a report firmware in the band layout's 256 KB of flash is not one that is run.
+    let bins: Vec<&str> = SIZES.iter().map(|(b, _)| *b).collect();
+    if let Err(e) = build_firmware(&[], None, Some(&bins)) {
         return fail(e);
     }
     let opt_s_dir = firmware_dir().join("target").join("opt-s");
@@ -58,7 +61,7 @@ pub fn size(flags: &SizeArgs) -> ExitCode {
         if let Err(e) = build_firmware(
             &[("CARGO_PROFILE_RELEASE_OPT_LEVEL", "s")],
             Some(&opt_s_dir),
-            None,
+            Some(&bins),
         ) {
             return fail(e);
         }
