@@ -178,28 +178,25 @@ where
     });
     // Kept where the call writes it and lent to the span loop (see `setup`, which also takes
     // it from, or keeps it in, a band renderer's cache: `slot`).
+    // Inlined into the mesh draws (see `setup_inline`), shared by the others.
+    macro_rules! set_up {
+        ($f:ident) => {
+            $f(
+                pos,
+                &vary,
+                vp,
+                kind,
+                D::TEST,
+                S::TEXCOORDS,
+                params.budget,
+                slot,
+            )
+        };
+    }
     let built = if inline_short_path::<S, P, D>() && !crate::math::ARMV6M {
-        setup_inline(
-            pos,
-            &vary,
-            vp,
-            kind,
-            D::TEST,
-            S::TEXCOORDS,
-            params.budget,
-            slot,
-        )
+        set_up!(setup_inline)
     } else {
-        setup(
-            pos,
-            &vary,
-            vp,
-            kind,
-            D::TEST,
-            S::TEXCOORDS,
-            params.budget,
-            slot,
-        )
+        set_up!(setup)
     };
     // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {

@@ -261,16 +261,16 @@ fn run_short<
     let p = Linear::<S::Varyings, SUB>::only_piece(s, x, y, n as u32, spec);
     let dz = s.z.dx;
     let z = s.plane_at(&s.z, x, y);
+    let pos = Pos {
+        x,
+        y,
+        z,
+        dz,
+        lambda: if at_start { p.lambda } else { ctx.tri_lambda },
+        per_pixel: false,
+    };
     // A short span of a shader that keeps every pixel: depth tested in the shading loop.
     if INLINE && Z && !S::DISCARDS && !S::BLENDS && n <= FUSED_MAX {
-        let pos = Pos {
-            x,
-            y,
-            z,
-            dz,
-            lambda: if at_start { p.lambda } else { ctx.tri_lambda },
-            per_pixel: false,
-        };
         return shade_depth_inline::<S, C>(
             &ctx.shader,
             ctx.triangle,
@@ -286,14 +286,6 @@ fn run_short<
     if mask == 0 {
         return 0;
     }
-    let pos = Pos {
-        x,
-        y,
-        z,
-        dz,
-        lambda: if at_start { p.lambda } else { ctx.tri_lambda },
-        per_pixel: false,
-    };
     // The shading loop counts what it writes: for a shader that never discards that is
     // every pixel of the mask (no population count per span).
     let shade = match (Z && S::DISCARDS && !S::BLENDS, INLINE) {
