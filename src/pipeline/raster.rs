@@ -14,7 +14,7 @@ use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, Span
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
-use crate::raster::{rasterize_rows, rasterize_shared, Rect, SpanSink, SUBPIXEL_BITS};
+use crate::raster::{rasterize_rows, rasterize_shared, Plane, Rect, SpanSink, SUBPIXEL_BITS};
 use crate::shading::{Shader, Varyings};
 use crate::surface::{RenderTarget, Rows};
 use crate::texture::LodGranularity;
@@ -275,7 +275,7 @@ where
         _ => draw_with!(Unproven),
     };
     if inline_short_path::<S, P, D>() && pixels != 0 {
-        lowest = lowest.min(depth_lower_bound(&pos, vp));
+        lowest = lowest.min(depth_lower_bound(&pos, &setup.z, vp));
     }
     if lowest < floor {
         target.lower_depth_floor(lowest);
@@ -353,21 +353,31 @@ fn affine_bounds<V: Varyings>(
 }
 
 /// A lower bound of every 16-bit depth the triangle `pos` can write in `viewport`, from its
-/// vertices' depths alone (Q14, as the set-up reads them): the depth floor's bound for the
-/// spans of the inlined short path, which keep none ([`inline_short_path`]).
+/// vertices' depths (Q14, as the set-up reads them) and its depth plane `z`: the depth
+/// floor's bound for the spans of the inlined short path, which keep none
+/// ([`inline_short_path`]).
 ///
-/// A covered pixel centre lies in the triangle, where the exact plane is a convex
-/// combination of the vertex depths, so at least their minimum. The set-up's plane is
-/// within `2 + (width + height) / 2` units of it anywhere in the viewport (see
-/// [`crate::raster::gradient`]); the bound subtracts `2 + width + height`.
-fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], viewport: Rect) -> u16 {
+/// Coverage tests the corners snapped to 1/16 pixel while the plane interpolates the
+/// unsnapped ones, so a covered pixel centre lies within 1/32 pixel per axis of a point of
+/// the unsnapped triangle, where the exact plane is a convex combination of the vertex
+/// depths, at least their minimum: the centre's exact depth is at least that minimum less
+/// `(|dz/dx| + |dz/dy|) / 32` (plus one for the gradients' rounding), as in
+/// [`affine_bounds`]. The set-up's plane is within `2 + (width + height) / 2` units of the
+/// exact one anywhere in the viewport (see [`crate::raster::gradient`]); the bound subtracts
+/// `2 + width + height` for that. Without the first term a steep sliver near the near plane
+/// wrote depth 0 under a floor of 2727 (the property test `depth_floor_stays_below_every_
+/// stored_depth`, session 36).
+fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], z: &Plane, viewport: Rect) -> u16 {
     let z_min = pos[0].2.min(pos[1].2).min(pos[2].2);
+    // At least (|dx| + |dy|) / 32 + 1: an or is at least the larger, half the sum.
+    let slope = ((z.dx.unsigned_abs() | z.dy.unsigned_abs()) >> 4).saturating_add(1);
     let margin = viewport
         .x1
         .wrapping_sub(viewport.x0)
         .unsigned_abs()
         .saturating_add(viewport.y1.wrapping_sub(viewport.y0).unsigned_abs())
         .saturating_add(2)
+        .saturating_add(slope)
         .min(1 << 30) as i32;
     (z_min.saturating_sub(margin) >> 14).clamp(0, 0xFFFF) as u16
 }
