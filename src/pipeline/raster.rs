@@ -365,8 +365,8 @@ fn affine_bounds<V: Varyings>(
 /// [`affine_bounds`]. The set-up's plane is within `2 + (width + height) / 2` units of the
 /// exact one anywhere in the viewport (see [`crate::raster::gradient`]); the bound subtracts
 /// `2 + width + height` for that. Without the first term a steep sliver near the near plane
-/// wrote depth 0 under a floor of 2727 (the property test `depth_floor_stays_below_every_
-/// stored_depth`, session 36).
+/// wrote depth 0 under a floor of 2727 (found by the property test
+/// `depth_floor_stays_below_every_stored_depth` in session 36).
 fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], z: &Plane, viewport: Rect) -> u16 {
     let z_min = pos[0].2.min(pos[1].2).min(pos[2].2);
     // At least (|dx| + |dy|) / 32 + 1: an or is at least the larger, half the sum.
