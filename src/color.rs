@@ -17,6 +17,29 @@
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor, Rgb565, Rgb888, RgbColor};
 
+/// `out` as raw RGB565 values, for a span loop that stores them directly
+/// ([`Shader::shade_piece_rgb565`](crate::shading::Shader::shade_piece_rgb565)): `Some` when
+/// `C` is [`Rgb565`], `None` otherwise. Only on targets with such a loop (ARMv7E-M).
+#[cfg(fixel_dsp)]
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(crate) fn raw_rgb565_mut<C: TargetColor>(out: &mut [C]) -> Option<&mut [u16]> {
+    if core::any::TypeId::of::<C>() == core::any::TypeId::of::<Rgb565>() {
+        // `Rgb565` is one `u16` field (its raw value, any value valid) and nothing else.
+        const _: () =
+            assert!(core::mem::size_of::<Rgb565>() == 2 && core::mem::align_of::<Rgb565>() == 2);
+        // SAFETY: `C` is `Rgb565` (same `TypeId`), a struct whose only field is the raw
+        // `u16` (embedded-graphics' `Rgb565(u16)`, storing `RawU16` values unchanged); its size
+        // and alignment are 2 (asserted above), so that field fills it at offset 0, and every
+        // `u16` is a valid `Rgb565`. The slice covers exactly `out`'s elements and borrows
+        // `out` mutably for its lifetime. Tested: `raw_rgb565_is_the_storage`.
+        return Some(unsafe {
+            core::slice::from_raw_parts_mut(out.as_mut_ptr().cast::<u16>(), out.len())
+        });
+    }
+    None
+}
+
 /// A colour type the rasterizer can write: built from a raw RGB565 value.
 ///
 /// Implemented for:
@@ -157,6 +180,22 @@ mod tests {
             ((t >> 5) & 0x3F) as u32,
             (t & 0x1F) as u32,
         )
+    }
+
+    /// What `raw_rgb565_mut` relies on: an `Rgb565`'s two bytes are its raw value, for
+    /// every value (read back through a byte copy, on the host as on the firmware's cores).
+    #[test]
+    fn raw_rgb565_is_the_storage() {
+        assert_eq!(core::mem::size_of::<Rgb565>(), 2);
+        assert_eq!(core::mem::align_of::<Rgb565>(), 2);
+        for raw in 0..=u16::MAX {
+            let c = Rgb565::from_rgb565(raw);
+            #[allow(unsafe_code)]
+            // SAFETY: `Rgb565` is 2 bytes (asserted above), as `u16`; any bytes are a `u16`.
+            let bytes: u16 = unsafe { core::mem::transmute::<Rgb565, u16>(c) };
+            assert_eq!(bytes, raw);
+            assert_eq!(c.into_storage(), raw);
+        }
     }
 
     fn reference_mod(c: u32, f: u32) -> u32 {

@@ -138,6 +138,16 @@ impl<S: Shader> Shader for InRange<S> {
     }
 
     #[inline(always)]
+    fn shade_piece_rgb565(
+        &self,
+        start: &Self::Varyings,
+        slope: &Self::Varyings,
+        out: &mut [u16],
+    ) -> bool {
+        self.0.shade_piece_rgb565(start, slope, out)
+    }
+
+    #[inline(always)]
     fn can_draw(&self) -> bool {
         self.0.can_draw()
     }

@@ -140,6 +140,11 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
         // `q8(i)` for `i` in `0..256 << 16`.
         self.shade_scaled(f, ((f.varyings[2] >> 16) & 0xFF) as u16)
     }
+    /// The sampler's own loop over a piece ([`TexSampler::lit_span`]), where it has one.
+    #[inline(always)]
+    fn shade_piece_rgb565(&self, start: &[i32; 3], slope: &[i32; 3], out: &mut [u16]) -> bool {
+        self.tex.lit_span(start, slope, out)
+    }
 }
 
 impl<F: TexSampler, WU: WrapMode, WV: WrapMode> ModulateIntensity<'_, F, WU, WV> {

@@ -201,6 +201,24 @@ pub trait Shader: Copy {
         self.shade(fragment)
     }
 
+    /// Shades every pixel of a linear piece that [`Shader::piece_in_range`] accepted, all of
+    /// them visible, into `out` as raw RGB565, and returns true; or returns false, writing
+    /// nothing, to leave the piece to the span loop's [`Shader::shade_in_range`] per pixel
+    /// (the default). `out[k]` must be what [`Shader::shade_in_range`] returns for the
+    /// varyings `start + k slope` (wrapping): a shader with a faster loop of its own for
+    /// whole pieces (an assembly loop on one target) overrides this. The span loop calls it
+    /// only for a target of [`Rgb565`](crate::Rgb565) pixels, on targets that have such a loop.
+    #[inline(always)]
+    fn shade_piece_rgb565(
+        &self,
+        start: &Self::Varyings,
+        slope: &Self::Varyings,
+        out: &mut [u16],
+    ) -> bool {
+        let _ = (start, slope, out);
+        false
+    }
+
     /// False when the shader cannot draw anything (for example a binding to an empty texel
     /// slice, which fixel's constructors never produce). The span loop checks it once per
     /// chunk, so the compiler can drop the per-texel bounds branch of every fetch.

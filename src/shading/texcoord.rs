@@ -264,6 +264,16 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             )
         }
     }
+
+    /// [`TexSampler::lit_span`] of this binding's sampler, wraps and footprints, for a
+    /// sampler without a level of detail; false (nothing written) otherwise.
+    #[inline(always)]
+    pub(crate) fn lit_span(&self, start: &[i32; 3], slope: &[i32; 3], out: &mut [u16]) -> bool {
+        !F::LOD
+            && self
+                .sampler
+                .lit_span::<WU, WV>(self.footprints, start, slope, out)
+    }
 }
 
 /// Writes the three vertices' texel coordinates `tu`, `tv` into varyings `pair` (indices

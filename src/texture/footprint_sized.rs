@@ -230,6 +230,27 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
     ) -> u16 {
         Self::sample_scaled(footprints, wu, wv, base, u, v, i)
     }
+
+    /// On ARMv7E-M with both wraps repeating: the assembly loop of
+    /// `footprint_span_dsp` (the same pixels; Cortex-M4F whole sphere 157.56 -> 144.68
+    /// instructions per pixel). Elsewhere none.
+    #[inline(always)]
+    fn lit_span<WU: WrapMode, WV: WrapMode>(
+        self,
+        footprints: &[u64],
+        start: &[i32; 3],
+        slope: &[i32; 3],
+        out: &mut [u16],
+    ) -> bool {
+        #[cfg(fixel_dsp)]
+        if WU::REPEAT && WV::REPEAT {
+            return super::footprint_span_dsp::lit_span::<LOG2_W, LOG2_H>(
+                footprints, start, slope, out,
+            );
+        }
+        let _ = (footprints, start, slope, out);
+        false
+    }
 }
 
 /// Refuses a chain whose level 0 is not `size` texels (`(width, height)`): what

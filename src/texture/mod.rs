@@ -11,6 +11,8 @@
 
 mod footprint;
 mod footprint_sized;
+#[cfg(fixel_dsp)]
+mod footprint_span_dsp;
 mod height;
 pub(crate) mod mip;
 pub(crate) mod sample;

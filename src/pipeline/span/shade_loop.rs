@@ -152,6 +152,13 @@ macro_rules! shade_linear_fn {
             let mut written = 0u32;
             if !ZW && !S::DISCARDS && (!D::TEST || mask == $full(out.len())) {
                 if !S::BLENDS && shader.piece_in_range(&v, &slope, out.len() as u32) {
+                    // Only on targets where a shader can have such a loop (ARMv7E-M).
+                    #[cfg(fixel_dsp)]
+                    if let Some(raw) = crate::color::raw_rgb565_mut(out) {
+                        if shader.shade_piece_rgb565(&v, &slope, raw) {
+                            return raw.len() as u32;
+                        }
+                    }
                     shade_every!(out, v, slope, frag, |f, _o| shader.shade_in_range(f));
                 }
                 shade_every!(out, v, slope, frag, |f, o| color(&shader, f, o));

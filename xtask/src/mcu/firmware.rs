@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use super::tools::{output, run_visible};
-use super::{firmware_dir, Mcu, GEOMETRY, MCUS, WHOLE_MCUS, WHOLE_SCENES};
+use super::{firmware_dir, Mcu, DSP_CHECK, GEOMETRY, MCUS, WHOLE_MCUS, WHOLE_SCENES};
 use crate::cmd::without_target_env;
 
 /// Builds the whole-frame firmwares and the geometry firmware (whole layout, own target
@@ -22,7 +22,7 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
     without_target_env(&mut cmd);
     let bins: Vec<&str> = WHOLE_SCENES
         .iter()
-        .chain(&[GEOMETRY])
+        .chain(&[GEOMETRY, DSP_CHECK])
         .copied()
         .filter(|b| keep(b))
         .collect();
@@ -38,7 +38,7 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
     run_visible(
         &mut cmd,
         "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
-         --target-dir target/whole --bin whole_* --bin bump --bin geometry (or the --only ones) \
+         --target-dir target/whole --bin whole_* --bin bump --bin geometry --bin dsp_span (or the --only ones) \
          --target <3 MCU targets>)",
     )
 }

@@ -180,10 +180,21 @@ impl McuArgs {
 /// The firmware measured alone (geometry table) rather than as a scene.
 const GEOMETRY: &str = "geometry";
 
-/// Parses `--only`: a scene of [`SCENES`] or [`WHOLE_SCENES`], or [`GEOMETRY`]; an error
+/// The firmware that checks the ARMv7E-M assembly span loop against the generic one,
+/// pixel by pixel (pass or fail, no figures): `loop=asm` on Cortex-M4F, `loop=none` where
+/// the core has no such loop.
+const DSP_CHECK: &str = "dsp_span";
+
+/// Parses `--only`: a scene of [`SCENES`] or [`WHOLE_SCENES`], [`GEOMETRY`] or
+/// [`DSP_CHECK`]; an error
 /// that lists them otherwise.
 fn firmware_name(name: &str) -> Result<String, String> {
-    let known = || SCENES.iter().chain(WHOLE_SCENES.iter()).chain([&GEOMETRY]);
+    let known = || {
+        SCENES
+            .iter()
+            .chain(WHOLE_SCENES.iter())
+            .chain([&GEOMETRY, &DSP_CHECK])
+    };
     if known().any(|s| *s == name) {
         Ok(name.to_string())
     } else {

@@ -9,14 +9,47 @@ use std::process::{Command, ExitCode};
 use std::time::Instant;
 
 use super::firmware::{build_firmware, build_whole, elf, sizes};
-use super::qemu::{kv, measure, measure_modes, num};
+use super::qemu::{kv, measure, measure_modes, num, qemu};
 use super::tools::{build_plugin, ensure_tools, output, qemu_version, run_visible, rustc_version};
 use super::{
-    fail, firmware_dir, out_dir, McuArgs, GEOMETRY, MCUS, SCENES, WHOLE_MCUS, WHOLE_SCENES,
+    fail, firmware_dir, out_dir, McuArgs, DSP_CHECK, GEOMETRY, MCUS, SCENES, WHOLE_MCUS,
+    WHOLE_SCENES,
 };
 use crate::cmd::root;
 use crate::cmd::without_target_env;
 use crate::progress::Progress;
+
+/// The [`DSP_CHECK`] firmware on each MCU: its line per MCU, or what failed. It must exit
+/// with success, report no mismatch, and run the assembly loop exactly on Cortex-M4F (the
+/// one ARMv7E-M core here). One `progress` step per MCU.
+fn dsp_check(td: &Path, progress: &mut Progress) -> Result<String, String> {
+    let mut lines = String::new();
+    for m in &WHOLE_MCUS {
+        progress.start(&format!("{DSP_CHECK} on {}", m.label));
+        let run = qemu(m, &elf(td, m, DSP_CHECK), None);
+        let verdict = run.and_then(|(ok, out, _)| {
+            let line = out
+                .lines()
+                .find(|l| l.starts_with(DSP_CHECK))
+                .ok_or_else(|| format!("no `{DSP_CHECK}` line in its output"))?;
+            let want = if m.triple.starts_with("thumbv7em") {
+                "asm"
+            } else {
+                "none"
+            };
+            if !ok || num(line, "mismatches") != Some(0) || kv(line, "loop") != Some(want) {
+                return Err(format!(
+                    "expected success, loop={want} and no mismatch: {line}"
+                ));
+            }
+            Ok(line.to_string())
+        });
+        progress.done(verdict.is_ok());
+        let line = verdict.map_err(|e| format!("{DSP_CHECK} on {}: {e}", m.label))?;
+        lines.push_str(&format!("- {}: `{line}`\n", m.label));
+    }
+    Ok(lines)
+}
 
 /// The geometry firmware on each MCU: a table of instructions per item and stage. One
 /// `progress` step per MCU.
@@ -203,9 +236,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         .filter(|(s, _, _)| flags.runs_firmware(s))
         .collect();
     let with_geometry = flags.runs_firmware(GEOMETRY);
-    // One step per QEMU firmware run (scene and MCU), then the geometry firmware's.
+    let with_dsp_check = flags.runs_firmware(DSP_CHECK);
+    // One step per QEMU firmware run (scene and MCU), then the geometry firmware's and the
+    // check's.
     let steps = sets.iter().map(|(_, m, _)| m.len()).sum::<usize>()
-        + usize::from(with_geometry) * WHOLE_MCUS.len();
+        + (usize::from(with_geometry) + usize::from(with_dsp_check)) * WHOLE_MCUS.len();
     let mut progress = Progress::new("mcu", steps);
     for (scene, mcus, td) in sets {
         for m in mcus.iter() {
@@ -287,6 +322,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         }
     }
     let geometry = with_geometry.then(|| geometry_table(&llvm, &plugin, &td_whole, &mut progress));
+    let dsp = with_dsp_check.then(|| dsp_check(&td_whole, &mut progress));
     progress.finish();
     println!(
         "\n## cargo xtask mcu: {}, {}\n",
@@ -331,6 +367,15 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
              per item and stage\n\n{t}"
         ),
         Err(e) => problems.push(format!("geometry firmware: {e}")),
+    }
+    match dsp {
+        None => {}
+        Some(Ok(lines)) => println!(
+            "\nThe ARMv7E-M span loop (`dsp_span` firmware: the assembly loop of \
+             `BilinearFootprintSized` against the generic sampler, pixel by pixel, random \
+             spans):\n\n{lines}"
+        ),
+        Some(Err(e)) => problems.push(e),
     }
     println!("\n{CYCLE_MODEL}\n");
     println!(
