@@ -147,6 +147,21 @@ impl<S: Shader> Shader for InRange<S> {
         self.0.shade_piece_rgb565(start, slope, out)
     }
 
+    const PIECE_DEPTH_LOOP: bool = S::PIECE_DEPTH_LOOP;
+
+    #[inline(always)]
+    fn shade_piece_depth_rgb565(
+        &self,
+        start: &Self::Varyings,
+        slope: &Self::Varyings,
+        depth: (i32, i32),
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        self.0
+            .shade_piece_depth_rgb565(start, slope, depth, out, zrow)
+    }
+
     #[inline(always)]
     fn can_draw(&self) -> bool {
         self.0.can_draw()

@@ -145,6 +145,20 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     fn shade_piece_rgb565(&self, start: &[i32; 3], slope: &[i32; 3], out: &mut [u16]) -> bool {
         self.tex.lit_span(start, slope, out)
     }
+    const PIECE_DEPTH_LOOP: bool = TexBinding::<F, WU, WV>::LIT_SPAN_DEPTH;
+    /// The sampler's own loop over a piece with the depth test ([`TexSampler::lit_span_depth`]),
+    /// where it has one.
+    #[inline(always)]
+    fn shade_piece_depth_rgb565(
+        &self,
+        start: &[i32; 3],
+        slope: &[i32; 3],
+        depth: (i32, i32),
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        self.tex.lit_span_depth(start, slope, depth, out, zrow)
+    }
 }
 
 impl<F: TexSampler, WU: WrapMode, WV: WrapMode> ModulateIntensity<'_, F, WU, WV> {

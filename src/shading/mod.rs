@@ -219,6 +219,29 @@ pub trait Shader: Copy {
         false
     }
 
+    /// True when [`Shader::shade_piece_depth_rgb565`] has a loop: the span stage then hands
+    /// it whole spans of any length, instead of a depth pass and a mask first. Default false.
+    const PIECE_DEPTH_LOOP: bool = false;
+
+    /// [`Shader::shade_piece_rgb565`] with the depth test in the loop, for a shader that
+    /// neither discards nor blends: pixel `k`'s depth is `clamp(z_k >> 14, 0, 0xFFFF)` with
+    /// `z_k = z + k dz` (wrapping, Q14 above the 16-bit depth); where it is below `zrow[k]`
+    /// (`GL_LESS`) it is written there and the pixel to `out[k]`, elsewhere neither. Returns
+    /// the pixels that passed, or `None`, writing nothing, to leave the piece to the span
+    /// loop (the default).
+    #[inline(always)]
+    fn shade_piece_depth_rgb565(
+        &self,
+        start: &Self::Varyings,
+        slope: &Self::Varyings,
+        depth: (i32, i32),
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        let _ = (start, slope, depth, out, zrow);
+        None
+    }
+
     /// False when the shader cannot draw anything (for example a binding to an empty texel
     /// slice, which fixel's constructors never produce). The span loop checks it once per
     /// chunk, so the compiler can drop the per-texel bounds branch of every fetch.

@@ -274,6 +274,28 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
                 .sampler
                 .lit_span::<WU, WV>(self.footprints, start, slope, out)
     }
+
+    /// Whether [`TexBinding::lit_span_depth`] has a loop.
+    pub(crate) const LIT_SPAN_DEPTH: bool =
+        !F::LOD && F::LIT_SPAN_DEPTH && WU::REPEAT && WV::REPEAT;
+
+    /// [`TexSampler::lit_span_depth`] of this binding's sampler, wraps and footprints, for a
+    /// sampler without a level of detail; `None` (nothing written) otherwise.
+    #[inline(always)]
+    pub(crate) fn lit_span_depth(
+        &self,
+        start: &[i32; 3],
+        slope: &[i32; 3],
+        (z, dz): (i32, i32),
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        if F::LOD {
+            return None;
+        }
+        self.sampler
+            .lit_span_depth::<WU, WV>(self.footprints, start, slope, z, dz, out, zrow)
+    }
 }
 
 /// Writes the three vertices' texel coordinates `tu`, `tv` into varyings `pair` (indices

@@ -251,6 +251,33 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
         let _ = (footprints, start, slope, out);
         false
     }
+
+    const LIT_SPAN_DEPTH: bool = cfg!(fixel_dsp);
+
+    /// On ARMv7E-M with both wraps repeating: the assembly loop of `footprint_span_dsp`
+    /// with the depth test in it (whole sphere 144.68 -> 138.33 on Cortex-M4F, every
+    /// short span through it). Elsewhere none.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn lit_span_depth<WU: WrapMode, WV: WrapMode>(
+        self,
+        footprints: &[u64],
+        start: &[i32; 3],
+        slope: &[i32; 3],
+        z: i32,
+        dz: i32,
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        #[cfg(fixel_dsp)]
+        if WU::REPEAT && WV::REPEAT {
+            return super::footprint_span_dsp::lit_span_depth::<LOG2_W, LOG2_H>(
+                footprints, start, slope, z, dz, out, zrow,
+            );
+        }
+        let _ = (footprints, start, slope, z, dz, out, zrow);
+        None
+    }
 }
 
 /// Refuses a chain whose level 0 is not `size` texels (`(width, height)`): what

@@ -117,6 +117,10 @@ use shade_loop::{shade_chunk, shade_depth_inline, shade_linear, shade_linear_inl
 /// - RV32IMC, up to 4 pixels: 196.47 -> 193.66, 200.71 -> 199.18, 224.27 -> 224.57
 ///   (every span: 191.63 on the sized texture but 234.93 on the plain bilinear one).
 /// - x86-64 (`cargo xtask count`, up to 4 pixels): 236.7 -> 235.1.
+///
+/// A shader with a fused loop of its own ([`Shader::PIECE_DEPTH_LOOP`]: the ARMv7E-M
+/// assembly loop of `BilinearFootprintSized`) takes every short span, whatever its length:
+/// Cortex-M4F sized texture 144.68 -> 138.33.
 const FUSED_MAX: usize = if crate::math::ARMV6M {
     CHUNK
 } else if cfg!(target_arch = "arm") {
@@ -270,7 +274,8 @@ fn run_short<
         per_pixel: false,
     };
     // A short span of a shader that keeps every pixel: depth tested in the shading loop.
-    if INLINE && Z && !S::DISCARDS && !S::BLENDS && n <= FUSED_MAX {
+    // Spans of any length when the shader has a loop of its own for them.
+    if INLINE && Z && !S::DISCARDS && !S::BLENDS && (n <= FUSED_MAX || S::PIECE_DEPTH_LOOP) {
         return shade_depth_inline::<S, C>(
             &ctx.shader,
             ctx.triangle,

@@ -258,6 +258,13 @@ pub(super) fn shade_depth_inline<S: Shader, C: TargetColor>(
         };
     }
     if shader.piece_in_range(&v, &slope, out.len() as u32) {
+        // The shader's own loop, on targets where it can have one (ARMv7E-M).
+        #[cfg(fixel_dsp)]
+        if let Some(raw) = crate::color::raw_rgb565_mut(out) {
+            if let Some(shown) = shader.shade_piece_depth_rgb565(&v, &slope, (z, dz), raw, zrow) {
+                return shown;
+            }
+        }
         fused!(|f, _o| shader.shade_in_range(f));
     } else {
         fused!(|f, o| color(&shader, f, o));

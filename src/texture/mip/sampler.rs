@@ -112,6 +112,30 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         let _ = (footprints, start, slope, out);
         false
     }
+
+    /// True when [`TexSampler::lit_span_depth`] has a loop (for both wraps repeating).
+    const LIT_SPAN_DEPTH: bool = false;
+
+    /// [`TexSampler::lit_span`] with the depth test in the loop: pixel `k`'s depth is
+    /// `clamp(z_k >> 14, 0, 0xFFFF)` with `z_k = z + k dz` (wrapping); where it is below
+    /// `zrow[k]` it is written there and the sample to `out[k]`, elsewhere neither. Returns
+    /// the pixels that passed, or `None`, writing nothing (the default), when the sampler has
+    /// no such loop.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn lit_span_depth<WU: WrapMode, WV: WrapMode>(
+        self,
+        footprints: &[u64],
+        start: &[i32; 3],
+        slope: &[i32; 3],
+        z: i32,
+        dz: i32,
+        out: &mut [u16],
+        zrow: &mut [u16],
+    ) -> Option<u32> {
+        let _ = (footprints, start, slope, z, dz, out, zrow);
+        None
+    }
 }
 
 /// The plain samplers: no level of detail, always level 0.

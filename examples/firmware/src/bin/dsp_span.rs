@@ -1,9 +1,11 @@
 //! Check, not a scene: the lit span loop of `BilinearFootprintSized` (`Shader::
 //! shade_piece_rgb565` of `ModulateIntensity`, in assembly on ARMv7E-M) against the same
 //! shader's per-pixel `shade_in_range`, over random spans (any coordinates, steps and
-//! lengths 1 to 64, intensities in range) on textures of 2x2 to 256x128 texels. Prints
-//! `dsp_span loop=asm|none spans=… pixels=… mismatches=…` and fails on any mismatch. On a
-//! core without the loop (`loop=none`) nothing is compared. Whole-frame memory layout.
+//! lengths 1 to 64, intensities in range) on textures of 2x2 to 256x128 texels; and each span
+//! again with the depth test in the loop (`shade_piece_depth_rgb565`) against the test done
+//! per pixel. Prints `dsp_span loop=asm|none spans=… depth_spans=… pixels=… mismatches=…`
+//! and fails on any mismatch. On a core without the loop (`loop=none`) nothing is compared.
+//! Whole-frame memory layout.
 #![no_std]
 #![no_main]
 
@@ -28,6 +30,7 @@ impl Rng {
 struct Tally {
     asm: bool,
     spans: u32,
+    depth_spans: u32,
     pixels: u32,
     mismatches: u32,
 }
@@ -73,24 +76,73 @@ fn check<const LW: u32, const LH: u32>(
         t.spans += 1;
         let mut v = start;
         for o in out.iter() {
-            let f = Fragment {
-                varyings: v,
-                x: 0,
-                y: 0,
-                depth: 0,
-                lambda: 0,
-                triangle: TexTriangle::default(),
-            };
-            if shader.shade_in_range(&f) != Some(*o) {
+            if sample(&shader, v) != Some(*o) {
                 t.mismatches += 1;
             }
             t.pixels += 1;
-            for (a, d) in v.iter_mut().zip(slope) {
-                *a = a.wrapping_add(d);
+            step(&mut v, slope);
+        }
+        // The same span with the depth test in the loop, against the test done per pixel:
+        // stored depths and a depth ramp that pass some pixels and hide others, clamped at
+        // both ends of the 16-bit range now and then.
+        let r3 = rng.next();
+        let mut zrow = [0u16; 64];
+        for zb in zrow.iter_mut() {
+            *zb = rng.next() as u16;
+        }
+        let z = (r3 as i32) >> ((r3 >> 40) % 4);
+        let dz = ((r3 >> 32) as i32) >> (12 + (r3 >> 50) % 8);
+        let zr = &mut zrow[..n];
+        let mut want_z = [0u16; 64];
+        want_z[..n].copy_from_slice(zr);
+        let mut want = [0u16; 64];
+        let mut want_shown = 0;
+        let (mut v, mut zk) = (start, z);
+        for k in 0..n {
+            let d = (zk >> 14).clamp(0, 0xFFFF);
+            if d < i32::from(want_z[k]) {
+                want_z[k] = d as u16;
+                want[k] = sample(&shader, v).unwrap_or(0);
+                want_shown += 1;
             }
+            zk = zk.wrapping_add(dz);
+            step(&mut v, slope);
+        }
+        let out = &mut fast[..n];
+        out.fill(0);
+        match shader.shade_piece_depth_rgb565(&start, &slope, (z, dz), out, zr) {
+            Some(shown) => {
+                t.depth_spans += 1;
+                t.mismatches += u32::from(shown != want_shown)
+                    + out.iter().zip(&want).filter(|(a, b)| a != b).count() as u32
+                    + zr.iter().zip(&want_z).filter(|(a, b)| a != b).count() as u32;
+            }
+            None => t.mismatches += 1,
         }
     }
     true
+}
+
+/// The shader's pixel at varyings `v`, one pixel at a time.
+fn sample<S: Shader<Varyings = [i32; 3], Triangle = TexTriangle>>(
+    shader: &S,
+    v: [i32; 3],
+) -> Option<u16> {
+    let f = Fragment {
+        varyings: v,
+        x: 0,
+        y: 0,
+        depth: 0,
+        lambda: 0,
+        triangle: TexTriangle::default(),
+    };
+    shader.shade_in_range(&f)
+}
+
+fn step(v: &mut [i32; 3], slope: [i32; 3]) {
+    for (a, d) in v.iter_mut().zip(slope) {
+        *a = a.wrapping_add(d);
+    }
 }
 
 /// A `w x h` texture of random texels with its footprints, checked as `check` does.
@@ -133,9 +185,10 @@ fn run() -> bool {
         && check_small::<3, 5>(&mut rng, &mut t)
         && check_small::<4, 4>(&mut rng, &mut t);
     outln!(
-        "dsp_span loop={} spans={} pixels={} mismatches={}",
+        "dsp_span loop={} spans={} depth_spans={} pixels={} mismatches={}",
         if t.asm { "asm" } else { "none" },
         t.spans,
+        t.depth_spans,
         t.pixels,
         t.mismatches
     );
