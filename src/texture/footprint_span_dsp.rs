@@ -34,6 +34,61 @@
 //! -> 138.33 with [`lit_span_depth`] for every short span. The cycle model of `cargo xtask
 //! mcu` (where `ldm` of `n` words costs `1 + n`): 214.0 -> 204.2 for the first.
 
+/// The start of a pixel's sample, shared by both loops: the footprint's two row words
+/// loaded into `r2`, `r3` (from `r4`, the footprints, plus `row << (LOG2_W + 3) + col <<
+/// 3`), then `r1 = a` and `r4 = b << 8`, the Q8 fractions. Registers: `r8` = u, `r9` = v
+/// (I16F16, already less `0x7F80`); operands `lh`, `lw`, `row_shift`.
+macro_rules! footprint_and_fractions {
+    () => {
+        concat!(
+            "ubfx r1, r9, #16, #{lh}\n",
+            "ubfx r2, r8, #16, #{lw}\n",
+            "add.w r1, r4, r1, lsl #{row_shift}\n",
+            "add.w r1, r1, r2, lsl #3\n",
+            "ldrd r2, r3, [r1]\n",
+            "ubfx r1, r8, #8, #8\n",
+            "and r4, r9, #0xFF00\n",
+        )
+    };
+}
+
+/// The rest of a pixel's sample, shared by both loops, from `r5 = a b 256 + 2^15` (so
+/// `w11 = r5 >> 16`): the packed weights (`r4 = w01 | w11 << 16`, `r5 = w00 | w10 << 16`:
+/// `(256 - a) | a << 16` less `r4`), the three channel sums (red `r1`, green `r6`, blue
+/// `r7`; masks in `lr` = `0x001F001F` and `r12` = `0x003F003F`), each scaled by the
+/// intensity (`r10`, Q8.16) and rounded once, packed and stored at `r11`, which moves on.
+macro_rules! weights_blend_store {
+    () => {
+        concat!(
+            "lsr.w r5, r5, #16\n",
+            "rsb.w r4, r5, r4, lsr #8\n",
+            "pkhbt r4, r4, r5, lsl #16\n",
+            "rsb.w r5, r1, #256\n",
+            "add.w r5, r5, r1, lsl #16\n",
+            "sub.w r5, r5, r4\n",
+            "and.w r1, lr, r2, lsr #11\n",
+            "and.w r6, lr, r3, lsr #11\n",
+            "smuad r1, r1, r5\n",
+            "smlad r1, r6, r4, r1\n",
+            "and.w r6, r12, r2, lsr #5\n",
+            "and.w r7, r12, r3, lsr #5\n",
+            "smuad r6, r6, r5\n",
+            "smlad r6, r7, r4, r6\n",
+            "and r7, r2, #0x001F001F\n",
+            "and r2, r3, #0x001F001F\n",
+            "smuad r7, r7, r5\n",
+            "smlad r7, r2, r4, r7\n",
+            "and r2, r10, #0xFF0000\n",
+            "smmulr r1, r1, r2\n",
+            "smmulr r6, r6, r2\n",
+            "orr.w r1, r6, r1, lsl #6\n",
+            "smmulr r7, r7, r2\n",
+            "orr.w r7, r7, r1, lsl #5\n",
+            "strh r7, [r11], #2\n",
+        )
+    };
+}
+
 /// The loop's own bound on the footprints (its loads are not checked per pixel): the
 /// caller's binding holds at least this many ([`TexBinding::can_draw`](crate::shading::TexBinding::can_draw)),
 /// but the loop does not rely on that.
@@ -93,44 +148,10 @@ pub(super) fn lit_span<const LOG2_W: u32, const LOG2_H: u32>(
             "mov.w r12, #0x003F003F",
             "mov.w lr, #0x001F001F",
             "2:",
-            // Footprint address: r4 (footprints) + row << (LOG2_W + 3) + col << 3.
-            "ubfx r1, r9, #16, #{lh}",
-            "ubfx r2, r8, #16, #{lw}",
-            "add.w r1, r4, r1, lsl #{row_shift}",
-            "add.w r1, r1, r2, lsl #3",
-            "ldrd r2, r3, [r1]",
-            // Weights: r1 = a, r4 = b << 8; r5 = w11, then r4 = w01 | w11 << 16,
-            // r5 = (256 - a) | a << 16 minus that = w00 | w10 << 16.
-            "ubfx r1, r8, #8, #8",
-            "and r4, r9, #0xFF00",
+            footprint_and_fractions!(),
+            // w11 = (a b + 128) >> 8, from r0 = 2^15.
             "mla r5, r1, r4, r0",
-            "lsr.w r5, r5, #16",
-            "rsb.w r4, r5, r4, lsr #8",
-            "pkhbt r4, r4, r5, lsl #16",
-            "rsb.w r5, r1, #256",
-            "add.w r5, r5, r1, lsl #16",
-            "sub.w r5, r5, r4",
-            // Red sum in r1, green in r6, blue in r7.
-            "and.w r1, lr, r2, lsr #11",
-            "and.w r6, lr, r3, lsr #11",
-            "smuad r1, r1, r5",
-            "smlad r1, r6, r4, r1",
-            "and.w r6, r12, r2, lsr #5",
-            "and.w r7, r12, r3, lsr #5",
-            "smuad r6, r6, r5",
-            "smlad r6, r7, r4, r6",
-            "and r7, r2, #0x001F001F",
-            "and r2, r3, #0x001F001F",
-            "smuad r7, r7, r5",
-            "smlad r7, r2, r4, r7",
-            // Scaled by the intensity, rounded once, packed, stored.
-            "and r2, r10, #0xFF0000",
-            "smmulr r1, r1, r2",
-            "smmulr r6, r6, r2",
-            "orr.w r1, r6, r1, lsl #6",
-            "smmulr r7, r7, r2",
-            "orr.w r7, r7, r1, lsl #5",
-            "strh r7, [r11], #2",
+            weights_blend_store!(),
             // Steps (and the footprints and end for the next pixel) from the frame.
             "ldm sp, {{r1, r2, r3, r4, r5}}",
             "add r8, r1",
@@ -221,40 +242,10 @@ pub(super) fn lit_span_depth<const LOG2_W: u32, const LOG2_H: u32>(
             "bhs 3f",
             "strh r1, [r11, r7]",
             // The sample, as in `lit_span` (w11 from a multiply and an add: r0 holds z).
-            "ubfx r1, r9, #16, #{lh}",
-            "ubfx r2, r8, #16, #{lw}",
-            "add.w r1, r4, r1, lsl #{row_shift}",
-            "add.w r1, r1, r2, lsl #3",
-            "ldrd r2, r3, [r1]",
-            "ubfx r1, r8, #8, #8",
-            "and r4, r9, #0xFF00",
+            footprint_and_fractions!(),
             "mul r5, r1, r4",
             "add.w r5, r5, #0x8000",
-            "lsr.w r5, r5, #16",
-            "rsb.w r4, r5, r4, lsr #8",
-            "pkhbt r4, r4, r5, lsl #16",
-            "rsb.w r5, r1, #256",
-            "add.w r5, r5, r1, lsl #16",
-            "sub.w r5, r5, r4",
-            "and.w r1, lr, r2, lsr #11",
-            "and.w r6, lr, r3, lsr #11",
-            "smuad r1, r1, r5",
-            "smlad r1, r6, r4, r1",
-            "and.w r6, r12, r2, lsr #5",
-            "and.w r7, r12, r3, lsr #5",
-            "smuad r6, r6, r5",
-            "smlad r6, r7, r4, r6",
-            "and r7, r2, #0x001F001F",
-            "and r2, r3, #0x001F001F",
-            "smuad r7, r7, r5",
-            "smlad r7, r2, r4, r7",
-            "and r2, r10, #0xFF0000",
-            "smmulr r1, r1, r2",
-            "smmulr r6, r6, r2",
-            "orr.w r1, r6, r1, lsl #6",
-            "smmulr r7, r7, r2",
-            "orr.w r7, r7, r1, lsl #5",
-            "strh r7, [r11], #2",
+            weights_blend_store!(),
             // Next pixel: steps, footprints, end, dz and zoff from the frame.
             "4:",
             "ldm sp, {{r1, r2, r3, r4, r5, r6, r7}}",
