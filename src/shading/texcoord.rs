@@ -272,7 +272,7 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         !F::LOD
             && self
                 .sampler
-                .lit_span::<WU, WV>(self.footprints, start, slope, out)
+                .lit_span::<WU, WV>(&self.base, self.footprints, start, slope, out)
     }
 
     /// Whether [`TexBinding::lit_span_depth`] has a loop.
@@ -293,8 +293,16 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
         if F::LOD {
             return None;
         }
-        self.sampler
-            .lit_span_depth::<WU, WV>(self.footprints, start, slope, z, dz, out, zrow)
+        self.sampler.lit_span_depth::<WU, WV>(
+            &self.base,
+            self.footprints,
+            start,
+            slope,
+            z,
+            dz,
+            out,
+            zrow,
+        )
     }
 }
 

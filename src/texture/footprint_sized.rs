@@ -237,6 +237,7 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
     #[inline(always)]
     fn lit_span<WU: WrapMode, WV: WrapMode>(
         self,
+        _base: &Texture<'_>,
         footprints: &[u64],
         start: &[i32; 3],
         slope: &[i32; 3],
@@ -261,6 +262,7 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
     #[inline(always)]
     fn lit_span_depth<WU: WrapMode, WV: WrapMode>(
         self,
+        _base: &Texture<'_>,
         footprints: &[u64],
         start: &[i32; 3],
         slope: &[i32; 3],

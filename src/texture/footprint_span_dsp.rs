@@ -1,8 +1,8 @@
-//! The lit span loop of [`BilinearFootprintSized`](super::BilinearFootprintSized) on
-//! ARMv7E-M (Cortex-M4, M4F, M7), written in assembly with the DSP extension's dual
-//! multiplies.
+//! The lit span loops of [`BilinearFootprintSized`](super::BilinearFootprintSized) and
+//! [`BilinearFootprint`](super::BilinearFootprint) on ARMv7E-M (Cortex-M4, M4F, M7),
+//! written in assembly with the DSP extension's dual multiplies.
 //!
-//! What it computes is [`BilinearFootprintSized::sample_scaled`](super::BilinearFootprintSized::sample_scaled)
+//! What the loops compute is [`BilinearFootprintSized::sample_scaled`](super::BilinearFootprintSized::sample_scaled)
 //! at every pixel of a linear piece whose intensity is in range (the loop
 //! [`ModulateIntensity`](crate::shading::ModulateIntensity) runs after
 //! [`Shader::piece_in_range`](crate::shading::Shader::piece_in_range)), bit for bit:
@@ -29,22 +29,55 @@
 //! instead of a depth pass, a mask and a second loop (which LLVM could not fuse on this
 //! core without spilling).
 //!
-//! Measured on the whole-frame sphere (`whole_sphere_sized`, Cortex-M4F, instructions per
-//! pixel, the same checksum): 157.56 -> 144.68 with [`lit_span`] after the depth pass,
-//! -> 138.33 with [`lit_span_depth`] for every short span. The cycle model of `cargo xtask
-//! mcu` (where `ldm` of `n` words costs `1 + n`): 214.0 -> 204.2 for the first.
+//! [`lit_span_runtime`] and [`lit_span_depth_runtime`] are the same loops for
+//! [`BilinearFootprint`](super::BilinearFootprint), whose texture size is read at run time:
+//! the footprint's row and column masked by registers instead of bit-field extracts, and
+//! the row stride reloaded (40 and 48 instructions per pixel).
+//!
+//! Measured on the whole-frame sphere (Cortex-M4F, instructions per pixel, the same
+//! checksum): `whole_sphere_sized` 157.56 -> 144.68 with [`lit_span`] after the depth pass,
+//! -> 138.33 with [`lit_span_depth`] for every short span (the cycle model of `cargo xtask
+//! mcu`, where `ldm` of `n` words costs `1 + n`: 214.0 -> 204.2 -> 201.1);
+//! `whole_sphere_footprint` 168.08 -> 150.55 with [`lit_span_runtime`] -> 147.84 with
+//! [`lit_span_depth_runtime`] (60 instructions per pixel in LLVM's loop there).
 
-/// The start of a pixel's sample, shared by both loops: the footprint's two row words
-/// loaded into `r2`, `r3` (from `r4`, the footprints, plus `row << (LOG2_W + 3) + col <<
-/// 3`), then `r1 = a` and `r4 = b << 8`, the Q8 fractions. Registers: `r8` = u, `r9` = v
-/// (I16F16, already less `0x7F80`); operands `lh`, `lw`, `row_shift`.
-macro_rules! footprint_and_fractions {
+/// The address of a pixel's footprint in `r1`, for a size fixed at compile time: `r4`
+/// (the footprints) plus `row << (LOG2_W + 3) + col << 3`, with `row` and `col` the low
+/// `LOG2_H` and `LOG2_W` bits of the integer parts of `r9` = v and `r8` = u (I16F16, less
+/// `0x7F80`). Operands `lh`, `lw`, `row_shift`; `r2` clobbered.
+macro_rules! footprint_sized {
     () => {
         concat!(
             "ubfx r1, r9, #16, #{lh}\n",
             "ubfx r2, r8, #16, #{lw}\n",
             "add.w r1, r4, r1, lsl #{row_shift}\n",
             "add.w r1, r1, r2, lsl #3\n",
+        )
+    };
+}
+
+/// [`footprint_sized`] for a size read at run time: `r6` = height - 1, `r7` = width - 1
+/// (powers of two), and the row stride `8 width` in the frame at `[sp, #$stride]`; `r3`
+/// clobbered too.
+macro_rules! footprint_runtime {
+    ($stride:literal) => {
+        concat!(
+            "and.w r1, r6, r9, lsr #16\n",
+            "and.w r2, r7, r8, lsr #16\n",
+            "ldr r3, [sp, #",
+            $stride,
+            "]\n",
+            "mla r1, r1, r3, r4\n",
+            "add.w r1, r1, r2, lsl #3\n",
+        )
+    };
+}
+
+/// The footprint at `r1` loaded (its two row words in `r2`, `r3`), then `r1 = a` and `r4 =
+/// b << 8`, the Q8 fractions of u (`r8`) and v (`r9`).
+macro_rules! load_and_fractions {
+    () => {
+        concat!(
             "ldrd r2, r3, [r1]\n",
             "ubfx r1, r8, #8, #8\n",
             "and r4, r9, #0xFF00\n",
@@ -89,17 +122,66 @@ macro_rules! weights_blend_store {
     };
 }
 
-/// The loop's own bound on the footprints (its loads are not checked per pixel): the
-/// caller's binding holds at least this many ([`TexBinding::can_draw`](crate::shading::TexBinding::can_draw)),
-/// but the loop does not rely on that.
-const fn footprints_read(log2_w: u32, log2_h: u32) -> usize {
-    1usize << (log2_w + log2_h)
+/// The depth test at the top of a pixel of the depth loops (the loop's label `2`): `r1 =
+/// clamp(z >> 14, 0, 0xFFFF)` from `r0` = z, tested (`GL_LESS`) against the `u16` at `r11 +
+/// r7` (the pixel's depth) and written there when it passes; a hidden pixel branches to
+/// label `3` ([`depth_next_pixel`]). `r2` clobbered.
+macro_rules! depth_test {
+    () => {
+        concat!(
+            "usat r1, #16, r0, asr #14\n",
+            "ldrh r2, [r11, r7]\n",
+            "cmp r1, r2\n",
+            "bhs 3f\n",
+            "strh r1, [r11, r7]\n",
+        )
+    };
 }
 
-/// Whether the loop is assembled for a `2^log2_w x 2^log2_h` texture: each side from 2 to
-/// 2^16 texels (the bit-field extracts take 1 to 16 bits above bit 16).
+/// The end of a pixel of the depth loops: the steps (`du`, `dv`, `di`, `dz`), the
+/// footprints, the end, and the depth row's offset reloaded from the frame (`ldm`: `r1` to
+/// `r7`), the varyings and `z` stepped, and back to label `2` until `r11` reaches the end;
+/// label `3`, a hidden pixel: the next pixel, one more hidden (the frame's word at 28).
+/// Leaves the hidden count in `r1`.
+macro_rules! depth_next_pixel {
+    () => {
+        concat!(
+            "4:\n",
+            "ldm sp, {{r1, r2, r3, r4, r5, r6, r7}}\n",
+            "add r8, r1\n",
+            "add r9, r2\n",
+            "add r10, r3\n",
+            "add r0, r6\n",
+            "cmp r11, r5\n",
+            "bne 2b\n",
+            "b 5f\n",
+            "3:\n",
+            "add.w r11, r11, #2\n",
+            "ldr r1, [sp, #28]\n",
+            "add.w r1, r1, #1\n",
+            "str r1, [sp, #28]\n",
+            "b 4b\n",
+            "5:\n",
+            "ldr r1, [sp, #28]\n",
+        )
+    };
+}
+
+/// The footprints a `2^log2_w x 2^log2_h` texture has, one per texel (the loops' own bound:
+/// their loads are not checked per pixel, and they do not rely on the binding's
+/// [`TexBinding::can_draw`](crate::shading::TexBinding::can_draw)); `usize::MAX` when that
+/// does not fit `usize`, which no slice holds.
+const fn footprints_read(log2_w: u32, log2_h: u32) -> usize {
+    match 1usize.checked_shl(log2_w + log2_h) {
+        Some(n) => n,
+        None => usize::MAX,
+    }
+}
+
+/// Whether the loops are assembled for a `2^log2_w x 2^log2_h` texture: each side from 2 to
+/// 2^16 texels (the bit-field extracts take 1 to 16 bits above bit 16), at most 2^28 texels.
 pub(super) const fn supported(log2_w: u32, log2_h: u32) -> bool {
-    log2_w >= 1 && log2_w <= 16 && log2_h >= 1 && log2_h <= 16
+    log2_w >= 1 && log2_w <= 16 && log2_h >= 1 && log2_h <= 16 && log2_w + log2_h <= 28
 }
 
 /// Writes `out[k] = sample_scaled(u0 + k du, v0 + k dv, ((i0 + k di) >> 16) & 0xFF)` for
@@ -148,7 +230,8 @@ pub(super) fn lit_span<const LOG2_W: u32, const LOG2_H: u32>(
             "mov.w r12, #0x003F003F",
             "mov.w lr, #0x001F001F",
             "2:",
-            footprint_and_fractions!(),
+            footprint_sized!(),
+            load_and_fractions!(),
             // w11 = (a b + 128) >> 8, from r0 = 2^15.
             "mla r5, r1, r4, r0",
             weights_blend_store!(),
@@ -235,36 +318,14 @@ pub(super) fn lit_span_depth<const LOG2_W: u32, const LOG2_H: u32>(
             "mov.w lr, #0x001F001F",
             "ldr r7, [sp, #24]",
             "2:",
-            // Depth: r1 = d, tested against and written to [r11 + r7].
-            "usat r1, #16, r0, asr #14",
-            "ldrh r2, [r11, r7]",
-            "cmp r1, r2",
-            "bhs 3f",
-            "strh r1, [r11, r7]",
+            depth_test!(),
             // The sample, as in `lit_span` (w11 from a multiply and an add: r0 holds z).
-            footprint_and_fractions!(),
+            footprint_sized!(),
+            load_and_fractions!(),
             "mul r5, r1, r4",
             "add.w r5, r5, #0x8000",
             weights_blend_store!(),
-            // Next pixel: steps, footprints, end, dz and zoff from the frame.
-            "4:",
-            "ldm sp, {{r1, r2, r3, r4, r5, r6, r7}}",
-            "add r8, r1",
-            "add r9, r2",
-            "add r10, r3",
-            "add r0, r6",
-            "cmp r11, r5",
-            "bne 2b",
-            "b 5f",
-            // Hidden: the next pixel, one more hidden.
-            "3:",
-            "add.w r11, r11, #2",
-            "ldr r1, [sp, #28]",
-            "add.w r1, r1, #1",
-            "str r1, [sp, #28]",
-            "b 4b",
-            "5:",
-            "ldr r1, [sp, #28]",
+            depth_next_pixel!(),
             "add sp, #32",
             "pop {{r6, r7}}",
             lh = const LOG2_H,
@@ -275,6 +336,166 @@ pub(super) fn lit_span_depth<const LOG2_W: u32, const LOG2_H: u32>(
             inout("r3") slope[2] => _,
             inout("r4") fp => _,
             inout("r5") range.end => _,
+            inout("r12") dz => _,
+            inout("lr") zoff => _,
+            inout("r0") z => _,
+            inout("r8") tu => _,
+            inout("r9") tv => _,
+            inout("r10") start[2] => _,
+            inout("r11") range.start => _,
+        );
+    }
+    Some(n.wrapping_sub(hidden))
+}
+
+/// [`lit_span`] for a texture whose size is read at run time
+/// ([`BilinearFootprint`](super::BilinearFootprint)): `2^log2_w x 2^log2_h` texels, exactly
+/// one footprint per texel. The same pixels as `gather_footprint` with the texture's width
+/// and the footprints' count (its index masked by `len - 1` is `row width + col` when `len`
+/// is the texel count). 40 instructions per pixel (one more than the sized loop: the row
+/// stride reloaded). Returns false, writing nothing, for other sizes or counts.
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(super) fn lit_span_runtime(
+    footprints: &[u64],
+    (log2_w, log2_h): (u32, u32),
+    start: &[i32; 3],
+    slope: &[i32; 3],
+    out: &mut [u16],
+) -> bool {
+    // Any side works here (masks, not bit fields); the count bounds every index.
+    if footprints.len() != footprints_read(log2_w, log2_h) {
+        return false;
+    }
+    if out.is_empty() {
+        return true;
+    }
+    let hmask = 1u32.wrapping_shl(log2_h).wrapping_sub(1);
+    let wmask = 1u32.wrapping_shl(log2_w).wrapping_sub(1);
+    let stride = 8u32.wrapping_shl(log2_w);
+    let fp = footprints.as_ptr();
+    let range = out.as_mut_ptr_range();
+    let tu = start[0].wrapping_sub(0x7F80);
+    let tv = start[1].wrapping_sub(0x7F80);
+    // SAFETY: as `lit_span`, with the footprint index `row 2^log2_w + col`, `row <=
+    // 2^log2_h - 1` and `col <= 2^log2_w - 1` (masked), below `footprints.len()` =
+    // `2^(log2_w + log2_h)` (checked above). Frame: `r6`, `r7` pushed first, then the stride
+    // (from `r0`), then `r1` to `r5`, `r12`, `lr` (inputs); all released before `r6`, `r7`
+    // are popped. Tested by the `dsp_span` firmware and the Cortex-M4F checksums of
+    // `cargo xtask mcu` (`whole_sphere_footprint` and the report firmwares).
+    unsafe {
+        core::arch::asm!(
+            // Frame: [sp] du, dv, di, footprints, end, height - 1, width - 1, stride;
+            // the saved r6, r7.
+            "push {{r6, r7}}",
+            "str r0, [sp, #-4]!",
+            "push {{r1, r2, r3, r4, r5, r12, lr}}",
+            "mov.w r0, #0x8000",
+            "mov.w r12, #0x003F003F",
+            "mov.w lr, #0x001F001F",
+            "ldrd r6, r7, [sp, #20]",
+            "2:",
+            footprint_runtime!("28"),
+            load_and_fractions!(),
+            "mla r5, r1, r4, r0",
+            weights_blend_store!(),
+            // Steps, footprints, end and the masks for the next pixel from the frame.
+            "ldm sp, {{r1, r2, r3, r4, r5, r6, r7}}",
+            "add r8, r1",
+            "add r9, r2",
+            "add r10, r3",
+            "cmp r11, r5",
+            "bne 2b",
+            "add sp, #32",
+            "pop {{r6, r7}}",
+            inout("r1") slope[0] => _,
+            inout("r2") slope[1] => _,
+            inout("r3") slope[2] => _,
+            inout("r4") fp => _,
+            inout("r5") range.end => _,
+            inout("r12") hmask => _,
+            inout("lr") wmask => _,
+            inout("r0") stride => _,
+            inout("r8") tu => _,
+            inout("r9") tv => _,
+            inout("r10") start[2] => _,
+            inout("r11") range.start => _,
+        );
+    }
+    true
+}
+
+/// [`lit_span_depth`] for a texture whose size is read at run time, as [`lit_span_runtime`]:
+/// 48 instructions per drawn pixel. `None`, writing nothing, for other sizes or counts, or
+/// `zrow` shorter than `out`.
+#[inline(always)]
+#[allow(unsafe_code, clippy::too_many_arguments)]
+pub(super) fn lit_span_depth_runtime(
+    footprints: &[u64],
+    (log2_w, log2_h): (u32, u32),
+    start: &[i32; 3],
+    slope: &[i32; 3],
+    z: i32,
+    dz: i32,
+    out: &mut [u16],
+    zrow: &mut [u16],
+) -> Option<u32> {
+    if footprints.len() != footprints_read(log2_w, log2_h) || zrow.len() < out.len() {
+        return None;
+    }
+    if out.is_empty() {
+        return Some(0);
+    }
+    let n = out.len() as u32;
+    let range = out.as_mut_ptr_range();
+    let zoff = (zrow.as_mut_ptr() as usize).wrapping_sub(range.start as usize);
+    // Copied into the loop's frame by its prologue (no register is left to pass them).
+    let extra: [u32; 4] = [
+        range.end as u32,
+        1u32.wrapping_shl(log2_h).wrapping_sub(1),
+        1u32.wrapping_shl(log2_w).wrapping_sub(1),
+        8u32.wrapping_shl(log2_w),
+    ];
+    let tu = start[0].wrapping_sub(0x7F80);
+    let tv = start[1].wrapping_sub(0x7F80);
+    let hidden: u32;
+    // SAFETY: as `lit_span_depth` for `out` and `zrow`, and as `lit_span_runtime` for the
+    // footprints. `r5` points at `extra` (four words, read before the frame is built). Frame:
+    // `r6`, `r7` pushed first, then 44 bytes (du, dv, di, footprints, end, dz, zoff, hidden,
+    // height - 1, width - 1, stride), all released before `r6`, `r7` are popped. Tested by
+    // the `dsp_span` firmware and the Cortex-M4F checksums of `cargo xtask mcu`.
+    unsafe {
+        core::arch::asm!(
+            "push {{r6, r7}}",
+            "sub sp, #44",
+            "stm sp, {{r1, r2, r3, r4}}",
+            "ldm r5, {{r1, r2, r3, r4}}",
+            "str r1, [sp, #16]",
+            "strd r12, lr, [sp, #20]",
+            "mov.w r1, #0",
+            "str r1, [sp, #28]",
+            "strd r2, r3, [sp, #32]",
+            "str r4, [sp, #40]",
+            "ldr r4, [sp, #12]",
+            "mov.w r12, #0x003F003F",
+            "mov.w lr, #0x001F001F",
+            "ldr r7, [sp, #24]",
+            "2:",
+            depth_test!(),
+            "ldrd r6, r7, [sp, #32]",
+            footprint_runtime!("40"),
+            load_and_fractions!(),
+            "mul r5, r1, r4",
+            "add.w r5, r5, #0x8000",
+            weights_blend_store!(),
+            depth_next_pixel!(),
+            "add sp, #44",
+            "pop {{r6, r7}}",
+            inout("r1") slope[0] => hidden,
+            inout("r2") slope[1] => _,
+            inout("r3") slope[2] => _,
+            inout("r4") footprints.as_ptr() => _,
+            inout("r5") extra.as_ptr() => _,
             inout("r12") dz => _,
             inout("lr") zoff => _,
             inout("r0") z => _,

@@ -93,23 +93,25 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         self.sample_base_scaled(base, wu, wv, u, v, i)
     }
 
-    /// Writes a whole linear piece of lit samples as raw RGB565 and returns true, or
-    /// returns false, writing nothing, when the sampler has no loop of its own for it (the
-    /// default: the span loop then calls [`TexSampler::sample_level0_scaled`] per pixel).
-    /// Pixel `k` of `out` must be `sample_level0_scaled(u0 + k du, v0 + k dv, (i >> 16) &
-    /// 0xFF)` with `i = i0 + k di` (wrapping sums), for `start = [u0, v0, i0]` and `slope =
-    /// [du, dv, di]`: texel coordinates I16F16, intensity Q8.16. Only
-    /// [`BilinearFootprintSized`](crate::texture::BilinearFootprintSized) on ARMv7E-M has
-    /// one (an assembly loop).
+    /// Writes a whole linear piece of lit samples of level 0 (`base`) as raw RGB565 and
+    /// returns true, or returns false, writing nothing, when the sampler has no loop of its
+    /// own for it (the default: the span loop then calls
+    /// [`TexSampler::sample_level0_scaled`] per pixel). Pixel `k` of `out` must be
+    /// `sample_level0_scaled(u0 + k du, v0 + k dv, (i >> 16) & 0xFF)` with `i = i0 + k di`
+    /// (wrapping sums), for `start = [u0, v0, i0]` and `slope = [du, dv, di]`: texel
+    /// coordinates I16F16, intensity Q8.16. On ARMv7E-M
+    /// [`BilinearFootprintSized`](crate::texture::BilinearFootprintSized) and
+    /// [`BilinearFootprint`](crate::texture::BilinearFootprint) have one (assembly loops).
     #[inline(always)]
     fn lit_span<WU: WrapMode, WV: WrapMode>(
         self,
+        base: &Texture<'_>,
         footprints: &[u64],
         start: &[i32; 3],
         slope: &[i32; 3],
         out: &mut [u16],
     ) -> bool {
-        let _ = (footprints, start, slope, out);
+        let _ = (base, footprints, start, slope, out);
         false
     }
 
@@ -125,6 +127,7 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     #[inline(always)]
     fn lit_span_depth<WU: WrapMode, WV: WrapMode>(
         self,
+        base: &Texture<'_>,
         footprints: &[u64],
         start: &[i32; 3],
         slope: &[i32; 3],
@@ -133,7 +136,7 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
         out: &mut [u16],
         zrow: &mut [u16],
     ) -> Option<u32> {
-        let _ = (footprints, start, slope, z, dz, out, zrow);
+        let _ = (base, footprints, start, slope, z, dz, out, zrow);
         None
     }
 }

@@ -1,16 +1,19 @@
-//! Check, not a scene: the lit span loop of `BilinearFootprintSized` (`Shader::
-//! shade_piece_rgb565` of `ModulateIntensity`, in assembly on ARMv7E-M) against the same
-//! shader's per-pixel `shade_in_range`, over random spans (any coordinates, steps and
-//! lengths 1 to 64, intensities in range) on textures of 2x2 to 256x128 texels; and each span
-//! again with the depth test in the loop (`shade_piece_depth_rgb565`) against the test done
-//! per pixel. Prints `dsp_span loop=asm|none spans=… depth_spans=… pixels=… mismatches=…`
-//! and fails on any mismatch. On a core without the loop (`loop=none`) nothing is compared.
-//! Whole-frame memory layout.
+//! Check, not a scene: the lit span loops of `BilinearFootprintSized` and `BilinearFootprint`
+//! (`Shader::shade_piece_rgb565` of `ModulateIntensity`, in assembly on ARMv7E-M) against the
+//! same shader's per-pixel `shade_in_range`, over random spans (any coordinates, steps and
+//! lengths 1 to 64, intensities in range) on textures of 2x2 to 256x128 texels; and, for the
+//! sized sampler, each span again with the depth test in the loop
+//! (`shade_piece_depth_rgb565`) against the test done per pixel. Prints `dsp_span
+//! loop=asm|none spans=… depth_spans=… pixels=… mismatches=…` and fails on any mismatch. On
+//! a core without the loops (`loop=none`) nothing is compared. Whole-frame memory layout.
 #![no_std]
 #![no_main]
 
 use fixel::shading::{Fragment, ModulateIntensity, Shader, TexBinding, TexTriangle};
-use fixel::texture::{write_footprints, BilinearFootprintSized, MipTexture, Repeat, Texture};
+use fixel::texture::{
+    write_footprints, BilinearFootprint, BilinearFootprintSized, MipTexture, Repeat, TexSampler,
+    Texture,
+};
 use fixel::Rgb565;
 use fixel_firmware::{data, outln};
 
@@ -35,24 +38,21 @@ struct Tally {
     mismatches: u32,
 }
 
-/// `spans` random spans through both paths of `ModulateIntensity<BilinearFootprintSized<LW,
-/// LH>>` on `chain`.
-fn check<const LW: u32, const LH: u32>(
+/// `spans` random spans through both paths of `ModulateIntensity<F>` on `chain` (`F`:
+/// `BilinearFootprintSized`, with both loops, or `BilinearFootprint`, with the loop without
+/// the depth test).
+fn check<F: TexSampler>(
     chain: &MipTexture<'_>,
+    sampler: F,
     rng: &mut Rng,
     spans: u32,
     t: &mut Tally,
 ) -> bool {
-    let Ok(tex) = TexBinding::new(
-        chain,
-        BilinearFootprintSized::<LW, LH>,
-        Repeat,
-        Repeat,
-        Default::default(),
-    ) else {
+    let Ok(tex) = TexBinding::new(chain, sampler, Repeat, Repeat, Default::default()) else {
         return false;
     };
     let shader = ModulateIntensity { tex };
+    let depth_loop = <ModulateIntensity<'_, F, Repeat, Repeat> as Shader>::PIECE_DEPTH_LOOP;
     let mut fast = [0u16; 64];
     for _ in 0..spans {
         let (r0, r1, r2) = (rng.next(), rng.next(), rng.next());
@@ -117,7 +117,7 @@ fn check<const LW: u32, const LH: u32>(
                     + out.iter().zip(&want).filter(|(a, b)| a != b).count() as u32
                     + zr.iter().zip(&want_z).filter(|(a, b)| a != b).count() as u32;
             }
-            None => t.mismatches += 1,
+            None => t.mismatches += u32::from(depth_loop),
         }
     }
     true
@@ -171,15 +171,40 @@ fn check_small<const LW: u32, const LH: u32>(rng: &mut Rng, t: &mut Tally) -> bo
     let Ok(chain) = MipTexture::single(tex).with_footprints(fp) else {
         return false;
     };
-    check::<LW, LH>(&chain, rng, 400, t)
+    check(&chain, BilinearFootprintSized::<LW, LH>, rng, 400, t)
+        && check(&chain, BilinearFootprint, rng, 400, t)
 }
 
 fn run() -> bool {
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     let mut t = Tally::default();
-    let ok = check::<8, 7>(&data::T256X128_FP, &mut rng, 3000, &mut t)
-        && check::<6, 6>(&data::T64_FP, &mut rng, 1000, &mut t)
-        && check::<7, 7>(&data::T128_FP, &mut rng, 1000, &mut t)
+    let ok = check(
+        &data::T256X128_FP,
+        BilinearFootprintSized::<8, 7>,
+        &mut rng,
+        3000,
+        &mut t,
+    ) && check(
+        &data::T256X128_FP,
+        BilinearFootprint,
+        &mut rng,
+        3000,
+        &mut t,
+    ) && check(
+        &data::T64_FP,
+        BilinearFootprintSized::<6, 6>,
+        &mut rng,
+        1000,
+        &mut t,
+    ) && check(&data::T64_FP, BilinearFootprint, &mut rng, 1000, &mut t)
+        && check(
+            &data::T128_FP,
+            BilinearFootprintSized::<7, 7>,
+            &mut rng,
+            1000,
+            &mut t,
+        )
+        && check(&data::T128_FP, BilinearFootprint, &mut rng, 1000, &mut t)
         && check_small::<1, 1>(&mut rng, &mut t)
         && check_small::<2, 1>(&mut rng, &mut t)
         && check_small::<3, 5>(&mut rng, &mut t)
