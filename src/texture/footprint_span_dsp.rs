@@ -25,7 +25,7 @@
 //! and `r7`, which Rust reserves, saved and restored inside the block).
 //!
 //! [`lit_span_depth`] tests and writes the depth in the same loop (46 instructions per
-//! drawn pixel, about 15 per hidden one), so the span stage hands it spans of any length
+//! drawn pixel, 18 per hidden one), so the span stage hands it spans of any length
 //! instead of a depth pass, a mask and a second loop (which LLVM could not fuse on this
 //! core without spilling).
 //!

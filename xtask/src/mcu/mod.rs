@@ -180,9 +180,9 @@ impl McuArgs {
 /// The firmware measured alone (geometry table) rather than as a scene.
 const GEOMETRY: &str = "geometry";
 
-/// The firmware that checks the ARMv7E-M assembly span loop against the generic one,
-/// pixel by pixel (pass or fail, no figures): `loop=asm` on Cortex-M4F, `loop=none` where
-/// the core has no such loop.
+/// The firmware that checks the ARMv7E-M assembly span loops against the generic sampler
+/// and depth test, pixel by pixel (pass or fail, no figures): `loop=asm` on Cortex-M4F,
+/// `loop=none` where the core has no such loop.
 const DSP_CHECK: &str = "dsp_span";
 
 /// Parses `--only`: a scene of [`SCENES`] or [`WHOLE_SCENES`], [`GEOMETRY`] or

@@ -371,9 +371,9 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
     match dsp {
         None => {}
         Some(Ok(lines)) => println!(
-            "\nThe ARMv7E-M span loop (`dsp_span` firmware: the assembly loop of \
-             `BilinearFootprintSized` against the generic sampler, pixel by pixel, random \
-             spans):\n\n{lines}"
+            "\nThe ARMv7E-M span loops (`dsp_span` firmware: the assembly loops of \
+             `BilinearFootprintSized` and `BilinearFootprint` against the generic sampler and \
+             depth test, pixel by pixel, random spans):\n\n{lines}"
         ),
         Some(Err(e)) => problems.push(e),
     }
