@@ -3,8 +3,9 @@
 //!
 //! `fixel_dsp`: ARMv7E-M (`thumbv7em-*`: Cortex-M4, M4F, M7), whose DSP extension has the
 //! dual 16-bit multiplies (`smuad`, `smlad`), the rounding high multiply (`smmulr`) and the
-//! halfword packing (`pkhbt`) that the span loop of
-//! [`BilinearFootprintSized`](crate::texture::BilinearFootprintSized) is written with.
+//! halfword packing (`pkhbt`) that the span loops of the footprint samplers
+//! (`BilinearFootprintSized`, `BilinearFootprint`; `src/texture/footprint_span_dsp.rs`) are
+//! written with.
 //! Cortex-M3 (`thumbv7m-*`) has none of them.
 
 fn main() {
