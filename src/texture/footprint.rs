@@ -52,7 +52,7 @@
 use embedded_graphics_core::pixelcolor::IntoStorage;
 
 use super::mip::{MipTexture, TexSampler};
-use super::sample::{blend_rows_q8, Bilinear, Sampler};
+use super::sample::{blend_rows_q8, Bilinear, Sampler, REPEAT_SPLIT};
 use super::texture::Texture;
 use super::wrap::WrapMode;
 use crate::Error;
@@ -139,8 +139,8 @@ pub(super) fn gather_footprint(
     col_mask: u32,
     count_mask: usize,
 ) -> (u32, u32, u32, u32) {
-    let tu = u.wrapping_sub(0x7F80);
-    let tv = v.wrapping_sub(0x7F80);
+    let tu = u.wrapping_sub(REPEAT_SPLIT);
+    let tv = v.wrapping_sub(REPEAT_SPLIT);
     let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
     let row = ((tv >> 16) as u32).wrapping_shl(log2_w);
     let idx = (row | ((tu >> 16) as u32 & col_mask)) as usize & count_mask;

@@ -7,7 +7,7 @@
 //! [`ModulateIntensity`](crate::shading::ModulateIntensity) runs after
 //! [`Shader::piece_in_range`](crate::shading::Shader::piece_in_range)), bit for bit:
 //!
-//! - the footprint of `(u - 0x7F80, v - 0x7F80)` (I16F16 texel units), row wrapped to
+//! - the footprint of `(u - REPEAT_SPLIT, v - REPEAT_SPLIT)` (I16F16 texel units; `0x7F80`), row wrapped to
 //!   `2^LOG2_H`, column to `2^LOG2_W`, and its Q8 fractions `a`, `b`;
 //! - the weights `w11 = (a b + 128) >> 8`, `w10 = a - w11`, `w01 = b - w11`,
 //!   `w00 = 256 - a - b + w11`, packed two per word (`w00 | w10 << 16`, `w01 | w11 << 16`)
@@ -40,6 +40,8 @@
 //! mcu`, where `ldm` of `n` words costs `1 + n`: 214.0 -> 204.2 -> 201.1);
 //! `whole_sphere_footprint` 168.08 -> 150.55 with [`lit_span_runtime`] -> 147.84 with
 //! [`lit_span_depth_runtime`] (60 instructions per pixel in LLVM's loop there).
+
+use super::sample::REPEAT_SPLIT;
 
 /// The address of a pixel's footprint in `r1`, for a size fixed at compile time: `r4`
 /// (the footprints) plus `row << (LOG2_W + 3) + col << 3`, with `row` and `col` the low
@@ -167,6 +169,16 @@ macro_rules! depth_next_pixel {
     };
 }
 
+/// The piece's first texel coordinates split as the bilinear samplers split them
+/// ([`REPEAT_SPLIT`]): the loops' `u` and `v` registers.
+#[inline(always)]
+fn split(start: &[i32; 3]) -> (i32, i32) {
+    (
+        start[0].wrapping_sub(REPEAT_SPLIT),
+        start[1].wrapping_sub(REPEAT_SPLIT),
+    )
+}
+
 /// The footprints a `2^log2_w x 2^log2_h` texture has, one per texel (the loops' own bound:
 /// their loads are not checked per pixel, and they do not rely on the binding's
 /// [`TexBinding::can_draw`](crate::shading::TexBinding::can_draw)); `usize::MAX` when that
@@ -205,9 +217,7 @@ pub(super) fn lit_span<const LOG2_W: u32, const LOG2_H: u32>(
     }
     let fp = footprints.as_ptr();
     let range = out.as_mut_ptr_range();
-    // Bilinear's split of the coordinates (`t = u - 1/2 + 1/512`, see `gather_footprint`).
-    let tu = start[0].wrapping_sub(0x7F80);
-    let tv = start[1].wrapping_sub(0x7F80);
+    let (tu, tv) = split(start);
     // SAFETY:
     // - Loads: each pixel reads the 8 bytes of footprint `row << LOG2_W | col`, with `row`
     //   the low `LOG2_H` bits and `col` the low `LOG2_W` bits of the coordinates' integer
@@ -295,8 +305,7 @@ pub(super) fn lit_span_depth<const LOG2_W: u32, const LOG2_H: u32>(
     let range = out.as_mut_ptr_range();
     // `zrow[k]` is `out[k]`'s address plus this (bytes, wrapping).
     let zoff = (zrow.as_mut_ptr() as usize).wrapping_sub(range.start as usize);
-    let tu = start[0].wrapping_sub(0x7F80);
-    let tv = start[1].wrapping_sub(0x7F80);
+    let (tu, tv) = split(start);
     let hidden: u32;
     // SAFETY: as `lit_span` for the footprints and `out`. Depth: pixel `k` reads and may
     // write the `u16` at `out`'s `k`-th element plus `zoff`, which is `zrow[k]`'s address;
@@ -375,8 +384,7 @@ pub(super) fn lit_span_runtime(
     let stride = 8u32.wrapping_shl(log2_w);
     let fp = footprints.as_ptr();
     let range = out.as_mut_ptr_range();
-    let tu = start[0].wrapping_sub(0x7F80);
-    let tv = start[1].wrapping_sub(0x7F80);
+    let (tu, tv) = split(start);
     // SAFETY: as `lit_span`, with the footprint index `row 2^log2_w + col`, `row <=
     // 2^log2_h - 1` and `col <= 2^log2_w - 1` (masked), below `footprints.len()` =
     // `2^(log2_w + log2_h)` (checked above). Frame: `r6`, `r7` pushed first, then the stride
@@ -456,8 +464,7 @@ pub(super) fn lit_span_depth_runtime(
         1u32.wrapping_shl(log2_w).wrapping_sub(1),
         8u32.wrapping_shl(log2_w),
     ];
-    let tu = start[0].wrapping_sub(0x7F80);
-    let tv = start[1].wrapping_sub(0x7F80);
+    let (tu, tv) = split(start);
     let hidden: u32;
     // SAFETY: as `lit_span_depth` for `out` and `zrow`, and as `lit_span_runtime` for the
     // footprints. `r5` points at `extra` (four words, read before the frame is built). Frame:

@@ -129,6 +129,11 @@ fn gather<WU: WrapMode, WV: WrapMode>(
     (c, fu, fv)
 }
 
+/// What the bilinear samplers subtract from a texel coordinate (I16F16) before splitting
+/// it into a texel and a Q8 fraction: `1/2 - 1/512`, so that `t = u - 1/2 + 1/512` (see
+/// [`gather_repeat`]). Shared by the footprint samplers and their ARMv7E-M span loops.
+pub(crate) const REPEAT_SPLIT: i32 = 0x7F80;
+
 /// The four texels around `(u, v)` with repeat wrapping on both axes, and the Q8 weights
 /// `a`, `b` (`0..=255`). Rounding the 16-bit fraction to Q8 is folded into the split:
 /// `t = u - 1/2 + 1/512`, `i0 = floor(t)`, `a = frac(t)` in Q8 (truncated). Where the
@@ -138,8 +143,8 @@ fn gather<WU: WrapMode, WV: WrapMode>(
 /// cost the plain path 1.2 instructions per pixel on the Cortex-M4F whole sphere.)
 #[inline(always)]
 fn gather_repeat(tex: &Texture<'_>, u: i32, v: i32) -> ([u16; 4], u32, u32) {
-    let tu = u.wrapping_sub(0x7F80);
-    let tv = v.wrapping_sub(0x7F80);
+    let tu = u.wrapping_sub(REPEAT_SPLIT);
+    let tv = v.wrapping_sub(REPEAT_SPLIT);
     let (a, b) = ((tu as u32 >> 8) & 0xFF, (tv as u32 >> 8) & 0xFF);
     let mw = tex.width() - 1;
     let x0 = (tu >> 16) as u32 & mw;
