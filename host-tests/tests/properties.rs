@@ -336,41 +336,57 @@ proptest! {
     }
 }
 
+/// The draw of the depth-floor properties: the run-time draw in `mode`, or a typed one
+/// (`typed` 1: affine or adaptive, whose short spans are drawn inline; 2: exact).
+fn floor_draw<'a>(
+    mode: DrawMode,
+    adaptive: bool,
+    typed: u8,
+    t: fixel::texture::Texture<'a>,
+    vp: Viewport,
+) -> Draw<'a, Rgb565> {
+    use fixel::pipeline::{Adaptive, Affine, DepthLess, Exact, ModulateIntensity, Pipeline};
+    use fixel::texture::{Bilinear, Repeat};
+    type TypedAffine = Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+    type TypedAdaptive = Pipeline<Adaptive, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+    type TypedExact = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+    let mode = DrawMode {
+        depth: DepthTest::Less,
+        projection: if adaptive {
+            Projection::Adaptive { budget: 64 }
+        } else {
+            mode.projection
+        },
+        ..mode
+    };
+    match (typed, adaptive) {
+        (1, false) => Draw::new::<TypedAffine>(Some(t), vp, Cull::None).unwrap(),
+        (1, true) => Draw::new::<TypedAdaptive>(Some(t), vp, Cull::None).unwrap(),
+        (2, _) => Draw::new::<TypedExact>(Some(t), vp, Cull::None).unwrap(),
+        _ => Draw::dynamic(mode, Some(t), vp).unwrap(),
+    }
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(128), ..ProptestConfig::default() })]
 
     /// The frame's depth floor stays at or below every stored depth after each triangle,
-    /// in every projection (the short span path leaves the bound to the triangle, which
-    /// takes it from its vertices' depths: see `depth_lower_bound`), for the run-time draw
-    /// and for a typed affine one (whose short spans are drawn inline).
+    /// in every projection, for the run-time draw and for typed ones (whose short spans are
+    /// drawn inline and leave the bound to the triangle: see `depth_lower_bound`).
     #[test]
     fn depth_floor_stays_below_every_stored_depth(
         tris in prop::collection::vec([tame_vertex(), tame_vertex(), tame_vertex()], 1..12),
         mode in any_mode(),
         adaptive in any::<bool>(),
-        typed in any::<bool>(),
+        typed in 0u8..3,
         (w, h) in (1usize..48, 1usize..40),
     ) {
-        use fixel::pipeline::{Adaptive, Affine, DepthLess, ModulateIntensity, Pipeline};
         use fixel::surface::RenderTarget;
-        use fixel::texture::{Bilinear, Repeat};
         let tex = noise_texture(8, 8, 5);
         let texels = host_tests::adapter::texels(&tex);
         let t = texture(&tex, &texels);
         let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
-        let mode = DrawMode {
-            depth: DepthTest::Less,
-            projection: if adaptive { Projection::Adaptive { budget: 64 } } else { mode.projection },
-            ..mode
-        };
-        type TypedAffine = Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
-        type TypedAdaptive =
-            Pipeline<Adaptive, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
-        let draw = match (typed, adaptive) {
-            (false, _) => Draw::dynamic(mode, Some(t), vp).unwrap(),
-            (true, false) => Draw::<Rgb565>::new::<TypedAffine>(Some(t), vp, Cull::None).unwrap(),
-            (true, true) => Draw::<Rgb565>::new::<TypedAdaptive>(Some(t), vp, Cull::None).unwrap(),
-        };
+        let draw = floor_draw(mode, adaptive, typed, t, vp);
         let mut color = vec![Rgb565::new(0, 0, 0); w * h];
         let mut depth = vec![0u16; w * h];
         let mut frame = Frame::new(&mut color, w as u32, h as u32)
@@ -382,6 +398,45 @@ proptest! {
             let floor = frame.depth_floor();
             let lowest = frame.depth().unwrap().iter().copied().min().unwrap();
             prop_assert!(floor <= lowest, "floor {} above a stored depth {}", floor, lowest);
+        }
+    }
+
+    /// The depth floor is only a shortcut: a frame drawn with it (`with_depth`, the floor
+    /// known from the clear) equals the frame drawn over the same cleared depth with the
+    /// floor unknown (`with_depth_kept`), colour and depth, for triangles anywhere in the
+    /// clip-space format; and every depth a triangle changes, it lowers (`GL_LESS`).
+    #[test]
+    fn depth_floor_changes_no_pixel(
+        tris in prop::collection::vec([any_vertex(), any_vertex(), any_vertex()], 1..10),
+        mode in any_mode(),
+        adaptive in any::<bool>(),
+        typed in 0u8..3,
+        (w, h) in (1usize..48, 1usize..40),
+    ) {
+        let tex = noise_texture(8, 8, 5);
+        let texels = host_tests::adapter::texels(&tex);
+        let t = texture(&tex, &texels);
+        let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+        let draw = floor_draw(mode, adaptive, typed, t, vp);
+        let black = Rgb565::new(0, 0, 0);
+        let (mut ca, mut da) = (vec![black; w * h], vec![0u16; w * h]);
+        let (mut cb, mut db) = (vec![black; w * h], vec![u16::MAX; w * h]);
+        let mut a = Frame::new(&mut ca, w as u32, h as u32).unwrap().with_depth(&mut da).unwrap();
+        let mut b = Frame::new(&mut cb, w as u32, h as u32)
+            .unwrap()
+            .with_depth_kept(&mut db)
+            .unwrap();
+        for tri in &tris {
+            let before = a.depth().unwrap().to_vec();
+            let na = draw.clip_triangles(core::slice::from_ref(tri), &mut a).unwrap();
+            let nb = draw.clip_triangles(core::slice::from_ref(tri), &mut b).unwrap();
+            prop_assert_eq!(na, nb);
+            let after = a.depth().unwrap();
+            for (i, (&old, &new)) in before.iter().zip(after).enumerate() {
+                prop_assert!(new <= old, "pixel {} depth {} raised to {}", i, old, new);
+            }
+            prop_assert!(a.depth() == b.depth(), "depth differs with the floor");
+            prop_assert!(a.pixels() == b.pixels(), "colour differs with the floor");
         }
     }
 }

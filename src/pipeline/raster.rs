@@ -14,7 +14,7 @@ use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, Span
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
-use crate::raster::{rasterize_rows, rasterize_shared, Plane, Rect, SpanSink, SUBPIXEL_BITS};
+use crate::raster::{rasterize_rows, rasterize_shared, Rect, SpanSink, SUBPIXEL_BITS};
 use crate::shading::{Shader, Varyings};
 use crate::surface::{RenderTarget, Rows};
 use crate::texture::LodGranularity;
@@ -275,7 +275,7 @@ where
         _ => draw_with!(Unproven),
     };
     if inline_short_path::<S, P, D>() && pixels != 0 {
-        lowest = lowest.min(depth_lower_bound(&pos, &setup.z, vp));
+        lowest = lowest.min(depth_lower_bound(&corners, setup, clip));
     }
     if lowest < floor {
         target.lower_depth_floor(lowest);
@@ -352,34 +352,50 @@ fn affine_bounds<V: Varyings>(
     Some((lo, hi))
 }
 
-/// A lower bound of every 16-bit depth the triangle `pos` can write in `viewport`, from its
-/// vertices' depths (Q14, as the set-up reads them) and its depth plane `z`: the depth
-/// floor's bound for the spans of the inlined short path, which keep none
-/// ([`inline_short_path`]).
+/// A lower bound of every 16-bit depth the triangle can write: the depth floor's bound for
+/// the spans of the inlined short path, which keep none ([`inline_short_path`]).
 ///
-/// Coverage tests the corners snapped to 1/16 pixel while the plane interpolates the
-/// unsnapped ones, so a covered pixel centre lies within 1/32 pixel per axis of a point of
-/// the unsnapped triangle, where the exact plane is a convex combination of the vertex
-/// depths, at least their minimum: the centre's exact depth is at least that minimum less
-/// `(|dz/dx| + |dz/dy|) / 32` (plus one for the gradients' rounding), as in
-/// [`affine_bounds`]. The set-up's plane is within `2 + (width + height) / 2` units of the
-/// exact one anywhere in the viewport (see [`crate::raster::gradient`]); the bound subtracts
-/// `2 + width + height` for that. Without the first term a steep sliver near the near plane
-/// wrote depth 0 under a floor of 2727 (found by the property test
-/// `depth_floor_stays_below_every_stored_depth` in session 36).
-fn depth_lower_bound(pos: &[super::setup::SetupVertex; 3], z: &Plane, viewport: Rect) -> u16 {
-    let z_min = pos[0].2.min(pos[1].2).min(pos[2].2);
-    // At least (|dx| + |dy|) / 32 + 1: an or is at least the larger, half the sum.
-    let slope = ((z.dx.unsigned_abs() | z.dy.unsigned_abs()) >> 4).saturating_add(1);
-    let margin = viewport
-        .x1
-        .wrapping_sub(viewport.x0)
-        .unsigned_abs()
-        .saturating_add(viewport.y1.wrapping_sub(viewport.y0).unsigned_abs())
-        .saturating_add(2)
-        .saturating_add(slope)
-        .min(1 << 30) as i32;
-    (z_min.saturating_sub(margin) >> 14).clamp(0, 0xFFFF) as u16
+/// Why it holds, by construction rather than by an error estimate: every span loop stores
+/// at pixel `(x, y)` the depth `clamp((z >> 14), 0, 0xFFFF)` of `z`, the set-up's depth
+/// plane `at_ref + (x - px_ref) dz/dx + (y - py_ref) dz/dy` evaluated with wrapping `i32`
+/// steps from [`crate::raster::Plane::at`]. A covered pixel's centre lies in the box of the triangle's
+/// snapped corners (`corners`, sub-pixel units) and in `clip`, so its column lies in
+/// `(x_min - 8) >> 4 ..= (x_max - 8) >> 4` and in the clip's columns, and likewise its row.
+/// Over that box the exact (`i64`) plane is linear, so its least and greatest values are at
+/// two opposite corners chosen by the signs of the gradients. When both are `i32`, every
+/// value in the box is, no step wraps, and each stored depth, a non-decreasing function of
+/// the exact value, is at least the depth of the least corner. Otherwise a step may wrap
+/// and store any depth: the bound is 0. An empty box (nothing covered) bounds nothing:
+/// `u16::MAX`.
+fn depth_lower_bound(
+    corners: &[(i32, i32); 3],
+    setup: &TriSetup<impl Varyings>,
+    clip: Rect,
+) -> u16 {
+    const HALF: i32 = 1 << (SUBPIXEL_BITS - 1);
+    let span = |c0: i32, c1: i32, c2: i32, lo: i32, hi: i32| {
+        let first = (c0.min(c1).min(c2).saturating_sub(HALF) >> SUBPIXEL_BITS).max(lo);
+        let last = (c0.max(c1).max(c2).saturating_sub(HALF) >> SUBPIXEL_BITS).min(hi - 1);
+        (first, last)
+    };
+    let (x0, x1) = span(corners[0].0, corners[1].0, corners[2].0, clip.x0, clip.x1);
+    let (y0, y1) = span(corners[0].1, corners[1].1, corners[2].1, clip.y0, clip.y1);
+    if x0 > x1 || y0 > y1 {
+        return u16::MAX;
+    }
+    let z = &setup.z;
+    let at = |x: i32, y: i32| {
+        i64::from(z.at_ref)
+            + (i64::from(x) - i64::from(setup.px_ref)) * i64::from(z.dx)
+            + (i64::from(y) - i64::from(setup.py_ref)) * i64::from(z.dy)
+    };
+    let (x_lo, x_hi) = if z.dx >= 0 { (x0, x1) } else { (x1, x0) };
+    let (y_lo, y_hi) = if z.dy >= 0 { (y0, y1) } else { (y1, y0) };
+    let (least, greatest) = (at(x_lo, y_lo), at(x_hi, y_hi));
+    if least < i64::from(i32::MIN) || greatest > i64::from(i32::MAX) {
+        return 0;
+    }
+    (least >> 14).clamp(0, 0xFFFF) as u16
 }
 
 #[cfg(test)]

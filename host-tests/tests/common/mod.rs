@@ -279,3 +279,13 @@ pub fn any_bits_env() -> impl proptest::strategy::Strategy<Value = i32> {
         1 => prop::sample::select(vec![0, 1, -1, i32::MAX, i32::MIN, 1 << 30, -(1 << 30)]),
     ]
 }
+
+/// A property's case count: `ci` in the test run, or `PROPTEST_CASES` when set (for the long
+/// runs that precede a change to a property: `PROPTEST_CASES=100000 cargo test ...`).
+#[allow(dead_code)]
+pub fn cases(ci: u32) -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(ci)
+}

@@ -171,3 +171,108 @@ fn depth_precision_of_parallel_planes() {
         }
     }
 }
+
+/// A triangle clipped at the far plane with clip coordinates near the I16F16 limits, drawn
+/// with `GL_LESS` into a depth buffer cleared to 65535: its depth plane steps by more than
+/// 2^30 per pixel, so the depth wraps within a 32-pixel chunk. No pixel whose depth is not
+/// below the stored 65535 may be written: the same picture as over a buffer whose floor is
+/// unknown (`with_depth_kept`), and nothing written where the stored depth is not beaten.
+#[test]
+fn far_plane_triangle_writes_no_colour_where_the_depth_test_fails() {
+    use fixel::geometry::{ClipVertex, Cull, Viewport};
+    use fixel::math::Fx;
+    use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
+    use fixel::surface::Frame;
+    use fixel::Rgb565;
+    let v = |p: [i32; 4]| ClipVertex {
+        position: p.map(Fx::from_bits),
+        uv: [Fx::ZERO; 2],
+        color: [256, 128, 64],
+    };
+    let tri = [
+        v([-71336, -18578, 232050, 282373]),
+        v([-1261220764, 435315991, -1697722636, -765177693]),
+        v([1874167182, -646984291, 2147483647, 1137859497]),
+    ];
+    let mode = DrawMode {
+        projection: Projection::Exact,
+        shading: Shading::Gouraud,
+        depth: DepthTest::Less,
+        cull: Cull::None,
+        ..DrawMode::default()
+    };
+    let (w, h) = (127u32, 1u32);
+    let vp = Viewport::new(0, 0, w, h).unwrap();
+    let draw = Draw::dynamic(mode, None, vp).unwrap();
+    let draw_into = |kept: bool| {
+        let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+        let mut depth = vec![u16::MAX; (w * h) as usize];
+        let frame = Frame::new(&mut color, w, h).unwrap();
+        let mut frame = if kept {
+            frame.with_depth_kept(&mut depth).unwrap()
+        } else {
+            frame.with_depth(&mut depth).unwrap()
+        };
+        draw.clip_triangles(&[tri], &mut frame).unwrap();
+        (color, depth)
+    };
+    let (color, depth) = draw_into(false);
+    let written: Vec<usize> = (0..color.len())
+        .filter(|&i| color[i] != Rgb565::new(0, 0, 0))
+        .collect();
+    for &i in &written {
+        assert!(
+            depth[i] < u16::MAX,
+            "column {i} written at depth {}",
+            depth[i]
+        );
+    }
+    assert_eq!(
+        (color, depth),
+        draw_into(true),
+        "the floor changed the picture"
+    );
+}
+
+/// A typed affine draw of a triangle whose vertices have `w` between 0.0023 and 0.0104 (one
+/// behind the `w >= 2^-8` plane) into a 33 x 27 frame: the frame's depth floor stays at or
+/// below every depth stored (it once ended at 29824 over a stored 21172).
+#[test]
+fn depth_floor_of_a_clipped_tiny_w_triangle_is_below_its_depths() {
+    use fixel::geometry::{ClipVertex, Cull, Viewport};
+    use fixel::math::Fx;
+    use fixel::pipeline::{Affine, DepthLess, Draw, ModulateIntensity, Pipeline};
+    use fixel::surface::{Frame, RenderTarget};
+    use fixel::texture::{Bilinear, Repeat, Texture};
+    use fixel::Rgb565;
+    let v = |p: [f64; 4]| ClipVertex {
+        position: p.map(Fx::from_num),
+        uv: [Fx::ZERO; 2],
+        color: [0, 0, 0],
+    };
+    let tri = [
+        v([-0.00679, -0.00845, 0.0, 0.00536]),
+        v([0.02647, -0.00305, 0.0, 0.01036]),
+        v([-0.00204, -0.00334, 0.00114, 0.0023]),
+    ];
+    let texels = [Rgb565::new(31, 0, 0); 64];
+    let tex = Texture::new(&texels, 8, 8).unwrap();
+    let (w, h) = (33u32, 27u32);
+    let vp = Viewport::new(0, 0, w, h).unwrap();
+    type TypedAffine = Pipeline<Affine, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+    let draw = Draw::<Rgb565>::new::<TypedAffine>(Some(tex), vp, Cull::None).unwrap();
+    let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
+    let mut depth = vec![0u16; (w * h) as usize];
+    let mut frame = Frame::new(&mut color, w, h)
+        .unwrap()
+        .with_depth(&mut depth)
+        .unwrap();
+    let drawn = draw.clip_triangles(&[tri], &mut frame).unwrap();
+    let floor = frame.depth_floor();
+    let lowest = frame.depth().unwrap().iter().copied().min().unwrap();
+    assert!(drawn > 0);
+    assert!(
+        floor <= lowest,
+        "floor {floor} above a stored depth {lowest}"
+    );
+}

@@ -102,10 +102,7 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_
     if !Z {
         return low_bits(n);
     }
-    // Depth is linear along the chunk: its extremes are at the ends.
-    let z_end = z.wrapping_add(dz.wrapping_mul(n as i32 - 1));
-    let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
-    let (d_lo, d_hi) = (d(z.min(z_end)), d(z.max(z_end)));
+    let (d_lo, d_hi) = chunk_depth_range(z, dz, n);
     let mask = if S::DISCARDS || S::BLENDS {
         // Test only: depth is written for the pixels a discarding shader keeps, and never
         // for a blending one.
@@ -121,6 +118,34 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_
         bound.lowest = bound.lowest.min(d_lo);
     }
     mask
+}
+
+/// The lowest and highest 16-bit depth among the `n` pixels `z + k dz` (`k < n`,
+/// `1 <= n <= 32`) of a chunk, as [`depth_of`] stores them from the wrapping `i32` steps of
+/// the span loops.
+///
+/// Why the bounds hold: when the exact sum `z + (n - 1) dz` is an `i32`, no step wraps
+/// (every `z + k dz` lies between the ends, so it is an `i32` too and the wrapping step
+/// computes it exactly); the depth is the plane value shifted and clamped, a non-decreasing
+/// function of it, so over a linear run its extremes are at the ends. When the sum is not
+/// an `i32` some step wraps, and a wrapped step can store any depth: the bounds are then the
+/// whole range `(0, 0xFFFF)`, so the chunk never takes the floor's fast path nor raises the
+/// floor. (Depth planes that steep come only from triangles clipped near the limits of the
+/// clip-space format.)
+#[inline(always)]
+fn chunk_depth_range(z: i32, dz: i32, n: usize) -> (u16, u16) {
+    let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
+    let steps = n as i32 - 1;
+    // Below 2^26 the product is exact (`steps <= 31`): no 64-bit multiply on ARMv6-M.
+    let run = if dz.unsigned_abs() < 1 << 26 {
+        Some(dz.wrapping_mul(steps))
+    } else {
+        dz.checked_mul(steps)
+    };
+    match run.and_then(|run| z.checked_add(run)) {
+        Some(z_end) => (d(z.min(z_end)), d(z.max(z_end))),
+        None => (0, 0xFFFF),
+    }
 }
 
 /// Writes the chunk's depths (all of them pass the test).
