@@ -338,3 +338,91 @@ fn front_face_culling_against_acne() {
         "{e}"
     );
 }
+
+/// The cube alone, turned about its vertical axis so that the face towards the camera is
+/// at `theta` degrees to a horizontal directional light (90: edge-on), drawn from straight
+/// in front: the lit fraction of fixel and of the reference over the middle of that face
+/// (a 60 x 60 pixel box that no other face reaches).
+fn face_at_angle<F: ShadowFilter>(theta: f64) -> (Vec<f64>, Vec<f64>) {
+    use fixel::math::fx;
+    use fixel::scene::Camera;
+    let cube = fixel::demo::cube();
+    let turn = Angle::from_degrees(fx(-(90.0 - theta)));
+    let centre = Vec3::new(Fx::ZERO, Fx::ZERO, fx(-4.0));
+    let mesh = SceneMesh {
+        positions: cube.positions.to_vec(),
+        indices: cube.indices.to_vec(),
+        model: Mat4::translation(centre).mul(&Mat4::rotation_y(turn)),
+    };
+    // Towards the light: -x, so the front face's normal (sin a, 0, cos a) is at theta to it.
+    let space = LightSpace::directional(
+        centre + Vec3::new(fx(-10.0), Fx::ZERO, Fx::ZERO),
+        centre,
+        Vec3::new(Fx::ZERO, Fx::ONE, Fx::ZERO),
+        fx(3.0),
+        Fx::ONE,
+        fx(19.0),
+    )
+    .unwrap();
+    let camera = Camera::perspective(
+        Angle::from_degrees(fx(45.0)),
+        fx(4.0 / 3.0),
+        fx(0.5),
+        fx(20.0),
+    )
+    .unwrap();
+    let s = Setup::new::<F>(64);
+    let m = [mesh];
+    let fx_img = fixel_shadow::<Directional, F, 3>(&m, &camera, &space, &s);
+    let sc = ref_scene(&m, &camera, space.matrix(), s.w, s.h);
+    let map = light_map(&sc, s.size, false);
+    let r = lit_pass(&sc, &map, ref_filter::<F>(), &ref_bias(&s.bias), 1.0);
+    let boxed = |lit: &[f64], cov: &[bool]| {
+        let mut v = Vec::new();
+        for y in 90..150 {
+            for x in 130..190 {
+                let i = y * 320 + x;
+                assert!(cov[i], "pixel ({x}, {y}) of the face not covered");
+                v.push(lit[i]);
+            }
+        }
+        v
+    };
+    (
+        boxed(&fx_img.lit, &fx_img.covered),
+        boxed(&r.lit, &r.covered),
+    )
+}
+
+/// A face of a convex solid never shadows itself: at 80, 85 and 89 degrees to the light
+/// every pixel of it is lit, by every filter, in fixel and in the reference; edge-on (90)
+/// and turned away (95) it is in its own shade.
+#[test]
+fn a_face_at_a_grazing_angle_does_not_shadow_itself() {
+    fn check<F: ShadowFilter>() {
+        for theta in [80.0, 85.0, 89.0, 90.0, 95.0] {
+            let (fx, rf) = face_at_angle::<F>(theta);
+            let lit = |v: &[f64]| v.iter().filter(|&&l| l >= 1.0).count();
+            let dark = |v: &[f64]| v.iter().filter(|&&l| l <= 0.0).count();
+            println!(
+                "face at {theta} degrees, {}: lit {} / {} (reference {}), in shade {} ({})",
+                F::NAME,
+                lit(&fx),
+                fx.len(),
+                lit(&rf),
+                dark(&fx),
+                dark(&rf)
+            );
+            if theta < 90.0 {
+                assert_eq!(lit(&fx), fx.len(), "{} at {theta}", F::NAME);
+                assert_eq!(lit(&rf), rf.len(), "reference, {} at {theta}", F::NAME);
+            } else {
+                assert_eq!(dark(&fx), fx.len(), "{} at {theta}", F::NAME);
+                assert_eq!(dark(&rf), rf.len(), "reference, {} at {theta}", F::NAME);
+            }
+        }
+    }
+    check::<SingleTap>();
+    check::<Pcf2x2>();
+    check::<Pcf3x3>();
+}

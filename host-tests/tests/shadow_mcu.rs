@@ -33,11 +33,11 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 const FIRMWARE: [(&str, u32); 7] = [
     ("shadow_light", 0x89313f10),
     ("shadow_none", 0x1d0baf22),
-    ("shadow_single", 0xa88e08a0),
-    ("shadow_pcf2x2", 0xdda67452),
-    ("shadow_pcf3x3", 0xb9381e41),
-    ("shadow_spot", 0xdc94ee6c),
-    ("shadow_grazing", 0x70450db6),
+    ("shadow_single", 0x83480e52),
+    ("shadow_pcf2x2", 0x64fdce8e),
+    ("shadow_pcf3x3", 0xc99e1bf6),
+    ("shadow_spot", 0xfc4d6f32),
+    ("shadow_grazing", 0xfbbd46e7),
 ];
 
 /// The banded firmware frame and the same frame drawn whole: (banded, whole) checksums and

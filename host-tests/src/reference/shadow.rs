@@ -1,4 +1,4 @@
-//! The f64 reference of shadow mapping (seed 000 §3.4): the scene's depth rasterized from
+//! The f64 reference of shadow mapping (Williams, SIGGRAPH 1978): the scene's depth rasterized from
 //! the light into an f64 map by this module's own pass (the reference's clipper and
 //! top-left coverage at texel centres, depth interpolated linearly in window space, no
 //! quantization), then, per camera pixel, the point's light-space position interpolated
@@ -12,6 +12,8 @@
 //! s = (x/w + 1) / 2,  t = (1 - y/w) / 2,  d = 65535 (z/w + 1) / 2
 //! outside:  w <= 0, s or t outside [0, 1), d outside [0, 65535]
 //! bias = c + min(max, k (|∂d/∂X| + |∂d/∂Y|)),  X = s size, Y = t size, per triangle
+//! own shade (lit 0 inside the frustum): det[(x, y, w) of the three vertices] <= 0, the
+//!           triangle turned away from the light or edge-on (counter-clockwise = front)
 //! tap (i, j) lit  <=>  d - bias <= map[clamp(j)][clamp(i)]
 //! single: tap(floor(X), floor(Y))
 //! 2x2:    bilinear weights of X - 0.5, Y - 0.5 over the four taps around
@@ -163,6 +165,16 @@ pub fn triangle_bias(c: &[[f64; 4]; 3], size: u32, bias: &RefBias) -> f64 {
     bias.constant + (bias.slope * slope).min(bias.max)
 }
 
+/// Whether a triangle with light clip coordinates `c` faces the light: the determinant of
+/// its homogeneous `(x, y, w)` is positive (counter-clockwise seen from the light, for any
+/// signs of `w`).
+pub fn faces_light(c: &[[f64; 4]; 3]) -> bool {
+    let [a, b, d] = c.map(|v| [v[0], v[1], v[3]]);
+    let det = a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
+        + a[2] * (b[0] * d[1] - b[1] * d[0]);
+    det > 0.0
+}
+
 /// Lit fraction (0..=1) of a point at `(X, Y)` texels, biased depth `d`.
 pub fn filter(map: &RefMap, x: f64, y: f64, d: f64, f: RefShadowFilter) -> f64 {
     let tap = |i: i64, j: i64| if d <= map.at(i, j) { 1.0 } else { 0.0 };
@@ -216,6 +228,7 @@ pub fn lit_pass(
     for t in &scene.tris {
         let lc = t.map(|p| transform(&scene.light, p));
         let tb = triangle_bias(&lc, map.size, bias);
+        let own_shade = !faces_light(&lc);
         let tri = RefTriangle([0, 1, 2].map(|k| ref_vertex(transform(&scene.camera, t[k]), lc[k])));
         for sub in fan(&clip_triangle(&tri)) {
             let win = sub.0.map(|v| to_window(&v, w, h));
@@ -241,6 +254,7 @@ pub fn lit_pass(
                     core::array::from_fn(|j| (0..3).map(|i| q[i] * extra[i][j]).sum::<f64>() / qs);
                 img.covered[k] = true;
                 img.lit[k] = match project(c, map.size) {
+                    Some(_) if own_shade => 0.0,
                     Some((sx, sy, d)) => filter(map, sx, sy, d - tb, f),
                     None => outside,
                 };

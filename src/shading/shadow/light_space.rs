@@ -23,6 +23,44 @@ pub trait LightKind: Copy + core::fmt::Debug + 'static {
     /// Map position `(s, t)` (Q12.20) and depth `d` (Q16.4) from interpolated varyings, or
     /// `None` outside the light's frustum.
     fn project(v: [i32; 4]) -> Option<(i32, i32, i32)>;
+    /// Whether a triangle whose vertices have the light varyings `v` faces the light (its
+    /// front, counter-clockwise in the light's clip space as in GL, is turned towards the
+    /// light). A triangle that does not, edge-on included, is in its own shade. The default
+    /// says every triangle faces the light.
+    fn faces_light(v: &[[i32; 4]; 3]) -> bool {
+        let _ = v;
+        true
+    }
+}
+
+/// Whether the triangle of homogeneous light-space points `p` (`(a, b, w)`, `a` growing to
+/// the right and `b` downwards, as the map's `s` and `t`) faces the light: the determinant
+/// of the three points, which has the sign of the triangle's area seen from the light for
+/// any `w` (the volume of the tetrahedron the light's eye makes with it), is negative (`b`
+/// points down: a front face's counter-clockwise turn is clockwise here).
+///
+/// Exact in `i64` up to the rounding of one step: the edges `p1 - p0` and `p2 - p0` halved
+/// (each below 2^30), their cross product (below 2^61) shifted to below 2^31, then its dot
+/// product with `p0` (each term below 2^61). Only a triangle within that rounding of edge-on
+/// can be called either way.
+#[inline]
+pub(crate) fn turned_towards(p: [[i32; 3]; 3]) -> bool {
+    let e = |k: usize| -> [i64; 3] {
+        core::array::from_fn(|j| (i64::from(p[k][j]) - i64::from(p[0][j])) >> 1)
+    };
+    let (e1, e2) = (e(1), e(2));
+    let mut c = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
+    let m = c.iter().fold(0u64, |m, v| m | v.unsigned_abs());
+    let k = (64 - m.leading_zeros()).saturating_sub(31);
+    for v in c.iter_mut() {
+        *v >>= k;
+    }
+    let det: i64 = (0..3).map(|j| i64::from(p[0][j]) * c[j]).sum();
+    det < 0
 }
 
 /// A directional light: an orthographic light space (parallel rays).
@@ -77,6 +115,10 @@ impl LightKind for Directional {
             0,
         ]
     }
+    fn faces_light(v: &[[i32; 4]; 3]) -> bool {
+        // Parallel rays: `w = 1` (any positive constant).
+        turned_towards(v.map(|[s, t, _, _]| [s, t, 1]))
+    }
     #[inline(always)]
     fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
         let [s, t, d, _] = v;
@@ -95,6 +137,9 @@ impl LightKind for Spot {
             sat(z.saturating_add(w) >> 17),
             sat(w >> 16),
         ]
+    }
+    fn faces_light(v: &[[i32; 4]; 3]) -> bool {
+        turned_towards(v.map(|[a, b, _, w]| [a, b, w]))
     }
     #[inline(always)]
     fn project(v: [i32; 4]) -> Option<(i32, i32, i32)> {
@@ -222,5 +267,46 @@ impl LightSpace<Spot> {
             matrix: proj.mul(&Mat4::look_at(eye, target, up)?),
             _kind: core::marker::PhantomData,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::turned_towards;
+    use crate::test_rng::Rng;
+
+    /// The sign of the integer determinant is the exact one wherever the exact value is not
+    /// within its rounding of zero, for points anywhere in the varyings' range.
+    #[test]
+    fn facing_is_the_sign_of_the_exact_determinant() {
+        let mut rng = Rng(0x5AD0_F1CE);
+        let mut checked = 0;
+        for round in 0..200_000 {
+            let spread = 1i64 << (10 + round % 21);
+            let coord = |rng: &mut Rng| {
+                let v = (rng.next() >> 33) as i64 % (2 * spread + 1) - spread;
+                v.clamp(-(1 << 30), 1 << 30) as i32
+            };
+            let p: [[i32; 3]; 3] =
+                core::array::from_fn(|_| [coord(&mut rng), coord(&mut rng), coord(&mut rng)]);
+            let q = p.map(|r| r.map(i128::from));
+            let det = q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1])
+                - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0])
+                + q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
+            // The rounding: the halved edges (one unit each) and the cross product's shift
+            // (below 2^-31 of it), times |p0|: far below this margin.
+            let scale = q
+                .iter()
+                .flatten()
+                .map(|v| v.unsigned_abs())
+                .max()
+                .unwrap_or(0);
+            if det.unsigned_abs() <= scale * scale * 8 {
+                continue;
+            }
+            checked += 1;
+            assert_eq!(turned_towards(p), det < 0, "{p:?}: {det}");
+        }
+        assert!(checked > 150_000, "{checked}");
     }
 }
