@@ -88,21 +88,91 @@ fn example_exists(name: &str) -> bool {
     false
 }
 
-pub(crate) fn render() -> ExitCode {
-    let mut ok = true;
-    for name in RENDER_EXAMPLES {
-        println!("\n==> cargo run --release -p fixel --example {name}");
-        if !example_exists(name) {
-            eprintln!(
-                "render: example `{name}` does not exist yet \
-                 (expected examples/{name}.rs in the fixel package); skipping"
-            );
-            ok = false;
-            continue;
+/// Flags of `cargo xtask render`.
+#[derive(clap::Args, Clone, Debug)]
+pub(crate) struct RenderArgs {
+    /// Then copy into docs/images every picture there whose pixels changed
+    #[arg(long, conflicts_with = "check")]
+    pub docs: bool,
+    /// Then fail if a picture in docs/images differs from what the code draws now
+    #[arg(long)]
+    pub check: bool,
+    /// Cargo profile of the examples (CI renders with `ci`, whose build the tests share:
+    /// the pixels are the same in every profile)
+    #[arg(long, default_value = "release")]
+    pub profile: String,
+}
+
+pub(crate) fn render(args: &RenderArgs) -> ExitCode {
+    let t0 = Instant::now();
+    let names: Vec<&str> = RENDER_EXAMPLES
+        .iter()
+        .copied()
+        .filter(|name| {
+            let there = example_exists(name);
+            if !there {
+                eprintln!("render: example `{name}` does not exist (examples/{name}.rs); skipped");
+            }
+            there
+        })
+        .collect();
+    // One build of every example first, with cargo's own progress (the first build of a
+    // fresh checkout takes a minute or two), then each run in turn.
+    println!(
+        "==> [build] the {} demo examples, profile {} (cargo's progress follows)",
+        names.len(),
+        args.profile
+    );
+    let mut build = vec!["build", "--profile", &args.profile, "-p", "fixel"];
+    for name in &names {
+        build.extend(["--example", name]);
+    }
+    if let Err(msg) = cargo(&build).run() {
+        eprintln!("render: {msg}");
+        return ExitCode::FAILURE;
+    }
+    println!("==> [build] done in {}", fmt_dur(t0.elapsed()));
+    let mut ok = names.len() == RENDER_EXAMPLES.len();
+    for (k, name) in names.iter().enumerate() {
+        println!("\n==> [{}/{}] {name}", k + 1, names.len());
+        let t = Instant::now();
+        let run = [
+            "run",
+            "-q",
+            "--profile",
+            &args.profile,
+            "-p",
+            "fixel",
+            "--example",
+            name,
+        ];
+        match cargo(&run).run() {
+            Ok(()) => println!("==> {name}: ok in {}", fmt_dur(t.elapsed())),
+            Err(msg) => {
+                eprintln!("render: {msg}");
+                ok = false;
+            }
         }
-        let t0 = Instant::now();
-        match cargo(&["run", "--release", "-p", "fixel", "--example", name]).run() {
-            Ok(()) => println!("==> {name}: ok in {}", fmt_dur(t0.elapsed())),
+    }
+    println!("\n==> rendered in {}", fmt_dur(t0.elapsed()));
+    if ok && (args.docs || args.check) {
+        println!("\n==> docs/images against the fresh render (decoded pixels)");
+        match crate::pictures::check_docs(args.docs) {
+            Ok(changed) if changed.is_empty() => println!("docs/images: every picture is current"),
+            Ok(changed) if args.docs => println!(
+                "docs/images: {} updated ({}); review them before committing",
+                changed.len(),
+                changed.join(", ")
+            ),
+            Ok(changed) => {
+                eprintln!(
+                    "render --check: {} picture(s) in docs/images differ from what the code \
+                     draws: {}. Run `cargo xtask render --docs`, look at them, commit them.",
+                    changed.len(),
+                    changed.join(", ")
+                );
+                ok = false;
+            }
             Err(msg) => {
                 eprintln!("render: {msg}");
                 ok = false;

@@ -15,6 +15,7 @@ mod count;
 mod images;
 mod light3d;
 mod mcu;
+mod pictures;
 mod progress;
 mod report;
 mod teapot;
@@ -61,11 +62,12 @@ enum Command {
     Bless,
     /// Render the demo scenes (release) to target/pictures/*.png
     ///
-    /// Runs the demo examples (`showcase`, `scenes`, `preview`, `shadow`, `noise`,
-    /// `envmap` and the other technique demos, release), which write
-    /// target/pictures/*.png.
+    /// Builds the demo examples (`showcase`, `scenes`, `preview`, `shadow`, `noise`,
+    /// `envmap` and the other technique demos, release) and runs each, which write
+    /// target/pictures/*.png. With --docs, copies every picture of docs/images whose
+    /// pixels changed; with --check, fails when one differs (CI runs it).
     #[command(verbatim_doc_comment)]
-    Render,
+    Render(images::RenderArgs),
     /// Exact x86_64 instructions per drawn pixel of the benchmark scenes and modes
     ///
     /// Builds the `count_scene` example (release), runs each case under
@@ -162,7 +164,7 @@ fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Ci(a) => ci::ci(&a),
         Command::Bless => images::bless(),
-        Command::Render => images::render(),
+        Command::Render(a) => images::render(&a),
         Command::Count(a) => count::count(&a),
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
