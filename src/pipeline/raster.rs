@@ -358,15 +358,15 @@ fn affine_bounds<V: Varyings>(
 /// Why it holds, by construction rather than by an error estimate: every span loop stores
 /// at pixel `(x, y)` the depth `clamp((z >> 14), 0, 0xFFFF)` of `z`, the set-up's depth
 /// plane `at_ref + (x - px_ref) dz/dx + (y - py_ref) dz/dy` evaluated with wrapping `i32`
-/// steps from [`crate::raster::Plane::at`]. A covered pixel's centre lies in the box of the triangle's
-/// snapped corners (`corners`, sub-pixel units) and in `clip`, so its column lies in
-/// `(x_min - 8) >> 4 ..= (x_max - 8) >> 4` and in the clip's columns, and likewise its row.
-/// Over that box the exact (`i64`) plane is linear, so its least and greatest values are at
-/// two opposite corners chosen by the signs of the gradients. When both are `i32`, every
-/// value in the box is, no step wraps, and each stored depth, a non-decreasing function of
-/// the exact value, is at least the depth of the least corner. Otherwise a step may wrap
-/// and store any depth: the bound is 0. An empty box (nothing covered) bounds nothing:
-/// `u16::MAX`.
+/// steps from [`crate::raster::Plane::at`]. A covered pixel's centre lies in the box of
+/// the triangle's snapped corners (`corners`, sub-pixel units) and in `clip`, so its
+/// column lies in `(x_min - 8) >> 4 ..= (x_max - 8) >> 4` and in the clip's columns, and
+/// likewise its row. Over that box the exact plane is linear, so its least and greatest
+/// values are at two opposite corners chosen by the signs of the gradients. When both are
+/// `i32`, every value in the box is, no step wraps, and each stored depth, a
+/// non-decreasing function of the exact value, is at least the depth of the least corner.
+/// Otherwise a step may wrap and store any depth: the bound is 0. An empty box (nothing
+/// covered) bounds nothing: `u16::MAX`.
 fn depth_lower_bound(
     corners: &[(i32, i32); 3],
     setup: &TriSetup<impl Varyings>,
@@ -384,17 +384,41 @@ fn depth_lower_bound(
         return u16::MAX;
     }
     let z = &setup.z;
-    let at = |x: i32, y: i32| {
-        i64::from(z.at_ref)
-            + (i64::from(x) - i64::from(setup.px_ref)) * i64::from(z.dx)
-            + (i64::from(y) - i64::from(setup.py_ref)) * i64::from(z.dy)
-    };
     let (x_lo, x_hi) = if z.dx >= 0 { (x0, x1) } else { (x1, x0) };
     let (y_lo, y_hi) = if z.dy >= 0 { (y0, y1) } else { (y1, y0) };
-    let (least, greatest) = (at(x_lo, y_lo), at(x_hi, y_hi));
-    if least < i64::from(i32::MIN) || greatest > i64::from(i32::MAX) {
-        return 0;
-    }
+    let off = |a: i32, r: i32| a.wrapping_sub(r);
+    let (ax, ay) = (off(x_lo, setup.px_ref), off(y_lo, setup.py_ref));
+    let (bx, by) = (off(x_hi, setup.px_ref), off(y_hi, setup.py_ref));
+    // Small triangles: gradients below 2^20 and corners within 2^10 pixels of the reference
+    // make each product exact in `i32` (below 2^30), and the sums' overflow flags say
+    // whether the exact values are `i32` (no 64-bit multiply on ARMv6-M).
+    let small = |v: i32, bits: u32| v.unsigned_abs() < 1 << bits;
+    let least = if small(z.dx, 20)
+        && small(z.dy, 20)
+        && small(ax, 10)
+        && small(ay, 10)
+        && small(bx, 10)
+        && small(by, 10)
+    {
+        let at = |x: i32, y: i32| {
+            z.at_ref
+                .checked_add(x * z.dx)
+                .and_then(|v| v.checked_add(y * z.dy))
+        };
+        match (at(ax, ay), at(bx, by)) {
+            (Some(least), Some(_)) => least,
+            _ => return 0,
+        }
+    } else {
+        let at = |x: i32, y: i32| {
+            i64::from(z.at_ref) + i64::from(x) * i64::from(z.dx) + i64::from(y) * i64::from(z.dy)
+        };
+        let (least, greatest) = (at(ax, ay), at(bx, by));
+        if least < i64::from(i32::MIN) || greatest > i64::from(i32::MAX) {
+            return 0;
+        }
+        least as i32
+    };
     (least >> 14).clamp(0, 0xFFFF) as u16
 }
 

@@ -124,14 +124,14 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_
 /// `1 <= n <= 32`) of a chunk, as [`depth_of`] stores them from the wrapping `i32` steps of
 /// the span loops.
 ///
-/// Why the bounds hold: when the exact sum `z + (n - 1) dz` is an `i32`, no step wraps
-/// (every `z + k dz` lies between the ends, so it is an `i32` too and the wrapping step
-/// computes it exactly); the depth is the plane value shifted and clamped, a non-decreasing
-/// function of it, so over a linear run its extremes are at the ends. When the sum is not
-/// an `i32` some step wraps, and a wrapped step can store any depth: the bounds are then the
-/// whole range `(0, 0xFFFF)`, so the chunk never takes the floor's fast path nor raises the
-/// floor. (Depth planes that steep come only from triangles clipped near the limits of the
-/// clip-space format.)
+/// Why the bounds hold: when the exact sum `z + (n - 1) dz` is an `i32` (the product is
+/// exact in `i32` for `|dz| < 2^26`, checked above), no step wraps (every `z + k dz` lies
+/// between the ends, so the wrapping steps compute it exactly). The depth is the plane
+/// value shifted and clamped, a non-decreasing function of it, so over a linear run its
+/// extremes are at the ends. Otherwise some step may wrap, and a wrapped step can store any
+/// depth: the bounds are then the whole range `(0, 0xFFFF)`, so the chunk never takes the
+/// floor's fast path and lowers the floor to 0. (Depth planes whose steps wrap come only
+/// from triangles clipped near the limits of the clip-space format.)
 #[inline(always)]
 fn chunk_depth_range(z: i32, dz: i32, n: usize) -> (u16, u16) {
     let d = |z: i32| (z >> 14).clamp(0, 0xFFFF) as u16;
