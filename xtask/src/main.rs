@@ -15,7 +15,9 @@ mod count;
 mod images;
 mod light3d;
 mod mcu;
+mod preview;
 mod progress;
+mod publish;
 mod report;
 mod teapot;
 
@@ -47,12 +49,25 @@ enum Command {
     ///
     /// Steps, in order: toolchain targets/components, fmt, clippy, test (the `ci`
     /// profile: optimized, with overflow checks and debug assertions), docs
-    /// (-D warnings), no_std cross builds for
+    /// (-D warnings), `cargo publish --dry-run` (package at most 1 MiB, docs for
+    /// thumbv7em), the preview window under Xvfb (`preview --check`), no_std
+    /// cross builds for
     /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
     /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
     /// the report). Ends with a summary table of the steps and their times.
     #[command(verbatim_doc_comment)]
     Ci(ci::CiArgs),
+    /// The benchmark scenes in a desktop window (embedded-graphics-simulator, SDL2)
+    ///
+    /// Builds and runs examples/preview-window (release): the cube, sphere or
+    /// teapot at 320 x 240 RGB565, drawn in 8-row bands through BandRenderer as a
+    /// firmware draws them. Keys: arrows orbit, + / - distance, t technique,
+    /// s scene, c chip, e instruction estimate, r start view, h help, q quits.
+    /// Installs SDL2's development files (apt-get) when missing. --check runs it
+    /// under Xvfb, presses keys with xdotool and compares screenshots of the
+    /// window with the PNGs of the same frames (a step of `ci`).
+    #[command(verbatim_doc_comment)]
+    Preview(preview::PreviewArgs),
     /// Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images), then show which goldens changed
     ///
     /// Re-runs `cargo test -p host-tests` with FIXEL_BLESS=1 (rewrites the golden
@@ -161,6 +176,7 @@ enum Command {
 fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Ci(a) => ci::ci(&a),
+        Command::Preview(a) => preview::preview(&a),
         Command::Bless => images::bless(),
         Command::Render => images::render(),
         Command::Count(a) => count::count(&a),
