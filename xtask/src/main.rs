@@ -68,6 +68,15 @@ enum Command {
     /// window with the PNGs of the same frames (a step of `ci`).
     #[command(verbatim_doc_comment)]
     Preview(preview::PreviewArgs),
+    /// What crates.io would get: the `publish (dry run)` step of `ci`
+    ///
+    /// Runs `cargo publish --dry-run -p fixel` (packages the library and builds
+    /// the package), checks the package's file list (the library, build.rs,
+    /// README, CHANGELOG, licence texts) and its size (at most 1 MiB
+    /// compressed), and builds the docs for thumbv7em-none-eabihf with warnings
+    /// denied, as docs.rs builds them.
+    #[command(verbatim_doc_comment)]
+    Package,
     /// Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images), then show which goldens changed
     ///
     /// Re-runs `cargo test -p host-tests` with FIXEL_BLESS=1 (rewrites the golden
@@ -177,6 +186,13 @@ fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Ci(a) => ci::ci(&a),
         Command::Preview(a) => preview::preview(&a),
+        Command::Package => match publish::check() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("xtask package: {e}");
+                ExitCode::FAILURE
+            }
+        },
         Command::Bless => images::bless(),
         Command::Render => images::render(),
         Command::Count(a) => count::count(&a),

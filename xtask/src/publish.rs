@@ -1,11 +1,12 @@
-//! The `publish (dry run)` step of `cargo xtask ci`: what crates.io would get.
+//! The `publish (dry run)` step of `cargo xtask ci` (and `cargo xtask package`): what
+//! crates.io would get.
 //!
 //! `cargo publish --dry-run -p fixel` packages the library and builds the package as a
 //! user's download would be built; then the package's file list must hold only the library
 //! (`src/`, `build.rs`), the README, the changelog, the licence texts and the files cargo
-//! adds, and the `.crate` must stay within [`MAX_CRATE_BYTES`]. Last, the documentation is
-//! built for `thumbv7em-none-eabihf` with warnings denied, as docs.rs builds it from
-//! `[package.metadata.docs.rs]`.
+//! adds, and the `.crate` (`cargo package --no-verify`) must stay within
+//! [`MAX_CRATE_BYTES`]. Last, the documentation is built for `thumbv7em-none-eabihf` with
+//! warnings denied, as docs.rs builds it from `[package.metadata.docs.rs]`.
 
 use std::env;
 use std::fs;
@@ -70,6 +71,9 @@ pub(crate) fn check() -> Result<(), String> {
         return Err(format!("the package lacks {}", missing.join(", ")));
     }
 
+    // `publish --dry-run` leaves no `.crate` behind: package again, unverified (the
+    // dry run built it), to weigh it.
+    cargo(&["package", "--no-verify", "--allow-dirty", "-p", "fixel"]).run()?;
     let version = cargo_version()?;
     let krate = target_dir()
         .join("package")
