@@ -108,6 +108,12 @@ fn cargo_here(args: &[&str]) -> Result<(), String> {
 
 /// Opens the window for a person.
 fn run(args: &PreviewArgs) -> Result<(), String> {
+    let has = |var: &str| std::env::var_os(var).is_some_and(|v| !v.is_empty());
+    if !has("DISPLAY") && !has("WAYLAND_DISPLAY") {
+        return Err("no display to open a window on (DISPLAY is not set); \
+                    `cargo xtask preview --check` runs the window under Xvfb"
+            .into());
+    }
     ensure_packages(false)?;
     cargo_here(&["build"])?;
     let mut cmd = Command::new(binary());
