@@ -4,12 +4,13 @@
 //!
 //! # 1. Add the dependency
 //!
-//! fixel is `no_std`, needs no allocator and has no features to choose. It is not on
-//! crates.io yet: point at your checkout.
+//! fixel is `no_std`, needs no allocator and has no features to choose. From crates.io, or
+//! from a checkout of its repository:
 //!
 //! ```toml
 //! [dependencies]
-//! fixel = { path = "../fixel" }
+//! fixel = "0.1"                     # from crates.io
+//! # fixel = { path = "../fixel" }   # or from a checkout
 //! ```
 //!
 //! Everything a program names is in [`crate::prelude`], including the colour type

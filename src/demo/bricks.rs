@@ -71,7 +71,7 @@ pub fn brick_heights(n: u32, out: &mut [u8]) -> Result<(), Error> {
         } else {
             let rise = ((d - half + 1) * 160 / (bevel + 1)).min(160);
             let grain = (hash(x / 2, y / 2, id) % 9) as i32 - 4;
-            let chip = if hash(x / 3, y / 3, id + 99) % 97 == 0 {
+            let chip = if hash(x / 3, y / 3, id + 99).is_multiple_of(97) {
                 -40
             } else {
                 0

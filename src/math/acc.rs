@@ -201,7 +201,7 @@ mod tests {
         ];
         for i in 0..400_000 {
             let pick = |k: usize, r: i32| {
-                if k % 3 == 0 {
+                if k.is_multiple_of(3) {
                     edge[(r as u32 as usize) % edge.len()]
                 } else {
                     r

@@ -41,7 +41,7 @@ fn plan(addr: usize, len: usize, size: usize) -> Option<Plan> {
         return None;
     }
     let skip = addr.wrapping_neg() % 4;
-    if skip % size != 0 {
+    if !skip.is_multiple_of(size) {
         return None;
     }
     let blocks = (bytes - skip) / BLOCK;

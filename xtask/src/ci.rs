@@ -1,4 +1,5 @@
-//! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, docs, cross builds,
+//! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, the pictures of
+//! docs/images, docs, the dry-run publish, the preview window under Xvfb, cross builds,
 //! firmware clippy, `mcu`), run fail-fast, and the summary table.
 
 use std::env;
@@ -9,7 +10,7 @@ use std::time::{Duration, Instant};
 use clap::Args;
 
 use crate::cmd::{cargo, fmt_dur, rustup};
-use crate::mcu;
+use crate::{images, mcu, preview, publish};
 
 /// Cross targets the library must build for without `std`.
 const CROSS_TARGETS: [&str; 3] = [
@@ -54,10 +55,16 @@ pub(crate) struct CiArgs {
     /// Skip the cross-target builds and `mcu`
     #[arg(long)]
     pub no_cross: bool,
+    /// Skip the preview window's check (Xvfb, SDL2)
+    #[arg(long)]
+    pub no_preview: bool,
 }
 
 pub(crate) fn ci(args: &CiArgs) -> ExitCode {
-    let CiArgs { no_cross } = *args;
+    let CiArgs {
+        no_cross,
+        no_preview,
+    } = *args;
 
     let mut steps = vec![
         step("toolchain", ensure_toolchain),
@@ -79,6 +86,20 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
             cargo(&["test", "--workspace", "--profile", "ci"]).run()
         }),
     ];
+    // The pictures of docs/images are what the code draws (decoded pixels), rendered with
+    // the tests' build.
+    steps.push(step("pictures", || {
+        let args = images::RenderArgs {
+            docs: false,
+            check: true,
+            profile: "ci".to_string(),
+        };
+        if images::render(&args) == ExitCode::SUCCESS {
+            Ok(())
+        } else {
+            Err("cargo xtask render --check --profile ci failed (see above)".to_string())
+        }
+    }));
     steps.push(step("doc", || {
         let mut flags = env::var("RUSTDOCFLAGS").unwrap_or_default();
         if !flags.is_empty() {
@@ -89,6 +110,25 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
             .env("RUSTDOCFLAGS", flags)
             .run()
     }));
+    // What crates.io would get: packaged, built from the package, at most 1 MiB, and its
+    // docs built for thumbv7em as docs.rs builds them.
+    steps.push(step("publish (dry run)", publish::check));
+    // The desktop window under Xvfb: keys pressed, screenshots equal to the frames' PNGs.
+    steps.push(if no_preview {
+        skipped("preview window (Xvfb)", "--no-preview")
+    } else {
+        step("preview window (Xvfb)", || {
+            let args = preview::PreviewArgs {
+                check: true,
+                ..preview::PreviewArgs::default()
+            };
+            if preview::preview(&args) == ExitCode::SUCCESS {
+                Ok(())
+            } else {
+                Err("cargo xtask preview --check failed (see above)".to_string())
+            }
+        })
+    });
     for t in CROSS_TARGETS {
         let name = format!("build {t}");
         steps.push(if no_cross {

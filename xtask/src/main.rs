@@ -16,7 +16,9 @@ mod images;
 mod light3d;
 mod mcu;
 mod pictures;
+mod preview;
 mod progress;
+mod publish;
 mod report;
 mod teapot;
 
@@ -47,13 +49,36 @@ enum Command {
     /// Run the full check suite, failing fast
     ///
     /// Steps, in order: toolchain targets/components, fmt, clippy, test (the `ci`
-    /// profile: optimized, with overflow checks and debug assertions), docs
-    /// (-D warnings), no_std cross builds for
+    /// profile: optimized, with overflow checks and debug assertions), the pictures
+    /// of docs/images against a fresh render (`render --check --profile ci`), docs
+    /// (-D warnings), `cargo publish --dry-run` (package at most 1 MiB, docs for
+    /// thumbv7em), the preview window under Xvfb (`preview --check`), no_std
+    /// cross builds for
     /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
     /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
     /// the report). Ends with a summary table of the steps and their times.
     #[command(verbatim_doc_comment)]
     Ci(ci::CiArgs),
+    /// The benchmark scenes in a desktop window (embedded-graphics-simulator, SDL2)
+    ///
+    /// Builds and runs examples/preview-window (release): the cube, sphere or
+    /// teapot at 320 x 240 RGB565, drawn in 8-row bands through BandRenderer as a
+    /// firmware draws them. Keys: arrows orbit, + / - distance, t technique,
+    /// s scene, c chip, e instruction estimate, r start view, h help, q quits.
+    /// Installs SDL2's development files (apt-get) when missing. --check runs it
+    /// under Xvfb, presses keys with xdotool and compares screenshots of the
+    /// window with the PNGs of the same frames (a step of `ci`).
+    #[command(verbatim_doc_comment)]
+    Preview(preview::PreviewArgs),
+    /// What crates.io would get: the `publish (dry run)` step of `ci`
+    ///
+    /// Runs `cargo publish --dry-run -p fixel` (packages the library and builds
+    /// the package), checks the package's file list (the library, build.rs,
+    /// README, CHANGELOG, licence texts) and its size (at most 1 MiB
+    /// compressed), and builds the docs for thumbv7em-none-eabihf with warnings
+    /// denied, as docs.rs builds them.
+    #[command(verbatim_doc_comment)]
+    Package,
     /// Re-run host-tests with FIXEL_BLESS=1 (rewrites golden images), then show which goldens changed
     ///
     /// Re-runs `cargo test -p host-tests` with FIXEL_BLESS=1 (rewrites the golden
@@ -163,6 +188,14 @@ enum Command {
 fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Ci(a) => ci::ci(&a),
+        Command::Preview(a) => preview::preview(&a),
+        Command::Package => match publish::check() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("xtask package: {e}");
+                ExitCode::FAILURE
+            }
+        },
         Command::Bless => images::bless(),
         Command::Render(a) => images::render(&a),
         Command::Count(a) => count::count(&a),

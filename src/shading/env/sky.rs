@@ -99,7 +99,7 @@ pub fn sky_colour(d: [f32; 3]) -> [f32; 3] {
         let wu = (u * 6.0) - floor(u * 6.0) as f32;
         let wv = (elev * 40.0) - floor(elev * 40.0) as f32;
         if (0.3..0.75).contains(&wu) && (0.35..0.8).contains(&wv) && elev > 0.03 {
-            let lit = (sector * 7 + floor(elev * 40.0) as usize) % 3 == 0;
+            let lit = (sector * 7 + floor(elev * 40.0) as usize).is_multiple_of(3);
             return if lit {
                 [1.0, 0.85, 0.4]
             } else {

@@ -27,6 +27,7 @@ use crate::cmd::root;
 pub use report::report_mcu;
 pub use scenes::mcu;
 pub use size::size;
+pub(crate) use tools::apt_install;
 
 /// One MCU profile: Rust target, QEMU machine, cycle model.
 struct Mcu {

@@ -47,8 +47,9 @@ fn is_root() -> bool {
         .unwrap_or(false)
 }
 
-/// apt-get install (as root, or through passwordless sudo), after an `apt-get update`.
-fn apt_install(packages: &[&str]) -> Result<(), String> {
+/// apt-get install (as root, or through passwordless sudo), after an `apt-get update`;
+/// waits up to 5 minutes for another apt-get to release the package database.
+pub(crate) fn apt_install(packages: &[&str]) -> Result<(), String> {
     let sudo = !is_root();
     let cmd = |args: &[&str]| {
         let mut c = if sudo {
@@ -64,12 +65,18 @@ fn apt_install(packages: &[&str]) -> Result<(), String> {
         c
     };
     run_visible(&mut cmd(&["update"]), "apt-get update")?;
-    let mut args = vec!["install", "-y", "--no-install-recommends"];
+    let mut args = vec![
+        "-o",
+        "DPkg::Lock::Timeout=300",
+        "install",
+        "-y",
+        "--no-install-recommends",
+    ];
     args.extend_from_slice(packages);
     run_visible(
         &mut cmd(&args),
         &format!(
-            "apt-get install -y --no-install-recommends {}",
+            "apt-get -o DPkg::Lock::Timeout=300 install -y --no-install-recommends {}",
             packages.join(" ")
         ),
     )
