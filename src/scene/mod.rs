@@ -67,7 +67,7 @@ mod subdivide;
 mod two_stage;
 mod uv_gen;
 pub use displace::{displace, displace_positions, recompute_normals, Displacement};
-pub use quad::{draw_quad, quad_triangles};
+pub use quad::{draw_quad, quad_triangles, QuadTriangles, QUAD_TRIANGLES_MAX};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
 pub use subdivide::{
     count_edges, count_edges_words, subdivide, subdivide_capacity, weld, weld_table_words,
