@@ -78,6 +78,7 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
         step("test (ci profile)", || {
             cargo(&["test", "--workspace", "--profile", "ci"]).run()
         }),
+        step("fuzz", || crate::fuzz::run(crate::fuzz::CI_CASES, 1)),
     ];
     steps.push(step("doc", || {
         let mut flags = env::var("RUSTDOCFLAGS").unwrap_or_default();

@@ -12,6 +12,7 @@ mod bake_obj;
 mod ci;
 mod cmd;
 mod count;
+mod fuzz;
 mod images;
 mod light3d;
 mod mcu;
@@ -46,7 +47,8 @@ enum Command {
     /// Run the full check suite, failing fast
     ///
     /// Steps, in order: toolchain targets/components, fmt, clippy, test (the `ci`
-    /// profile: optimized, with overflow checks and debug assertions), docs
+    /// profile: optimized, with overflow checks and debug assertions), `fuzz`
+    /// (400000 random cases), docs
     /// (-D warnings), no_std cross builds for
     /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
     /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
@@ -156,6 +158,19 @@ enum Command {
     /// (with --scale 0, its default, the flat base of the firmware's `water` scene).
     #[command(verbatim_doc_comment)]
     BakeDisplaced(bake_displaced::DisplacedArgs),
+    /// Random draws checked for panics, stray writes, depth-rule breaks and band mismatches
+    ///
+    /// Runs N random cases (default 400000) from SEED (default 1), built with the
+    /// `ci` profile (overflow checks, debug assertions): each draws one random
+    /// clip-space triangle with a random DrawMode (every projection, filter, wrap,
+    /// shading, depth test and cull) into a frame of random pixels with canaries
+    /// around its buffers (depth cleared or kept), again in bands against the whole
+    /// frame, and one random convex quad. Counts panics, writes outside the buffers
+    /// or the viewport, pixels written against GL_LESS, band frames unequal to whole
+    /// frames and implausible pictures; fails if any is non-zero and prints the
+    /// first failing seed.
+    #[command(verbatim_doc_comment)]
+    Fuzz(fuzz::FuzzArgs),
 }
 
 fn main() -> ExitCode {
@@ -164,6 +179,7 @@ fn main() -> ExitCode {
         Command::Bless => images::bless(),
         Command::Render => images::render(),
         Command::Count(a) => count::count(&a),
+        Command::Fuzz(a) => fuzz::fuzz(&a),
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
         Command::Report(a) => report::report(&a),
