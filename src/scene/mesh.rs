@@ -130,7 +130,7 @@ impl<'a> Mesh<'a> {
 }
 
 /// Every index of `indices` below `n`, or the first that is not.
-pub(super) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error> {
+pub(crate) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error> {
     for (t, tri) in indices.iter().enumerate() {
         for (k, &i) in tri.iter().enumerate() {
             if usize::from(i) >= n {
