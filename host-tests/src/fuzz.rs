@@ -1,6 +1,10 @@
 //! Randomized robustness checks (`cargo xtask fuzz`): random clip-space triangles over
-//! every [`DrawMode`] combination [`Draw::dynamic`] takes and random convex quads,
-//! drawn into frames with canary pixels around their buffers, counting what must never
+//! every [`DrawMode`] combination [`Draw::dynamic_mip`] takes (mipmapping and extreme
+//! level-of-detail clamps included), the same positions through a technique shader's typed
+//! span loop ([`ShadedDraw`]: Gouraud, flat, solid noise, flame, environment reflection,
+//! alpha blending and testing, triplanar; exact or affine, depth-tested or not), and random
+//! convex quads, drawn into frames with canary pixels around their buffers, counting what
+//! must never
 //! happen: a panic, a write outside the buffers or the viewport, a pixel written against
 //! the depth rule (`GL_LESS` against the depth stored before), a band frame that differs
 //! from the whole frame, and an `Ok` whose picture is implausible (more pixels changed than
@@ -10,12 +14,20 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
+use fixel::geometry::Vertex;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::math::Fx;
+use fixel::pipeline::{Affine, DepthLess, DepthStage, Exact, NoDepth, ProjectionStage, ShadedDraw};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
 use fixel::scene::draw_quad;
+use fixel::shading::alpha::{AlphaBlend, AlphaSource, AlphaTest, BlendMode};
+use fixel::shading::env::{CubeMap, ReflectPerPixel};
+use fixel::shading::noise::{BandLimit, FlameShader, Ramp, Ramps, SolidShader, FLAME_KEYS};
+use fixel::shading::{Flat, Gouraud, Shader};
 use fixel::surface::{BandRenderer, Binned, Frame};
-use fixel::texture::{Filter, Texture, Wrap};
+use fixel::texture::{
+    Bilinear, Filter, Lod, LodGranularity, MipFilter, MipTexture, Nearest, Texture, Wrap,
+};
 use fixel::Rgb565;
 
 /// Canary pixels before and after every buffer.
@@ -32,6 +44,8 @@ pub struct Counts {
     pub drawn: u64,
     /// Pixels the triangles reported written.
     pub pixels: u64,
+    /// Triangles drawn again with a technique shader (typed span loops).
+    pub shaded: u64,
     /// Random quads drawn.
     pub quads: u64,
     /// Draws or quads refused with an `Error` (not a failure).
@@ -58,6 +72,7 @@ impl Counts {
         self.triangles += o.triangles;
         self.drawn += o.drawn;
         self.pixels += o.pixels;
+        self.shaded += o.shaded;
         self.quads += o.quads;
         self.refused += o.refused;
         self.panics += o.panics;
@@ -185,8 +200,30 @@ fn case_inner(seed: u64, c: &mut Counts) {
             ))
         })
         .collect();
-    let tex = Texture::new(&texels, 4, 4).unwrap();
-    let mode = mode(&mut rng);
+    let mut chain = texels.clone();
+    chain.resize(fixel::texture::chain_len(4, 4, 3), Rgb565::new(0, 0, 0));
+    fixel::texture::generate_mips(&mut chain, 4, 4, 3).unwrap();
+    let mip = MipTexture::new(&chain, 4, 4, 3).unwrap();
+    let mut mode = mode(&mut rng);
+    if rng.below(4) == 0 {
+        mode.mip = rng.pick(&[MipFilter::Nearest, MipFilter::Linear]);
+        let lod = |rng: &mut Rng| match rng.below(3) {
+            0 => rng.next() as i32,
+            1 => (rng.next() as i32) >> 20,
+            _ => rng.pick(&[i32::MIN, i32::MAX, 0]),
+        };
+        let (a, b) = (lod(&mut rng), lod(&mut rng));
+        mode.lod = Lod {
+            bias: lod(&mut rng),
+            min: a.min(b),
+            max: a.max(b),
+            granularity: rng.pick(&[
+                LodGranularity::Pixel,
+                LodGranularity::Span,
+                LodGranularity::Triangle,
+            ]),
+        };
+    }
     // Mostly in or near the view volume (the far plane included), else anything.
     let in_view = rng.below(4) != 0;
     let tri: [ClipVertex; 3] = core::array::from_fn(|_| {
@@ -211,7 +248,7 @@ fn case_inner(seed: u64, c: &mut Counts) {
         v.color = [0; 3].map(|_| rng.below(300) as u16);
         v
     });
-    let draw = match Draw::dynamic(mode, Some(tex), viewport) {
+    let draw = match Draw::dynamic_mip(mode, Some(mip), viewport) {
         Ok(d) => d.with_flat_color(Rgb565::new(3, 7, 11)),
         Err(_) => {
             c.refused += 1;
@@ -219,69 +256,257 @@ fn case_inner(seed: u64, c: &mut Counts) {
         }
     };
     c.triangles += 1;
-    let n = (w * h) as usize;
-    let inside = |i: usize| {
-        let (x, y) = ((i as u32) % w, (i as u32) / w);
-        x >= vp.0 && x < vp.0 + vp.2 && y >= vp.1 && y < vp.1 + vp.3
-    };
     // 1. Into random old pixels: the depth rule against depth cleared or kept.
-    let cleared = rng.below(2) == 0;
-    let old_c = padded(n, CANARY_COLOR, |_| rng.next() as u16);
-    let old_d = padded(n, CANARY_DEPTH, |_| {
-        if cleared {
-            65535
-        } else {
-            (rng.next() as u16) | (rng.below(2) as u16 * 0xFF00)
-        }
-    });
-    let (mut col, mut dep) = (old_c.clone(), old_d.clone());
-    let mut col565: Vec<Rgb565> = col
-        .iter()
-        .map(|&x| Rgb565::from(embedded_graphics_core::pixelcolor::raw::RawU16::new(x)))
-        .collect();
-    let written = {
-        let frame = Frame::new(&mut col565[PAD..PAD + n], w, h).unwrap();
-        let depth = &mut dep[PAD..PAD + n];
-        let mut frame = if cleared {
-            frame.with_depth(depth).unwrap()
-        } else {
-            frame.with_depth_kept(depth).unwrap()
-        };
-        draw.clip_triangles(&[tri], &mut frame)
+    let target = Target::new(w, h, vp, &mut rng);
+    let rule = if mode.depth == DepthTest::Less {
+        Rule::Less
+    } else {
+        Rule::Off
     };
-    for (x, p) in col.iter_mut().zip(&col565) {
-        *x = embedded_graphics_core::pixelcolor::IntoStorage::into_storage(*p);
-    }
-    if !canaries_intact(&col, n, CANARY_COLOR) || !canaries_intact(&dep, n, CANARY_DEPTH) {
-        c.out_of_bounds += 1;
-    }
-    let mut changed = 0u64;
-    for i in 0..n {
-        let (oc, od, nc, nd) = (old_c[PAD + i], old_d[PAD + i], col[PAD + i], dep[PAD + i]);
-        if oc == nc && od == nd {
-            continue;
-        }
-        changed += 1;
-        if !inside(i) {
-            c.out_of_bounds += 1;
-        } else if mode.depth == DepthTest::Less && nd >= od {
-            c.depth_violations += 1;
-        } else if mode.depth == DepthTest::Off && od != nd {
-            c.depth_violations += 1;
-        }
-    }
-    match written {
-        Ok(k) if u64::from(k) < changed => c.mismatches += 1,
-        Ok(k) => {
-            c.pixels += u64::from(k);
-            c.drawn += u64::from(k > 0);
-        }
-        Err(_) => c.refused += 1,
-    }
+    target.check(c, &rule, |frame| draw.clip_triangles(&[tri], frame));
+    // 1b. A technique shader (typed span loop) with the same triangle's positions.
+    shaded(&tri, w, h, vp, viewport, &mut rng, c);
     // 2. Bands equal the whole frame.
     bands_match(&draw, &tri, w, h, &mut rng, c);
     // 3. A random convex quad draws the pixels it covers.
     quad_plausible(&mut rng, w, h, c);
+}
+
+/// A frame of random old pixels (depth cleared or kept) with canaries around its buffers.
+struct Target {
+    w: u32,
+    h: u32,
+    vp: (u32, u32, u32, u32),
+    cleared: bool,
+    color: Vec<u16>,
+    depth: Vec<u16>,
+}
+
+impl Target {
+    fn new(w: u32, h: u32, vp: (u32, u32, u32, u32), rng: &mut Rng) -> Target {
+        let n = (w * h) as usize;
+        let cleared = rng.below(2) == 0;
+        let color = padded(n, CANARY_COLOR, |_| rng.next() as u16);
+        let depth = padded(n, CANARY_DEPTH, |_| {
+            if cleared {
+                65535
+            } else {
+                (rng.next() as u16) | (rng.below(2) as u16 * 0xFF00)
+            }
+        });
+        Target {
+            w,
+            h,
+            vp,
+            cleared,
+            color,
+            depth,
+        }
+    }
+
+    /// Runs `draw` on a copy and counts what it did wrong.
+    /// Returns which pixels changed.
+    fn check(
+        &self,
+        c: &mut Counts,
+        rule: &Rule,
+        draw: impl FnOnce(&mut Frame<'_, Rgb565>) -> Result<u32, fixel::Error>,
+    ) -> Vec<bool> {
+        let (w, h, vp) = (self.w, self.h, self.vp);
+        let n = (w * h) as usize;
+        let to565 = |x: u16| Rgb565::from(embedded_graphics_core::pixelcolor::raw::RawU16::new(x));
+        let mut col565: Vec<Rgb565> = self.color.iter().map(|&x| to565(x)).collect();
+        let mut dep = self.depth.clone();
+        let written = {
+            let frame = Frame::new(&mut col565[PAD..PAD + n], w, h).unwrap();
+            let depth = &mut dep[PAD..PAD + n];
+            let mut frame = if self.cleared {
+                frame.with_depth(depth).unwrap()
+            } else {
+                frame.with_depth_kept(depth).unwrap()
+            };
+            draw(&mut frame)
+        };
+        let col: Vec<u16> = col565
+            .iter()
+            .map(|p| embedded_graphics_core::pixelcolor::IntoStorage::into_storage(*p))
+            .collect();
+        if !canaries_intact(&col, n, CANARY_COLOR) || !canaries_intact(&dep, n, CANARY_DEPTH) {
+            c.out_of_bounds += 1;
+        }
+        let inside = |i: usize| {
+            let (x, y) = ((i as u32) % w, (i as u32) / w);
+            x >= vp.0 && x < vp.0 + vp.2 && y >= vp.1 && y < vp.1 + vp.3
+        };
+        let mut changed = 0u64;
+        let mut mask = vec![false; n];
+        for i in 0..n {
+            let (oc, od) = (self.color[PAD + i], self.depth[PAD + i]);
+            let (nc, nd) = (col[PAD + i], dep[PAD + i]);
+            if oc == nc && od == nd {
+                continue;
+            }
+            changed += 1;
+            mask[i] = true;
+            let broken = match rule {
+                Rule::Off => od != nd,
+                Rule::Less => nd >= od,
+                Rule::Passed(pass) => od != nd || !pass[i],
+            };
+            if !inside(i) {
+                c.out_of_bounds += 1;
+            } else if broken {
+                c.depth_violations += 1;
+            }
+        }
+        match written {
+            Ok(k) if u64::from(k) < changed => c.mismatches += 1,
+            Ok(k) => {
+                c.pixels += u64::from(k);
+                c.drawn += u64::from(k > 0);
+            }
+            Err(_) => c.refused += 1,
+        }
+        mask
+    }
+}
+
+/// The depth rule a draw must keep.
+enum Rule {
+    /// No depth test: depth untouched.
+    Off,
+    /// `GL_LESS` with depth writes: a written pixel's new depth is below the old.
+    Less,
+    /// A blending draw (tests depth, does not write it): it changes only the pixels where
+    /// the same triangle drawn opaque passed (`true`), and no depth.
+    Passed(Vec<bool>),
+}
+
+/// Draws `tri` (positions; random varyings) with a random technique shader, projection
+/// and depth stage.
+fn shaded(
+    tri: &[ClipVertex; 3],
+    w: u32,
+    h: u32,
+    vp: (u32, u32, u32, u32),
+    viewport: Viewport,
+    rng: &mut Rng,
+    c: &mut Counts,
+) {
+    let texels: Vec<Rgb565> = (0..16)
+        .map(|_| {
+            Rgb565::from(embedded_graphics_core::pixelcolor::raw::RawU16::new(
+                rng.next() as u16,
+            ))
+        })
+        .collect();
+    let tex = Texture::new(&texels, 4, 4).unwrap();
+    let alpha: Vec<u8> = (0..16).map(|_| rng.next() as u8).collect();
+    let faces = core::array::from_fn(|_| tex);
+    let ramps = Ramps::new().unwrap();
+    let flame = Ramp::from_keys(&FLAME_KEYS).unwrap();
+    let cull = rng.pick(&[Cull::None, Cull::Back, Cull::Front]);
+    let which = rng.below(8);
+    let target = Target::new(w, h, vp, rng);
+    c.shaded += 1;
+    macro_rules! go {
+        ($shader:expr, $n:literal) => {{
+            let verts: [Vertex<$n>; 3] = core::array::from_fn(|k| {
+                Vertex::new(tri[k].position, [0; $n].map(|_| rng.coord()))
+            });
+            let shader = $shader;
+            match rng.below(4) {
+                0 => run_shaded::<_, Exact, DepthLess, $n>(
+                    shader, viewport, cull, &verts, &target, c, true,
+                ),
+                1 => run_shaded::<_, Affine, DepthLess, $n>(
+                    shader, viewport, cull, &verts, &target, c, true,
+                ),
+                2 => run_shaded::<_, Exact, NoDepth, $n>(
+                    shader, viewport, cull, &verts, &target, c, false,
+                ),
+                _ => run_shaded::<_, Affine, NoDepth, $n>(
+                    shader, viewport, cull, &verts, &target, c, false,
+                ),
+            }
+        }};
+    }
+    match which {
+        0 => go!(Gouraud, 3),
+        1 => go!(Flat(rng.next() as u16), 0),
+        2 => go!(
+            SolidShader::new(ramps.marble(), BandLimit::new(1 + rng.below(8) as u8)),
+            4
+        ),
+        3 => go!(
+            FlameShader {
+                ramp: &flame,
+                t: rng.next() as i32,
+                octaves: rng.below(9) as u8,
+            },
+            2
+        ),
+        4 => match CubeMap::new(faces, Bilinear) {
+            Ok(cube) => go!(ReflectPerPixel(cube), 6),
+            Err(_) => c.refused += 1,
+        },
+        5 => match AlphaBlend::new(
+            tex,
+            AlphaSource::Plane(&alpha),
+            rng.next() as u8,
+            BlendMode::Over,
+            Bilinear,
+        ) {
+            Ok(s) => go!(s, 3),
+            Err(_) => c.refused += 1,
+        },
+        6 => match AlphaTest::new(
+            tex,
+            AlphaSource::Key(rng.next() as u16),
+            1 + rng.below(255) as u8,
+            Nearest,
+        ) {
+            Ok(s) => go!(s, 3),
+            Err(_) => c.refused += 1,
+        },
+        _ => go!(fixel::shading::triplanar::Triplanar::new(tex, Nearest), 7),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn run_shaded<S, P, D, const N: usize>(
+    shader: S,
+    viewport: Viewport,
+    cull: Cull,
+    verts: &[Vertex<N>; 3],
+    target: &Target,
+    c: &mut Counts,
+    depth_less: bool,
+) where
+    S: Shader<Varyings = [i32; N]>,
+    P: ProjectionStage,
+    D: DepthStage,
+{
+    let Ok(draw) = ShadedDraw::<S, P, D>::new(shader, viewport, cull) else {
+        c.refused += 1;
+        return;
+    };
+    let rule = match (depth_less, S::BLENDS) {
+        (false, _) => Rule::Off,
+        (true, false) => Rule::Less,
+        (true, true) => {
+            // Where the same triangle drawn opaque (it writes depth) passes the test.
+            let Ok(opaque) = ShadedDraw::<Flat, P, D>::new(Flat(0x1234), viewport, cull) else {
+                c.refused += 1;
+                return;
+            };
+            let flat = verts.map(|v| Vertex::new(v.position, []));
+            Rule::Passed(target.check(c, &Rule::Less, |frame| {
+                opaque.clip_triangles(&[flat], frame)
+            }))
+        }
+    };
+    target.check(c, &rule, |frame| draw.clip_triangles(&[*verts], frame));
 }
 
 fn bands_match(

@@ -7,7 +7,7 @@ use clap::Args;
 
 use crate::cmd::cargo;
 
-/// Cases of the CI run: about 10 seconds on a 2-core machine after the build.
+/// Cases of the CI run: under a minute on a 2-core machine after the build.
 pub(crate) const CI_CASES: u64 = 400_000;
 
 /// Flags of `cargo xtask fuzz`.

@@ -163,9 +163,10 @@ enum Command {
     /// Runs N random cases (default 400000) from SEED (default 1), built with the
     /// `ci` profile (overflow checks, debug assertions): each draws one random
     /// clip-space triangle with a random DrawMode (every projection, filter, wrap,
-    /// shading, depth test and cull) into a frame of random pixels with canaries
-    /// around its buffers (depth cleared or kept), again in bands against the whole
-    /// frame, and one random convex quad. Counts panics, writes outside the buffers
+    /// shading, depth test, cull, mipmapping and level of detail) into a frame of
+    /// random pixels with canaries around its buffers (depth cleared or kept), again
+    /// through a random technique shader (typed span loop), in bands against the
+    /// whole frame, and one random convex quad. Counts panics, writes outside the buffers
     /// or the viewport, pixels written against GL_LESS, band frames unequal to whole
     /// frames and implausible pictures; fails if any is non-zero and prints the
     /// first failing seed.

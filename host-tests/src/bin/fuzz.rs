@@ -37,8 +37,8 @@ fn main() -> ExitCode {
     });
     bar.finish_and_clear();
     println!(
-        "fuzz: {} cases from seed {}: {} triangles ({} drawing {} pixels), {} quads, {} refused; panics {}, depth-rule violations {}, out-of-bounds writes {}, mismatches {}",
-        a.n, a.seed, c.triangles, c.drawn, c.pixels, c.quads, c.refused, c.panics, c.depth_violations, c.out_of_bounds, c.mismatches
+        "fuzz: {} cases from seed {}: {} triangles ({} with a technique shader; {} draws writing {} pixels), {} quads, {} refused; panics {}, depth-rule violations {}, out-of-bounds writes {}, mismatches {}",
+        a.n, a.seed, c.triangles, c.shaded, c.drawn, c.pixels, c.quads, c.refused, c.panics, c.depth_violations, c.out_of_bounds, c.mismatches
     );
     if let Some(s) = c.first_failure {
         println!("fuzz: first failing case: seed {s} (host_tests::fuzz::case({s}))");
