@@ -256,6 +256,12 @@ fn case_inner(seed: u64, c: &mut Counts) {
         }
     };
     c.triangles += 1;
+    if std::env::var_os("FIXEL_FUZZ_VERBOSE").is_some() {
+        let bits = tri.map(|v| v.position.map(|x| x.to_bits()));
+        println!(
+            "case {seed}: {w} x {h} frame, viewport {vp:?}, {mode:?}, clip-space bits {bits:?}"
+        );
+    }
     // 1. Into random old pixels: the depth rule against depth cleared or kept.
     let target = Target::new(w, h, vp, &mut rng);
     let rule = if mode.depth == DepthTest::Less {
@@ -357,6 +363,14 @@ impl Target {
                 c.out_of_bounds += 1;
             } else if broken {
                 c.depth_violations += 1;
+            }
+            if (broken || !inside(i)) && std::env::var_os("FIXEL_FUZZ_VERBOSE").is_some() {
+                println!(
+                    "  pixel ({}, {}): colour {oc:#06x} -> {nc:#06x}, depth {od} -> {nd} (depth {})",
+                    i as u32 % w,
+                    i as u32 / w,
+                    if self.cleared { "cleared" } else { "kept" }
+                );
             }
         }
         match written {
