@@ -41,12 +41,8 @@ fn tris<const V: usize, const T: usize>(
     model: &Mat4,
     scale: Fx,
 ) -> Vec<[Vertex<4>; 3]> {
-    let mesh = SolidMesh {
-        positions: &m.positions,
-        normals: Some(&m.normals),
-        indices: &m.indices,
-        scale,
-    };
+    let mesh = SolidMesh::new(&m.positions, Some(&m.normals), &m.indices, scale)
+        .expect("the demo meshes are valid");
     let mut out = Vec::new();
     mesh.triangles(
         model,
@@ -227,12 +223,13 @@ fn marble_teapot(ramps: &Ramps) -> Vec<Rgb565> {
         Fx::from_num(-7.0),
     )) * (Mat4::rotation_x(Angle::from_degrees(Fx::from_num(18)))
         * Mat4::rotation_y(Angle::from_degrees(Fx::from_num(-30))));
-    let mesh = SolidMesh {
-        positions: &teapot::TEAPOT_POSITIONS,
-        normals: Some(&teapot::TEAPOT_NORMALS),
-        indices: &teapot::TEAPOT_INDICES,
-        scale: TEAPOT_SCALE,
-    };
+    let mesh = SolidMesh::new(
+        &teapot::TEAPOT_POSITIONS,
+        Some(&teapot::TEAPOT_NORMALS),
+        &teapot::TEAPOT_INDICES,
+        TEAPOT_SCALE,
+    )
+    .expect("the baked teapot is valid");
     let mut tris = Vec::new();
     mesh.triangles(
         &model,
@@ -258,12 +255,13 @@ fn animated_marble_gif(ramps: &Ramps, path: &std::path::Path) {
     let model = Mat4::translation(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::from_num(-4.6)))
         * Mat4::rotation_y(fixel::math::Angle::from_turns(4172));
     let sphere = demo::sphere();
-    let mesh = SolidMesh {
-        positions: &sphere.positions,
-        normals: Some(&sphere.normals),
-        indices: &sphere.indices,
-        scale: SHOWCASE_SCALE,
-    };
+    let mesh = SolidMesh::new(
+        &sphere.positions,
+        Some(&sphere.normals),
+        &sphere.indices,
+        SHOWCASE_SCALE,
+    )
+    .expect("the demo sphere is valid");
     let mut tris = Vec::new();
     mesh.triangles(
         &model,

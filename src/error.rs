@@ -41,12 +41,25 @@ pub enum Error {
         /// Number of vertices.
         vertices: usize,
     },
-    /// A viewport is empty or larger than the raster supports (see `geometry::viewport`).
+    /// A viewport side is zero or larger than the raster supports (2048 pixels, see
+    /// `geometry::viewport`).
     BadViewport {
         /// Requested width in pixels.
         width: u32,
         /// Requested height in pixels.
         height: u32,
+    },
+    /// A viewport whose sides are valid reaches past the raster's limit on one axis:
+    /// `offset + size` is above `limit` (see `geometry::viewport`).
+    ViewportOutOfBounds {
+        /// The axis, `"x"` or `"y"`.
+        axis: &'static str,
+        /// The requested offset (`x0` or `y0`) in pixels.
+        offset: u32,
+        /// The requested side (width or height) in pixels.
+        size: u32,
+        /// The largest `offset + size`, pixels.
+        limit: u32,
     },
     /// A camera or projection parameter is out of its documented range.
     BadProjection(&'static str),
@@ -144,9 +157,20 @@ impl fmt::Display for Error {
                 f,
                 "index {index} at position {at} is out of range for {vertices} vertices"
             ),
-            Error::BadViewport { width, height } => {
-                write!(f, "viewport {width}x{height} is empty or too large")
-            }
+            Error::BadViewport { width, height } => write!(
+                f,
+                "viewport {width}x{height} has a side outside 1..={}",
+                crate::raster::MAX_VIEWPORT_PX
+            ),
+            Error::ViewportOutOfBounds {
+                axis,
+                offset,
+                size,
+                limit,
+            } => write!(
+                f,
+                "viewport {axis} offset {offset} plus size {size} is past the limit: {axis} offset + size must be at most {limit}"
+            ),
             Error::BadProjection(what) => write!(f, "bad projection: {what}"),
             Error::BadMode(what) => write!(f, "bad draw mode: {what}"),
             Error::MeshTooLarge { what, count, limit } => write!(

@@ -8,6 +8,7 @@ pub mod adapter;
 pub mod cost_plot;
 pub mod displaced;
 pub mod env_scene;
+pub mod fuzz;
 pub mod golden;
 pub mod metrics;
 pub mod noise_scenes;

@@ -54,12 +54,8 @@ impl SolidScene {
             model: &Mat4,
             scale: Fx,
         ) -> Vec<[Vertex<4>; 3]> {
-            let mesh = SolidMesh {
-                positions: &m.positions,
-                normals: Some(&m.normals),
-                indices: &m.indices,
-                scale,
-            };
+            let mesh = SolidMesh::new(&m.positions, Some(&m.normals), &m.indices, scale)
+                .expect("the demo meshes are valid");
             let mut out = Vec::new();
             let light = DirectionalLight::default();
             mesh.triangles(model, &demo::camera(200), Some(&light), |t| out.push(*t));

@@ -380,12 +380,29 @@ fn bad_input_gives_the_documented_errors() {
     assert_error(
         Viewport::new(0, 0, 4096, 240),
         bad_vp(4096, 240),
-        &["4096x240"],
+        &["4096x240", "2048"],
     );
+    let out = |axis, offset, size| Error::ViewportOutOfBounds {
+        axis,
+        offset,
+        size,
+        limit: 2048,
+    };
     assert_error(
         Viewport::new(2000, 0, 100, 100),
-        bad_vp(100, 100),
-        &["100x100"],
+        out("x", 2000, 100),
+        &["x offset 2000", "2048"],
+    );
+    // The offset is named, not the (valid) size.
+    assert_error(
+        Viewport::new(u32::MAX, 0, 10, 10),
+        out("x", u32::MAX, 10),
+        &["x offset 4294967295", "at most 2048"],
+    );
+    assert_error(
+        Viewport::new(0, 2040, 10, 10),
+        out("y", 2040, 10),
+        &["y offset 2040", "at most 2048"],
     );
     assert!(Viewport::new(0, 0, 2048, 2048).is_ok());
 

@@ -29,10 +29,27 @@
 //! A projective map takes a square to a convex quad, so [`Homography::square_to_quad`]
 //! refuses ([`Error::BadQuad`]) corners with three on a line (the map would be singular),
 //! corners that cross (a bow-tie) and concave quads: in each case the weights change sign,
-//! i.e. the map passes through infinity inside the square.
+//! i.e. the map passes through infinity inside the square. It also refuses corners whose
+//! map, once rounded to 62-bit entries, no longer takes the square's corners to them (and
+//! back) within [`CORNER_TOLERANCE`]: corners near the I16F16 limits that are nearly
+//! collinear.
 
 use crate::math::Fx;
 use crate::Error;
+
+/// How far a corner may map from where it was given (pixels) and back from where it
+/// belongs (texture units) for [`Homography::square_to_quad`] to accept the quad: 2^-10.
+/// Quads from ordinary screen corners map their corners back within a bit or two of
+/// I16F16; only corners near the fixed-point limits and nearly collinear come close.
+pub const CORNER_TOLERANCE: Fx = Fx::from_bits(1 << 6);
+
+/// The unit square's corners `(0,0), (1,0), (1,1), (0,1)` (I16F16).
+const SQUARE: [[Fx; 2]; 4] = [
+    [Fx::ZERO, Fx::ZERO],
+    [Fx::ONE, Fx::ZERO],
+    [Fx::ONE, Fx::ONE],
+    [Fx::ZERO, Fx::ONE],
+];
 
 /// A 3x3 projective map (row-major, column vectors: `(X, Y, W) = M (u, v, 1)` and the image
 /// is `(X / W, Y / W)`), in I16F16 bits on both sides: entries scaled by a common power of
@@ -78,7 +95,22 @@ impl Homography {
     /// The map from the unit square onto `corners` (I16F16 screen pixels, the images of
     /// `(0,0), (1,0), (1,1), (0,1)`, in either winding), and the four corner weights `w`
     /// (positive, the largest `2^30`): see the module docs.
+    ///
+    /// Refused ([`Error::BadQuad`]) when three corners are collinear, they cross, the quad
+    /// is concave, or the rounded map misses a corner by more than [`CORNER_TOLERANCE`]
+    /// (either way: see the module docs).
     pub fn square_to_quad(corners: [[Fx; 2]; 4]) -> Result<(Homography, [i64; 4]), Error> {
+        let (h, w) = Self::square_to_quad_unchecked(corners)?;
+        h.check_corners(corners, true)?;
+        Ok((h, w))
+    }
+
+    /// [`square_to_quad`](Self::square_to_quad) with the corner check left to the caller
+    /// ([`check_corners`](Self::check_corners)): a quad drawn by its inverse alone only
+    /// needs the inverse to hold.
+    pub(crate) fn square_to_quad_unchecked(
+        corners: [[Fx; 2]; 4],
+    ) -> Result<(Homography, [i64; 4]), Error> {
         let p = corners.map(|c| c.map(|v| i64::from(v.to_bits())));
         let t = turns(&p);
         if t.contains(&0) {
@@ -129,12 +161,49 @@ impl Homography {
         let weights = w.map(|x| ((sign * x) << 30).checked_div(wmax).unwrap_or(0) as i64);
         // Normalise with the sign of D folded in, so the bottom row is positive inside.
         let m = m.map(|r| r.map(|x| x * sign));
-        Ok((
-            Homography {
-                m: normalize(m, 62),
-            },
-            weights.map(|x| x.max(1)),
-        ))
+        let h = Homography {
+            m: normalize(m, 62),
+        };
+        Ok((h, weights.map(|x| x.max(1))))
+    }
+
+    /// Refuses a map whose 62-bit entries no longer carry the corners: through the inverse
+    /// each corner must map to its texture corner within [`CORNER_TOLERANCE`] of the
+    /// texture and, when `forward`, each texture corner to its corner within
+    /// [`CORNER_TOLERANCE`] pixels. Corners far apart in I16F16 with others nearly collinear
+    /// need more than 62 bits for some entries' ratios (the forward map's bottom row first).
+    pub(crate) fn check_corners(&self, corners: [[Fx; 2]; 4], forward: bool) -> Result<(), Error> {
+        const TOO_EXTREME: Error = Error::BadQuad(
+            "the corners are too extreme for a fixed-point map (nearly collinear, far apart)",
+        );
+        let inverse = self.inverse();
+        let near = |a: [Fx; 2], b: [Fx; 2]| {
+            a.iter().zip(&b).all(|(x, y)| {
+                x.to_bits().abs_diff(y.to_bits()) <= CORNER_TOLERANCE.to_bits() as u32
+            })
+        };
+        for (uv, c) in SQUARE.iter().zip(corners) {
+            let back = inverse.map(c[0], c[1]).ok_or(TOO_EXTREME)?;
+            let image = if forward {
+                self.map(uv[0], uv[1]).ok_or(TOO_EXTREME)?
+            } else {
+                c
+            };
+            if !near(image, c) || !near(back, *uv) {
+                return Err(TOO_EXTREME);
+            }
+        }
+        Ok(())
+    }
+
+    /// The third output of the map at `(u, v)` (I16F16), before the division: positive
+    /// where a [`square_to_quad`](Self::square_to_quad) map is finite. On the inverse it is
+    /// proportional to `1 / w` at screen point `(u, v)` (the reciprocal of the corner
+    /// weights' interpolant), in units that only matter as ratios.
+    pub fn denominator(&self, u: Fx, v: Fx) -> i128 {
+        let (u, v) = (i128::from(u.to_bits()), i128::from(v.to_bits()));
+        let r = self.m[2];
+        i128::from(r[0]) * u + i128::from(r[1]) * v + (i128::from(r[2]) << 16)
     }
 
     /// The image of `(u, v)` (I16F16): screen pixels for a square-to-quad map, texture

@@ -21,6 +21,6 @@ pub use clip::{
     clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
     prepare_without_depth, project_unclipped, project_unclipped_varyings, W_MIN_BITS,
 };
-pub use homography::Homography;
+pub use homography::{Homography, CORNER_TOLERANCE};
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

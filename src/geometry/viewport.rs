@@ -41,8 +41,9 @@ pub struct Viewport {
 impl Viewport {
     /// A viewport at `(x0, y0)` of `width` x `height` pixels.
     ///
-    /// Errors with [`Error::BadViewport`] when a side is zero or the rectangle does not fit in
-    /// `0..2048` on either axis.
+    /// Errors with [`Error::BadViewport`] when a side is zero or above 2048, and with
+    /// [`Error::ViewportOutOfBounds`] (naming the axis, the offset and the limit) when the
+    /// rectangle does not end within `0..=2048` on either axis.
     ///
     /// A viewport is independent of the target it is drawn into, as in GL. When it is
     /// larger than the target or lies partly outside it, the pixels outside the target are
@@ -58,12 +59,18 @@ impl Viewport {
     /// ```
     pub fn new(x0: u32, y0: u32, width: u32, height: u32) -> Result<Self, Error> {
         let max = MAX_VIEWPORT_PX;
-        if width == 0
-            || height == 0
-            || x0.saturating_add(width) > max
-            || y0.saturating_add(height) > max
-        {
+        if width == 0 || height == 0 || width > max || height > max {
             return Err(Error::BadViewport { width, height });
+        }
+        for (axis, offset, size) in [("x", x0, width), ("y", y0, height)] {
+            if offset.saturating_add(size) > max {
+                return Err(Error::ViewportOutOfBounds {
+                    axis,
+                    offset,
+                    size,
+                    limit: max,
+                });
+            }
         }
         let rect = Rect {
             x0: x0 as i32,

@@ -51,14 +51,16 @@ impl DirectionalLight {
         })
     }
 
-    /// Intensity for a unit view-space normal, Q8 (`256` = 1.0), clamped to `0..=256`.
+    /// Intensity for a unit view-space normal, Q8 (`256` = 1.0), clamped to `0..=256`. A
+    /// normal of any other length gives a saturated, never wrapped, intensity.
     pub fn intensity(&self, normal: Vec3) -> u16 {
         let ndotl = normal.dot(self.direction).max(Fx::ZERO);
         let i = self
             .ambient
             .saturating_add(diffuse_term(self.diffuse, ndotl));
-        // Q16 -> Q8 rounded.
-        ((i.to_bits() + 128) >> 8).clamp(0, i32::from(COLOR_ONE)) as u16
+        // Q16 -> Q8 rounded half up: floor((x + 128) / 256) as floor((floor(x / 128) + 1) / 2),
+        // which cannot overflow when a non-unit normal saturates the sum near `Fx::MAX`.
+        (((i.to_bits() >> 7) + 1) >> 1).clamp(0, i32::from(COLOR_ONE)) as u16
     }
 }
 
@@ -131,6 +133,34 @@ mod tests {
             d.y.to_bits(),
             d.z.to_bits()
         );
+    }
+
+    /// A long normal saturates `ambient + diffuse * (n . l)` at `Fx::MAX`; rounding it to Q8
+    /// gives full intensity instead of overflowing.
+    #[test]
+    fn long_normal_saturates_to_full_intensity() {
+        let light = DirectionalLight {
+            direction: Vec3::from_num(0, 0, 1),
+            ambient: Fx::from_bits(19661),
+            diffuse: Fx::ONE,
+        };
+        assert_eq!(light.intensity(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::MAX)), 256);
+        assert_eq!(light.intensity(Vec3::new(Fx::ZERO, Fx::ZERO, Fx::MIN)), 77);
+    }
+
+    /// The overflow-free rounding is `(x + 128) >> 8` wherever that does not overflow.
+    #[test]
+    fn q8_rounding_is_round_half_up() {
+        let mut x = i32::MIN;
+        while x < i32::MAX - 128 {
+            assert_eq!(((x >> 7) + 1) >> 1, (x + 128) >> 8, "{x}");
+            x = x.saturating_add(12_345);
+        }
+        for x in [
+            -257, -256, -129, -128, -127, -1, 0, 1, 127, 128, 129, 255, 256, 383, 384,
+        ] {
+            assert_eq!(((x >> 7) + 1) >> 1, (x + 128) >> 8, "{x}");
+        }
     }
 
     #[test]

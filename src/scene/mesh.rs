@@ -130,7 +130,7 @@ impl<'a> Mesh<'a> {
 }
 
 /// Every index of `indices` below `n`, or the first that is not.
-pub(super) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error> {
+pub(crate) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error> {
     for (t, tri) in indices.iter().enumerate() {
         for (k, &i) in tri.iter().enumerate() {
             if usize::from(i) >= n {
@@ -204,7 +204,8 @@ pub fn vertex_intensity(
     // A rotation keeps unit normals unit: renormalise (a square root and a
     // reciprocal) only when the length is off by more than 2^-12, which changes
     // the intensity by less than its Q8 step.
-    let off = (n.length_squared_bits() as i64 - (1i64 << 32)).unsigned_abs();
+    // In u64: a long normal's squared length (up to 3 * 2^62) does not fit an i64.
+    let off = n.length_squared_bits().abs_diff(1 << 32);
     let n = if off < 1 << 20 {
         n
     } else {
@@ -324,4 +325,25 @@ pub fn draw_mesh_cached<C: TargetColor, T: RenderTarget<Color = C>>(
         });
     });
     Ok(pixels)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A model-view matrix that scales by -32768 takes the normal (1, 1, 0) to
+    /// (-32768, -32768, 0), whose squared length (2^63 in Q32) does not fit an `i64`: the
+    /// normal is renormalised and lit, not overflowed.
+    #[test]
+    fn huge_scale_normal_is_renormalised() {
+        let positions = [Vec3::ZERO; 3];
+        let normals = [Vec3::from_num(1, 1, 0); 3];
+        let uvs = [[Fx::ZERO; 2]; 3];
+        let mesh = Mesh::new(&positions, Some(&normals), &uvs, &[[0, 1, 2]]).unwrap();
+        let s = Fx::from_num(-32768);
+        let model_view = Mat4::scaling(Vec3::new(s, s, s));
+        let light = DirectionalLight::new(Vec3::from_num(-1, -1, 0), Fx::ZERO, Fx::ONE).unwrap();
+        // The unit normal (-1, -1, 0) / sqrt 2 faces the light: full intensity.
+        assert_eq!(vertex_intensity(&mesh, 0, &model_view, &light), Some(256));
+    }
 }

@@ -49,6 +49,7 @@ pub use face_cull::FacingTest;
 pub use face_planes::{face_planes, write_face_planes, FacePlane};
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
+pub(crate) use mesh::check_indices;
 pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
@@ -67,7 +68,7 @@ mod subdivide;
 mod two_stage;
 mod uv_gen;
 pub use displace::{displace, displace_positions, recompute_normals, Displacement};
-pub use quad::{draw_quad, quad_triangles};
+pub use quad::{draw_quad, quad_triangles, QuadTriangles, QUAD_TRIANGLES_MAX};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
 pub use subdivide::{
     count_edges, count_edges_words, subdivide, subdivide_capacity, weld, weld_table_words,

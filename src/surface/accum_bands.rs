@@ -110,7 +110,10 @@ impl BandRenderer<'_, Rgb565> {
                         continue;
                     }
                     if let Some(dr) = draws.get(usize::from(b.draw)) {
-                        pixels += dr.screen_triangle_checked(&shifted(&b.tri, d), band);
+                        pixels = u32::saturating_add(
+                            pixels,
+                            dr.screen_triangle_checked(&shifted(&b.tri, d), band),
+                        );
                     }
                 }
                 if let Err(e) = acc.add(band.pixels()) {

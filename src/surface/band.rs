@@ -79,7 +79,9 @@ pub struct BandStats {
     /// True when [`BandRenderer::render_spans`] could not keep the screen triangles in the
     /// bins and re-projected each triangle in the bands its stored range covers.
     pub reprojected: bool,
-    /// Pixels written (with a depth test: that passed it).
+    /// Pixels written (with a depth test: that passed it), saturating at `u32::MAX` (a
+    /// frame that writes more than 2^32 pixels, such as a thousand full-screen layers at
+    /// 2048 x 2048, reports `u32::MAX`).
     pub pixels: u32,
 }
 
@@ -204,7 +206,7 @@ impl<'s, C: TargetColor> TriangleSink<'s, '_, '_, C> {
                 pixels,
             } => {
                 if let Some(d) = draws.get(usize::from(draw)) {
-                    *pixels += d.screen_triangle_checked(tri, *band);
+                    *pixels = pixels.saturating_add(d.screen_triangle_checked(tri, *band));
                 }
             }
         }
@@ -378,7 +380,8 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
                         continue;
                     }
                     if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels += d.screen_triangle_checked(&b.tri, band);
+                        pixels =
+                            u32::saturating_add(pixels, d.screen_triangle_checked(&b.tri, band));
                     }
                 }
                 pixels
@@ -415,7 +418,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
             }
             let mut band = band.at_row(y0);
             band.clear(clear);
-            stats.pixels += draw_band(&mut band, index);
+            stats.pixels = stats.pixels.saturating_add(draw_band(&mut band, index));
             flush(&band)?;
             stats.bands += 1;
             index += 1;

@@ -344,7 +344,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                         Some(key) => setups.slot(key, draw, r1 > end),
                         None => None,
                     };
-                    *pixels += d.screen_triangle_slot(tri, *band, slot);
+                    *pixels = pixels.saturating_add(d.screen_triangle_slot(tri, *band, slot));
                 }
             }
         }

@@ -1,4 +1,4 @@
-//! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, the pictures of
+//! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, fuzz, the pictures of
 //! docs/images, docs, the dry-run publish, the preview window under Xvfb, cross builds,
 //! firmware clippy, `mcu`), run fail-fast, and the summary table.
 
@@ -85,6 +85,7 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
         step("test (ci profile)", || {
             cargo(&["test", "--workspace", "--profile", "ci"]).run()
         }),
+        step("fuzz", || crate::fuzz::run(crate::fuzz::CI_CASES, 1)),
     ];
     // The pictures of docs/images are what the code draws (decoded pixels), rendered with
     // the tests' build.

@@ -12,6 +12,7 @@ mod bake_obj;
 mod ci;
 mod cmd;
 mod count;
+mod fuzz;
 mod images;
 mod light3d;
 mod mcu;
@@ -49,11 +50,11 @@ enum Command {
     /// Run the full check suite, failing fast
     ///
     /// Steps, in order: toolchain targets/components, fmt, clippy, test (the `ci`
-    /// profile: optimized, with overflow checks and debug assertions), the pictures
-    /// of docs/images against a fresh render (`render --check --profile ci`), docs
-    /// (-D warnings), `cargo publish --dry-run` (package at most 1 MiB, docs for
-    /// thumbv7em), the preview window under Xvfb (`preview --check`), no_std
-    /// cross builds for
+    /// profile: optimized, with overflow checks and debug assertions), `fuzz`
+    /// (400000 random cases), the pictures of docs/images against a fresh render
+    /// (`render --check --profile ci`), docs (-D warnings), `cargo publish
+    /// --dry-run` (package at most 1 MiB, docs for thumbv7em), the preview window
+    /// under Xvfb (`preview --check`), no_std cross builds for
     /// thumbv6m-none-eabi, thumbv7em-none-eabihf, riscv32imc-unknown-none-elf,
     /// then `mcu` (firmware under QEMU: checksums must equal the host's; prints
     /// the report). Ends with a summary table of the steps and their times.
@@ -183,6 +184,20 @@ enum Command {
     /// (with --scale 0, its default, the flat base of the firmware's `water` scene).
     #[command(verbatim_doc_comment)]
     BakeDisplaced(bake_displaced::DisplacedArgs),
+    /// Random draws checked for panics, stray writes, depth-rule breaks and band mismatches
+    ///
+    /// Runs N random cases (default 400000) from SEED (default 1), built with the
+    /// `ci` profile (overflow checks, debug assertions): each draws one random
+    /// clip-space triangle with a random DrawMode (every projection, filter, wrap,
+    /// shading, depth test, cull, mipmapping and level of detail) into a frame of
+    /// random pixels with canaries around its buffers (depth cleared or kept), again
+    /// through a random technique shader (typed span loop), in bands against the
+    /// whole frame, and one random convex quad. Counts panics, writes outside the buffers
+    /// or the viewport, pixels written against GL_LESS, band frames unequal to whole
+    /// frames and implausible pictures; fails if any is non-zero and prints the
+    /// first failing seed.
+    #[command(verbatim_doc_comment)]
+    Fuzz(fuzz::FuzzArgs),
 }
 
 fn main() -> ExitCode {
@@ -199,6 +214,7 @@ fn main() -> ExitCode {
         Command::Bless => images::bless(),
         Command::Render(a) => images::render(&a),
         Command::Count(a) => count::count(&a),
+        Command::Fuzz(a) => fuzz::fuzz(&a),
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
         Command::Report(a) => report::report(&a),

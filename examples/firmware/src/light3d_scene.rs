@@ -89,11 +89,13 @@ impl Default for Light3dBuffers {
 /// 0..3 and the per-vertex light intensity as varying 3, into `out`; returns how many.
 pub fn triangles(out: &mut [[Vertex<4>; 3]; TRIS]) -> usize {
     let cube = demo::cube();
-    let mesh = SolidMesh {
-        positions: &cube.positions,
-        normals: Some(&cube.normals),
-        indices: &cube.indices,
-        scale: SHOWCASE_SCALE,
+    let Ok(mesh) = SolidMesh::new(
+        &cube.positions,
+        Some(&cube.normals),
+        &cube.indices,
+        SHOWCASE_SCALE,
+    ) else {
+        return 0;
     };
     let mut n = 0;
     mesh.triangles(

@@ -102,13 +102,11 @@ pub fn vertices(verts: &mut [Option<Vertex<4>>; VERTS]) {
     let (model, camera, light) = (model(), demo::camera(20), DirectionalLight::default());
     for (k, slot) in verts.iter_mut().enumerate() {
         let (p, n) = sphere_vertex(k);
-        let solid = SolidMesh {
-            positions: &[p],
-            normals: Some(&[n]),
-            indices: &[],
-            scale: SHOWCASE_SCALE,
-        };
-        solid.vertices(&model, &camera, Some(&light), core::slice::from_mut(slot));
+        let (p, n) = ([p], [n]);
+        match SolidMesh::new(&p, Some(&n), &[], SHOWCASE_SCALE) {
+            Ok(solid) => solid.vertices(&model, &camera, Some(&light), core::slice::from_mut(slot)),
+            Err(_) => *slot = None,
+        }
     }
 }
 

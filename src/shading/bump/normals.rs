@@ -136,7 +136,8 @@ impl TangentNormals for HeightDifferences<'_> {
         let k = if lambda <= 128 {
             0
         } else {
-            (((lambda + 383) >> 8) - 1).min(self.map.levels() as i32 - 1) as u32
+            // In u32 (lambda > 128 here): no overflow for any clamp a `Lod` holds.
+            (((lambda as u32 + 383) >> 8) - 1).min(self.map.levels().saturating_sub(1))
         };
         let (i, j) = (u >> (16 + k), v >> (16 + k));
         let h = |di: i32, dj: i32| i32::from(self.map.height(k, i + di, j + dj));

@@ -46,6 +46,7 @@
 //!
 //! ```
 //! use fixel::prelude::*;
+//! use fixel::math::fx;
 //! use fixel::demo;
 //! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 //! use fixel::scene::DirectionalLight;
@@ -60,8 +61,7 @@
 //!
 //! let cube = demo::cube();
 //! // Two noise cells per model unit; lit per vertex.
-//! let mesh = SolidMesh { positions: &cube.positions, normals: Some(&cube.normals),
-//!                        indices: &cube.indices, scale: Fx::from_num(2) };
+//! let mesh = SolidMesh::new(&cube.positions, Some(&cube.normals), &cube.indices, fx(2))?;
 //! let (mut color, mut depth) = ([Rgb565::default(); 80 * 60], [0u16; 80 * 60]);
 //! let mut frame = Frame::new(&mut color, 80, 60)?.with_depth(&mut depth)?;
 //! frame.clear(Rgb565::default());

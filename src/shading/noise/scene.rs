@@ -3,7 +3,8 @@
 
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
-use crate::scene::{Camera, DirectionalLight};
+use crate::scene::{check_indices, Camera, DirectionalLight};
+use crate::Error;
 
 /// The object-space point `p · scale` as I16F16 lattice-unit bits (saturating).
 #[inline]
@@ -16,25 +17,80 @@ pub fn lattice_point(p: Vec3, scale: Fx) -> [i32; 3] {
 }
 
 /// An indexed mesh seen as a solid-texture block: positions, unit normals (or none),
-/// counter-clockwise `indices`, and the scale from model units to lattice cells.
+/// counter-clockwise `indices`, and the scale from model units to lattice cells. Built by
+/// [`SolidMesh::new`], which validates the slices as [`Mesh::new`](crate::scene::Mesh::new)
+/// does.
 #[derive(Clone, Copy, Debug)]
 pub struct SolidMesh<'a> {
-    /// Model-space positions (I16F16).
-    pub positions: &'a [Vec3],
-    /// Unit model-space normals, one per position, or none (unlit).
-    pub normals: Option<&'a [Vec3]>,
-    /// Triangles, counter-clockwise from the front.
-    pub indices: &'a [[u16; 3]],
-    /// Lattice cells per model unit.
-    pub scale: Fx,
+    positions: &'a [Vec3],
+    normals: Option<&'a [Vec3]>,
+    indices: &'a [[u16; 3]],
+    scale: Fx,
 }
 
-impl SolidMesh<'_> {
+impl<'a> SolidMesh<'a> {
+    /// Wraps model-space `positions` (I16F16), unit model-space `normals` (one per
+    /// position, or none: unlit), triangles `indices` (counter-clockwise from the front) and
+    /// `scale` (lattice cells per model unit).
+    ///
+    /// # Errors
+    /// [`Error::MeshTooLarge`] past 65536 positions, [`Error::WrongLength`] when `normals`
+    /// is not one per position, [`Error::IndexOutOfRange`] at the first index past the
+    /// positions.
+    pub fn new(
+        positions: &'a [Vec3],
+        normals: Option<&'a [Vec3]>,
+        indices: &'a [[u16; 3]],
+        scale: Fx,
+    ) -> Result<Self, Error> {
+        let n = positions.len();
+        if n > 1 << 16 {
+            return Err(Error::MeshTooLarge {
+                what: "vertices",
+                count: n,
+                limit: 1 << 16,
+            });
+        }
+        if let Some(nm) = normals {
+            if nm.len() != n {
+                return Err(Error::WrongLength {
+                    expected: n,
+                    actual: nm.len(),
+                });
+            }
+        }
+        check_indices(indices, n)?;
+        Ok(SolidMesh {
+            positions,
+            normals,
+            indices,
+            scale,
+        })
+    }
+
+    /// Model-space positions (I16F16).
+    pub fn positions(&self) -> &'a [Vec3] {
+        self.positions
+    }
+
+    /// Unit model-space normals, one per position, or none (unlit).
+    pub fn normals(&self) -> Option<&'a [Vec3]> {
+        self.normals
+    }
+
+    /// Triangles, counter-clockwise from the front.
+    pub fn indices(&self) -> &'a [[u16; 3]] {
+        self.indices
+    }
+
+    /// Lattice cells per model unit.
+    pub fn scale(&self) -> Fx {
+        self.scale
+    }
     /// Calls `emit` with each triangle as solid-texture vertices: clip position under
     /// `camera · model`, the model-space point times [`SolidMesh::scale`] as varyings 0..3,
     /// and the intensity of `light` (Q8.16; 1.0 without a light or normals) as varying 3.
-    /// Triangles with an index out of range or a vertex that overflows the fixed-point
-    /// range are skipped.
+    /// Triangles with a vertex that overflows the fixed-point range are skipped.
     pub fn triangles(
         &self,
         model: &Mat4,
@@ -94,5 +150,37 @@ impl SolidMesh<'_> {
             [c.x, c.y, c.z, c.w],
             [x, y, z, i32::from(intensity) << 16],
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Index 99 of 24 vertices is refused where it enters, as `Mesh::new` refuses it,
+    /// instead of its triangle being skipped without a word.
+    #[test]
+    fn out_of_range_index_is_refused() {
+        let positions = [Vec3::ZERO; 24];
+        let normals = [Vec3::from_num(0, 0, 1); 24];
+        let indices = [[0, 1, 2], [3, 99, 4]];
+        let e = SolidMesh::new(&positions, Some(&normals), &indices, Fx::ONE).unwrap_err();
+        let want = Error::IndexOutOfRange {
+            at: 4,
+            index: 99,
+            vertices: 24,
+        };
+        assert_eq!(e, want);
+        let uvs = [[Fx::ZERO; 2]; 24];
+        let mesh = crate::scene::Mesh::new(&positions, Some(&normals), &uvs, &indices);
+        assert_eq!(mesh.unwrap_err(), want);
+        assert_eq!(
+            SolidMesh::new(&positions, Some(&normals[..3]), &[], Fx::ONE).unwrap_err(),
+            Error::WrongLength {
+                expected: 24,
+                actual: 3
+            }
+        );
+        assert!(SolidMesh::new(&positions, None, &indices[..1], Fx::ONE).is_ok());
     }
 }

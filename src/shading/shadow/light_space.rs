@@ -194,8 +194,9 @@ impl LightSpace<Directional> {
     /// `near..far` along it (an orthographic box, world units).
     ///
     /// # Errors
-    /// [`Error::BadProjection`] if `half <= 0`, `far <= near`, or `look_at` refuses the
-    /// axis.
+    /// [`Error::BadProjection`] if `half <= 0`, `far <= near`, `(far + near) / (far - near)`
+    /// is 32768 or more in magnitude (a thin range far from the light), or `look_at`
+    /// refuses the axis.
     pub fn directional(
         eye: Vec3,
         target: Vec3,
@@ -215,18 +216,21 @@ impl LightSpace<Directional> {
             ));
         }
         let (o, i) = (Fx::ZERO, Fx::ONE);
-        let depth = far - near;
-        let k = Fx::from_num(2)
-            .checked_div(depth)
-            .ok_or(Error::BadProjection(
-                "directional light: depth range too small",
-            ))?;
+        // The depth row maps near..far to -1..1: -2 / (far - near) and
+        // -(far + near) / (far - near). The sum and difference of two I16F16 values need 17
+        // integer bits: computed in i64 (truncated toward zero, as `Fx` division), and
+        // refused when a quotient does not fit I16F16.
+        let (n, f) = (i64::from(near.to_bits()), i64::from(far.to_bits()));
+        let quotient = |num: i64| i32::try_from((num << 16) / (f - n)).ok().map(Fx::from_bits);
+        let k = quotient(2 << 16).ok_or(Error::BadProjection(
+            "directional light: depth range too small",
+        ))?;
         let inv = i.checked_div(half).ok_or(Error::BadProjection(
             "directional light: half-side too small",
         ))?;
-        let c = (far + near)
-            .checked_div(depth)
-            .ok_or(Error::BadProjection("directional light: bad depth range"))?;
+        let c = quotient(f + n).ok_or(Error::BadProjection(
+            "directional light: (far + near) / (far - near) must fit I16F16",
+        ))?;
         let ortho = Mat4::from_rows([[inv, o, o, o], [o, inv, o, o], [o, o, -k, -c], [o, o, o, i]]);
         Self::from_matrix(ortho.mul(&Mat4::look_at(eye, target, up)?))
     }

@@ -43,12 +43,15 @@ pub use sampler::{
 /// Most levels a chain can have (4096 down to 1).
 pub const MAX_LEVELS: usize = MAX_LOG2_SIZE as usize + 1;
 
-/// Number of texels in a chain of `levels` levels from a `width x height` base.
+/// Number of texels in a chain of `levels` levels from a `width x height` base, saturating
+/// at `usize::MAX` (sides beyond the 4096 a [`Texture`] takes can need more texels than a
+/// `usize` counts on a 32-bit target; [`MipTexture::new`] refuses those sides first).
 pub const fn chain_len(width: u32, height: u32, levels: u32) -> usize {
     let mut n = 0usize;
     let mut k = 0;
     while k < levels {
-        n += level_side(width, k) as usize * level_side(height, k) as usize;
+        let level = (level_side(width, k) as usize).saturating_mul(level_side(height, k) as usize);
+        n = n.saturating_add(level);
         k += 1;
     }
     n
@@ -147,10 +150,18 @@ impl<'a> MipTexture<'a> {
     }
 
     /// Views `chain` (laid out as in the module docs) as `levels` levels of a
-    /// `width x height` base. Errors: the base's [`Texture::new`] errors,
+    /// `width x height` base. Errors: [`Error::BadSize`] for a side of 0 or above 4096
+    /// (checked first), the base's [`Texture::new`] errors,
     /// [`Error::BadSize`] for zero levels or more than the full chain has,
     /// [`Error::WrongLength`] when `chain` is not exactly [`chain_len`] long.
     pub fn new(chain: &'a [Rgb565], width: u32, height: u32, levels: u32) -> Result<Self, Error> {
+        // The sides first, so the expected length below is computed for sides of at most
+        // 4096 (no saturation, and the error names the side).
+        for side in [width, height] {
+            if side == 0 || side > 1 << MAX_LOG2_SIZE {
+                return Err(Error::BadSize(side));
+            }
+        }
         let full = full_levels(width, height);
         if levels == 0 || levels > full || levels as usize > MAX_LEVELS {
             return Err(Error::BadSize(levels));
@@ -163,7 +174,7 @@ impl<'a> MipTexture<'a> {
             });
         }
         let mut out = MipTexture::single(Texture::new(
-            &chain[..(width * height) as usize],
+            chain.get(..(width * height) as usize).unwrap_or(&[]),
             width,
             height,
         )?);
@@ -291,5 +302,28 @@ mod tests {
         assert_eq!(mip.level(2).width(), 1);
         assert!(MipTexture::new(&chain[..10], 4, 2, 3).is_err());
         assert!(MipTexture::new(&chain, 4, 2, 4).is_err());
+    }
+
+    /// Sides past 4096 are refused by name before any length is computed, and the length
+    /// itself saturates instead of overflowing (a `const` use compiles on 32-bit targets).
+    #[test]
+    fn huge_sides_are_refused_without_overflow() {
+        const BIG: usize = chain_len(65536, 65536, 1);
+        assert_eq!(BIG as u64, (1u64 << 32).min(usize::MAX as u64));
+        assert_eq!(chain_len(u32::MAX, u32::MAX, 32), usize::MAX);
+        assert_eq!(chain_len(u32::MAX, 1, 1), u32::MAX as usize);
+        let e = MipTexture::new(&[], u32::MAX, u32::MAX, 32).unwrap_err();
+        assert_eq!(e, Error::BadSize(u32::MAX));
+        assert_eq!(
+            MipTexture::new(&[], 8, 8192, 1).unwrap_err(),
+            Error::BadSize(8192)
+        );
+        assert_eq!(
+            MipTexture::new(&[], 0, 8, 1).unwrap_err(),
+            Error::BadSize(0)
+        );
+        let mut none: [Rgb565; 0] = [];
+        let e = generate_mips(&mut none, u32::MAX, u32::MAX, 32).unwrap_err();
+        assert_eq!(e, Error::BadSize(u32::MAX));
     }
 }

@@ -314,7 +314,8 @@ fn mip_sample<Min: Sampler, Mag: Sampler, WU: WrapMode, WV: WrapMode>(
         let d = if lambda <= 128 {
             0
         } else {
-            (((lambda + 128 - 1) >> 8) as u32).min(last)
+            // In u32 (lambda > 128 here): no overflow for any clamp a `Lod` holds.
+            ((lambda as u32 + 127) >> 8).min(last)
         };
         sample_level::<Min, WU, WV>(t, d, wu, wv, u, v)
     }

@@ -33,11 +33,8 @@ fn run() -> bool {
     let Ok(draw) = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::Back) else {
         return false;
     };
-    let mesh = SolidMesh {
-        positions: &POSITIONS,
-        normals: Some(&NORMALS),
-        indices: &INDICES,
-        scale: Fx::from_num(2),
+    let Ok(mesh) = SolidMesh::new(&POSITIONS, Some(&NORMALS), &INDICES, Fx::from_num(2)) else {
+        return false;
     };
     let sun = DirectionalLight::default();
     let r = fixel_firmware::size::in_bands(None, |frame| {
