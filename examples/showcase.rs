@@ -17,7 +17,7 @@ use fixel::demo;
 use fixel::geometry::ClipVertex;
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
-use fixel::surface::Binned;
+use fixel::surface::{BandDraw, Binned};
 use fixel::surface::DrawTargetFlush;
 
 /// A display in RAM: what `embedded-graphics-simulator` would be, without a window.
@@ -161,7 +161,7 @@ fn main() -> Result<(), Error> {
     let mut renderer = BandRenderer::new(&mut band, w, 16, h)?.with_depth(&mut depth)?;
     let mut flush = DrawTargetFlush(&mut display);
     let stats = renderer.render(
-        &draws,
+        &draws.iter().map(|d| *d as &dyn BandDraw<Rgb565>).collect::<Vec<_>>(),
         &mut bins,
         Rgb565::new(2, 4, 6),
         |sink| {

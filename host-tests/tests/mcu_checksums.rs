@@ -220,6 +220,16 @@ fn mcu_frames() {
     )
     .unwrap();
     print("transparency", &r);
+    let (mut wc, mut wd) = (vec![Rgb565::new(0, 0, 0); 320 * 240], vec![0u16; 320 * 240]);
+    let w = alpha_scene::transparency_in(
+        Texture::new(&t64a, 64, 64).unwrap(),
+        Texture::new(&t8a, 8, 8).unwrap(),
+        alpha_scene::AlphaTarget::Whole(&mut wc, &mut wd),
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("transparency", &r, &w);
 
     // Per-pixel lighting with bump mapping (whole-frame layout on the MCUs).
     let mut assets = Box::new(bump_scene::BumpAssets::zeroed());
@@ -331,6 +341,10 @@ fn mcu_noise_frame() {
     let shader = SolidShader::new(ramps.marble(), BandLimit::new(6));
     let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
     print("noise", &r);
+    let mut color = vec![Rgb565::new(0, 0, 0); 320 * 240];
+    let mut verts = Box::new([None; noise::VERTS]);
+    let w = noise::render_whole(shader, &mut color, &mut verts, &mut || {}, &mut || {}).unwrap();
+    print_whole("noise", &r, &w);
 }
 
 /// The flame firmware (`examples/firmware/src/bin/noise_flame.rs`).

@@ -68,7 +68,8 @@ pub fn aa_cube(
             |sink| {
                 mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
                     draw.project(t, &mut |s| sink.push(0, s));
-                })
+                });
+                crate::scenes::geometry_done();
             },
             |band| {
                 pause();

@@ -22,6 +22,15 @@ use fixel::texture::{
     Bilinear, BilinearFootprint, BilinearFootprintSized, MipTexture, Nearest, Repeat,
 };
 
+/// Marks the end of a banded frame's binning pass for `cargo xtask mcu`'s geometry share
+/// (call it from the geometry closure when its sink is in the binning pass). Nothing on the
+/// host.
+#[inline(always)]
+pub fn geometry_done() {
+    #[cfg(target_os = "none")]
+    crate::bench_geometry();
+}
+
 /// Frame size of every scene.
 pub const W: u32 = demo::WIDTH;
 /// Frame height.
@@ -292,6 +301,9 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
         Rgb565::new(0, 0, 0),
         |sink| {
             mesh_to_sink(draw, 0, mesh, &transform, light, cache, 0, sink);
+            if sink.fresh() {
+                geometry_done();
+            }
         },
         |band| {
             pause();
