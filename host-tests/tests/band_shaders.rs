@@ -492,3 +492,58 @@ fn a_draw_skips_a_piece_of_another_varying_count() {
     assert!(d.draw_piece(g.as_any(), &mut frame, None) > 50);
     assert!(frame.has_depth() || !d.tests_depth());
 }
+
+/// Accumulation through bands gives the same frame and the same pixel count (per sample,
+/// over the frame) whatever the band height, open draws included.
+#[test]
+fn accumulated_frames_do_not_depend_on_the_band_height() {
+    use fixel::scene::SamplePattern;
+    let vp = Viewport::new(0, 0, 16, 16).unwrap();
+    let gouraud = ShadedDraw::<_, Exact, DepthLess>::new(Gouraud, vp, Cull::None).unwrap();
+    let mix = ShadedDraw::<_, Exact, NoDepth>::new(Mix::<2>, vp, Cull::None).unwrap();
+    let draws: [&dyn BandDraw<Rgb565>; 2] = [&gouraud, &mix];
+    let mut offsets = [[Fx::ZERO; 2]; 4];
+    SamplePattern::RotatedGrid4.offsets(&mut offsets).unwrap();
+    let small = {
+        let p = |x: f32, y: f32| [Fx::from_num(x), Fx::from_num(y), Fx::ZERO, Fx::ONE];
+        [
+            Vertex::new(p(-0.3, 0.1), [1 << 20, 5 << 20]),
+            Vertex::new(p(0.9, 0.3), [3 << 20, 0]),
+            Vertex::new(p(0.2, 0.95), [0, 7 << 20]),
+        ]
+    };
+    let run = |rows: u32| {
+        let n = 16 * rows as usize;
+        let (mut c, mut d) = (vec![Rgb565::default(); n], vec![0u16; n]);
+        let mut sums = vec![[0u16; 3]; n];
+        let mut bins = [Binned::default(); 4];
+        let mut r = BandRenderer::new(&mut c, 16, rows, 16)
+            .unwrap()
+            .with_depth(&mut d)
+            .unwrap();
+        let mut got = vec![0u16; 16 * 16];
+        let stats = r
+            .render_accumulated(
+                &draws,
+                &mut bins,
+                Rgb565::default(),
+                &offsets,
+                &mut sums,
+                |sink| {
+                    gouraud.project(&middle::<3>(), &mut |s| sink.push(0, s));
+                    mix.project(&small, &mut |s| sink.push(1, s));
+                },
+                |b| {
+                    keep(&mut got, 16, b);
+                    Ok::<(), ()>(())
+                },
+            )
+            .unwrap();
+        (got, stats.pixels)
+    };
+    let whole = run(16);
+    assert!(whole.1 > 50);
+    for rows in [1, 3, 4, 7, 8] {
+        assert_eq!(run(rows), whole, "{rows}-row bands");
+    }
+}

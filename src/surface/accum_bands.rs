@@ -119,9 +119,11 @@ impl BandRenderer<'_, Rgb565> {
             if let Err(e) = acc.resolve(band.pixels_mut()) {
                 failed = Some(e);
             }
-            pixels / offsets.len() as u32
+            pixels
         })
         .map_err(BandError::Flush)?;
+        // Pixels per sample over the frame: the same whatever the band height.
+        stats.pixels /= offsets.len() as u32;
         if let Some(e) = failed {
             return Err(BandError::Input(e));
         }

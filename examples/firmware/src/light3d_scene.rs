@@ -59,9 +59,15 @@ pub fn model() -> Mat4 {
         * (Mat4::rotation_x(Angle::from_turns(5000)) * Mat4::rotation_y(Angle::from_turns(7000)))
 }
 
-/// Scratch of the scene.
-pub struct Light3dBuffers {
-    color: [Rgb565; (W * ROWS) as usize],
+/// Pixels of a band.
+pub const BAND: usize = (W * ROWS) as usize;
+/// Pixels of the whole frame (one band of 240 rows: the whole-frame firmware).
+pub const WHOLE: usize = (W * H) as usize;
+
+/// Scratch of the scene: a colour band of `P / 320` rows (8 by default; [`WHOLE`] for one
+/// band holding the frame).
+pub struct Light3dBuffers<const P: usize = BAND> {
+    color: [Rgb565; P],
     lit: [[Vertex<4>; 3]; TRIS],
     point: [[Vertex<3>; 3]; TRIS],
     bins: [Binned; BINS],
@@ -71,10 +77,17 @@ const V4: Vertex<4> = Vertex::new([Fx::ZERO; 4], [0; 4]);
 const V3: Vertex<3> = Vertex::new([Fx::ZERO; 4], [0; 3]);
 
 impl Light3dBuffers {
-    /// Zeroed.
+    /// Zeroed 8-row band.
     pub const fn new() -> Self {
+        Self::sized()
+    }
+}
+
+impl<const P: usize> Light3dBuffers<P> {
+    /// Zeroed.
+    pub const fn sized() -> Self {
         Light3dBuffers {
-            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            color: [Rgb565::new(0, 0, 0); P],
             lit: [[V4; 3]; TRIS],
             point: [[V3; 3]; TRIS],
             bins: [Binned::EMPTY; BINS],
@@ -115,9 +128,9 @@ pub fn triangles(out: &mut [[Vertex<4>; 3]; TRIS]) -> usize {
 
 /// The frame with a light-map shader (varyings `x, y, z`, e.g. `LitSolid`): geometry, then
 /// the bands. `pause` / `resume` bracket the harness-only checksum of each band.
-pub fn render_light_map<S: Shader<Varyings = [i32; 3]>>(
+pub fn render_light_map<S: Shader<Varyings = [i32; 3]>, const P: usize>(
     shader: S,
-    buf: &mut Light3dBuffers,
+    buf: &mut Light3dBuffers<P>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
@@ -131,9 +144,9 @@ pub fn render_light_map<S: Shader<Varyings = [i32; 3]>>(
 
 /// The same frame lit per vertex (varyings `x, y, z, i`, e.g. `SolidShader`): the baseline
 /// the light map is compared with.
-pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>>(
+pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>, const P: usize>(
     shader: S,
-    buf: &mut Light3dBuffers,
+    buf: &mut Light3dBuffers<P>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
@@ -147,7 +160,7 @@ pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>>(
 fn bands<S: Shader<Varyings = [i32; N]>, const N: usize>(
     shader: S,
     tris: &[[Vertex<N>; 3]],
-    color: &mut [Rgb565; (W * ROWS) as usize],
+    color: &mut [Rgb565],
     bins: &mut [Binned; BINS],
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
@@ -158,7 +171,8 @@ where
     let draw =
         ShadedDraw::<S, Exact, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
     let mut sum = Fnv1a::default();
-    let mut bands = BandRenderer::new(color, W, ROWS, H)?;
+    let rows = (color.len() as u32 / W).min(H);
+    let mut bands = BandRenderer::new(color, W, rows, H)?;
     let stats = bands.render(
         &[&draw],
         bins,

@@ -37,7 +37,7 @@ pub const W: u32 = demo::WIDTH;
 pub const H: u32 = demo::HEIGHT;
 /// Rows per band: colour + depth band = 320 * 8 * 4 B = 10 KiB.
 pub const ROWS: u32 = 8;
-/// Binned screen triangles (~104 B each). The cube and floor fit; the sphere overflows and
+/// Binned screen triangles (168 B each). The cube and floor fit; the sphere overflows and
 /// the renderer keeps a 2-byte band range per triangle instead (`reprojected`).
 pub const BINS: usize = 16;
 /// Band ranges of the sphere firmware: one per sphere triangle (2 B each, 4.4 KB).

@@ -101,7 +101,7 @@ const SCENES: [&str; 20] = [
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and the
 /// banded technique scenes; and `bump` (per-pixel lit, bump-mapped sphere), drawn whole
 /// only (its 48-byte prepared vertices, 59 KB, are kept for the frame).
-const WHOLE_SCENES: [&str; 11] = [
+const WHOLE_SCENES: [&str; 13] = [
     "whole_cube",
     "whole_sphere",
     "whole_sphere_adaptive",
@@ -112,6 +112,8 @@ const WHOLE_SCENES: [&str; 11] = [
     "whole_env_pixel",
     "whole_noise",
     "whole_transparency",
+    "whole_aa_cube",
+    "whole_noise_light3d",
     "bump",
 ];
 

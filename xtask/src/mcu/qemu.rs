@@ -82,6 +82,15 @@ pub(super) fn num(text: &str, key: &str) -> Option<u64> {
     kv(text, key)?.parse().ok()
 }
 
+/// The plugin's report at exit: its stderr without the `icount: mark` lines (which carry
+/// the same keys, counted so far).
+fn final_report(err: &str) -> String {
+    err.lines()
+        .filter(|l| !l.starts_with("icount: mark "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 pub(super) struct Measured {
     pub(super) checksum: String,
     pub(super) pixels: u64,
@@ -131,10 +140,11 @@ pub(super) fn measure(
                 m.label
             ));
         }
-        let total = num(&err, "total").ok_or("plugin printed no total")?;
-        let region = num(&err, "region_sum").ok_or("no region_sum")?;
-        let pairs = num(&err, "pairs").ok_or("no pairs")?;
-        let fp = num(&err, "first_pair").ok_or("no first_pair")?;
+        let report = final_report(&err);
+        let total = num(&report, "total").ok_or("plugin printed no total")?;
+        let region = num(&report, "region_sum").ok_or("no region_sum")?;
+        let pairs = num(&report, "pairs").ok_or("no pairs")?;
+        let fp = num(&report, "first_pair").ok_or("no first_pair")?;
         seen.push((total, region - pairs * fp));
         if first.is_none() {
             first = Some((out, err));
@@ -146,7 +156,7 @@ pub(super) fn measure(
         .find(|l| l.starts_with("scene="))
         .ok_or_else(|| format!("no result line from {}:\n{out}{err}", elf.display()))?;
     let pixels = num(line, "pixels").unwrap_or(0);
-    let region = num(&err, "region_sum").unwrap_or(1).max(1);
+    let region = num(&final_report(&err), "region_sum").unwrap_or(1).max(1);
     let (total, net) = seen[0];
     // The first mark: the region sum so far, less the marker pairs' overhead.
     let geometry = err
