@@ -266,6 +266,7 @@
 //! #     }
 //! # }
 //! use fixel::prelude::*;
+//! use fixel::geometry::Vertex;
 //! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 //! use fixel::scene::triangles_to_sink;
 //! use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
@@ -282,13 +283,23 @@
 //! let vp = Viewport::new(0, 0, 320, 240)?;
 //! let draw = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(sky), vp, Cull::Back)?;
 //!
-//! // Triangle k of the sphere: clip positions, and the normal and view vector to reflect.
+//! // Triangle k of the sphere: clip positions, and the normal and view vector to reflect
+//! // (when the pass needs the attributes; the binning pass, once the bins are full, needs
+//! // the positions only).
 //! let sphere = fixel::demo::sphere();
 //! let camera = fixel::demo::camera(20);
 //! let view_proj = camera.projection.mul(&camera.view);
 //! let setup = EnvVertices::new(&fixel::demo::sphere_model(0), &view_proj, Vec3::ZERO);
-//! let triangle = |k: usize| {
-//!     let v = |i: u16| setup.per_pixel(sphere.positions[usize::from(i)], sphere.normals[usize::from(i)]);
+//! let triangle = |k: usize, attributes: bool| {
+//!     let v = |i: u16| {
+//!         let (p, n) = (sphere.positions[usize::from(i)], sphere.normals[usize::from(i)]);
+//!         if attributes {
+//!             setup.per_pixel(p, n)
+//!         } else {
+//!             let c = setup.mvp.transform_point(p)?;
+//!             Some(Vertex::new([c.x, c.y, c.z, c.w], [0; 6]))
+//!         }
+//!     };
 //!     let t = sphere.indices.get(k)?;
 //!     Some([v(t[0])?, v(t[1])?, v(t[2])?])
 //! };

@@ -9,12 +9,16 @@ use crate::shading::Shader;
 use crate::surface::{Binnable, MeshSink};
 
 /// Sends triangles `first_id..first_id + count` of an open-stage mesh to a band
-/// renderer's sink: for each id the pass wants, `triangle(k)` (`k` counted from 0) builds the
-/// triangle's clip-space vertices (`None` skips it), which `draw` clips, projects and culls,
-/// and the sink takes as draw `draw_index` of the renderer. Triangles a band does not meet
-/// are skipped before `triangle` runs, so the vertices are computed in the binning pass and
-/// in the bands a triangle meets only. `triangle` must build the same vertices in every
-/// pass. Returns the next free triangle id (`first_id + count`).
+/// renderer's sink: for each id the pass wants, `triangle(k, attributes)` (`k` counted from
+/// 0) builds the triangle's clip-space vertices (`None` skips it), which `draw` clips,
+/// projects and culls, and the sink takes as draw `draw_index` of the renderer. Triangles a
+/// band does not meet are skipped before `triangle` runs, so the vertices are computed in
+/// the binning pass and in the bands a triangle meets only. When `attributes` is `false`
+/// (the binning pass, once the bins are full: only the rows count) the varyings may be
+/// anything, zeros say, and costly per-vertex work can be skipped; the positions must be the
+/// same in every pass, and a triangle skipped with `None` then must be skipped when
+/// `attributes` is `true` too, or given the same positions. Returns the next free triangle
+/// id (`first_id + count`).
 ///
 /// ```
 /// use fixel::prelude::*;
@@ -37,7 +41,7 @@ use crate::surface::{Binnable, MeshSink};
 /// let mut ranges = [BandRange::EMPTY; 1];
 /// let mut bands = BandRenderer::new(&mut color, 32, 8, 32)?;
 /// let stats = bands.render_spans(&[&draw], &mut [] as &mut [Binned], &mut ranges, Rgb565::default(), |sink| {
-///     triangles_to_sink(&draw, 0, tris.len(), 0, |k| tris.get(k).copied(), sink);
+///     triangles_to_sink(&draw, 0, tris.len(), 0, |k, _| tris.get(k).copied(), sink);
 /// }, |_band| Ok::<(), core::convert::Infallible>(()))?;
 /// assert!(stats.reprojected && stats.pixels > 300);
 /// # Ok::<(), fixel::Error>(())
@@ -47,7 +51,7 @@ pub fn triangles_to_sink<S, P, D, C, const N: usize>(
     draw_index: u8,
     count: usize,
     first_id: usize,
-    mut triangle: impl FnMut(usize) -> Option<[Vertex<N>; 3]>,
+    mut triangle: impl FnMut(usize, bool) -> Option<[Vertex<N>; 3]>,
     sink: &mut MeshSink<'_, '_, '_, C>,
 ) -> usize
 where
@@ -66,7 +70,7 @@ where
         if id >= stop {
             break;
         }
-        if let Some(v) = triangle(id - first_id) {
+        if let Some(v) = triangle(id - first_id, sink.attributes()) {
             draw.project(&v, &mut |s| sink.push(id, draw_index, s));
         }
         id += 1;

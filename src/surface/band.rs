@@ -136,32 +136,68 @@ impl<E: core::fmt::Display> core::fmt::Display for BandError<E> {
 
 impl<E: core::fmt::Debug + core::fmt::Display> core::error::Error for BandError<E> {}
 
-/// What the binning pass found wrong with the triangles pushed: the first problem, kept for
-/// the error returned before any band is drawn.
-pub(super) fn note_bad_push<C: TargetColor>(
-    bad: &mut Option<Error>,
-    draws: &[&dyn BandDraw<C>],
-    draw: u8,
-    varyings: usize,
-) {
-    if bad.is_some() {
-        return;
+/// The binning pass's check of the triangles pushed: the first problem, kept for the error
+/// returned before any band is drawn, and the last (draw, varying count) pair found right,
+/// which most pushes repeat (one comparison instead of a call through the draw).
+#[derive(Debug)]
+pub(super) struct PushCheck {
+    bad: Option<Error>,
+    ok: u32,
+}
+
+impl PushCheck {
+    /// Nothing checked yet.
+    pub(super) const NEW: PushCheck = PushCheck {
+        bad: None,
+        ok: u32::MAX,
+    };
+
+    /// Checks a triangle of `varyings` varyings pushed for draw `draw`.
+    #[inline(always)]
+    pub(super) fn check<C: TargetColor>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        draw: u8,
+        varyings: usize,
+    ) {
+        let key = (u32::from(draw) << 8) | (varyings as u32 & 0xFF);
+        if key != self.ok {
+            self.check_draw(draws, draw, varyings, key);
+        }
     }
-    match draws.get(usize::from(draw)) {
-        None => {
-            *bad = Some(Error::BadDrawIndex {
-                index: draw,
-                draws: draws.len(),
-            })
+
+    #[inline(never)]
+    fn check_draw<C: TargetColor>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        draw: u8,
+        varyings: usize,
+        key: u32,
+    ) {
+        if self.bad.is_some() {
+            return;
         }
-        Some(d) if d.varyings() != varyings => {
-            *bad = Some(Error::WrongVaryings {
-                draw,
-                expected: d.varyings() as u8,
-                actual: varyings as u8,
-            })
+        match draws.get(usize::from(draw)) {
+            None => {
+                self.bad = Some(Error::BadDrawIndex {
+                    index: draw,
+                    draws: draws.len(),
+                })
+            }
+            Some(d) if d.varyings() != varyings => {
+                self.bad = Some(Error::WrongVaryings {
+                    draw,
+                    expected: d.varyings() as u8,
+                    actual: varyings as u8,
+                })
+            }
+            Some(_) => self.ok = key,
         }
-        Some(_) => {}
+    }
+
+    /// The first problem found.
+    pub(super) fn error(&self) -> Option<Error> {
+        self.bad
     }
 }
 
@@ -185,7 +221,7 @@ enum SinkMode<'s, 'f, 'd, C: TargetColor> {
         len: usize,
         overflow: bool,
         draws: &'s [&'d dyn BandDraw<C>],
-        bad: Option<Error>,
+        check: PushCheck,
     },
     Immediate {
         draws: &'s [&'d dyn BandDraw<C>],
@@ -203,7 +239,7 @@ impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
                 len: 0,
                 overflow: false,
                 draws,
-                bad: None,
+                check: PushCheck::NEW,
             },
         }
     }
@@ -211,13 +247,16 @@ impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
     /// The bins after a binning pass: `(bins, len, overflow)`, or the first bad push.
     pub(super) fn into_bins(self) -> Result<(&'s mut [Binned], usize, bool), Error> {
         match self.mode {
-            SinkMode::Bin { bad: Some(e), .. } => Err(e),
             SinkMode::Bin {
                 bins,
                 len,
                 overflow,
+                check,
                 ..
-            } => Ok((bins, len, overflow)),
+            } => match check.error() {
+                Some(e) => Err(e),
+                None => Ok((bins, len, overflow)),
+            },
             SinkMode::Immediate { .. } => Ok((&mut [], 0, true)),
         }
     }
@@ -233,7 +272,6 @@ impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
     /// to [`BandRenderer::render`]), carrying that draw's varyings. An index past the draws
     /// makes `render` return [`Error::BadDrawIndex`], a triangle whose varying count is not
     /// its draw's [`Error::WrongVaryings`], both before anything is drawn.
-    #[inline]
     pub fn push<const N: usize>(&mut self, draw: u8, tri: &ScreenTriangle<N>)
     where
         ScreenTriangle<N>: Binnable,
@@ -244,9 +282,9 @@ impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
                 len,
                 overflow,
                 draws,
-                bad,
+                check,
             } => {
-                note_bad_push(bad, draws, draw, N);
+                check.check(draws, draw, N);
                 if let Some(slot) = bins.get_mut(*len) {
                     slot.store(draw, tri);
                     *len += 1;

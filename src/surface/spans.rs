@@ -42,13 +42,12 @@
 //! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
 //! viewport only.
 
-use super::band::{note_bad_push, rows_of, BandError, BandStats, Binned};
+use super::band::{rows_of, BandError, BandStats, Binned, PushCheck};
 use super::band_draw::{BandDraw, Binnable};
 use super::setup_queue::{self, QueueState, SetupQueue};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
-use crate::Error;
 
 /// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
 /// triangle below band 254 is then looked at in every band from 254 on: conservative).
@@ -133,7 +132,7 @@ enum Pass<'s, 'f, 'd, C: TargetColor> {
         height: u32,
         triangles: u32,
         draws: &'s [&'d dyn BandDraw<C>],
-        bad: Option<Error>,
+        check: PushCheck,
     },
     /// One band: draw what covers it.
     Band {
@@ -274,9 +273,9 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
 
     /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]` and carrying
     /// that draw's varyings (an index past the draws makes `render_spans` return
-    /// [`Error::BadDrawIndex`], another varying count [`Error::WrongVaryings`], both before
+    /// [`Error::BadDrawIndex`](crate::Error::BadDrawIndex), another varying count
+    /// [`Error::WrongVaryings`](crate::Error::WrongVaryings), both before
     /// drawing).
-    #[inline]
     pub fn push<const N: usize>(&mut self, id: usize, draw: u8, tri: &ScreenTriangle<N>)
     where
         ScreenTriangle<N>: Binnable,
@@ -293,9 +292,9 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 height,
                 triangles,
                 draws,
-                bad,
+                check,
             } => {
-                note_bad_push(bad, draws, draw, N);
+                check.check(draws, draw, N);
                 *triangles += 1;
                 if !*bins_full {
                     match bins.get_mut(*len) {
@@ -401,7 +400,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 height: self.height,
                 triangles: 0,
                 draws,
-                bad: None,
+                check: PushCheck::NEW,
             },
             attributes: true,
         };
@@ -414,13 +413,13 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             ranges,
             ranges_short,
             triangles,
-            bad,
+            check,
             ..
         } = sink.pass
         else {
             return Ok(BandStats::default());
         };
-        if let Some(e) = bad {
+        if let Some(e) = check.error() {
             return Err(BandError::Input(e));
         }
         let mut stats = BandStats {

@@ -88,14 +88,16 @@ where
     fixel::geometry::ScreenTriangle<N>: Binnable,
 {
     let v = |s: &EnvVertices, i: usize| vertex(s, *positions.get(i)?, *normals.get(i)?);
-    env_frame_indexed::<S, P, N>(buf, shader, indices, v, pause, resume)
+    env_frame_indexed::<S, P, N>(buf, shader, positions, indices, v, pause, resume)
 }
 
 /// [`env_frame`] with vertices made from their index (for varyings beyond `n` and `v`,
-/// such as texture coordinates): `vertex(setup, i)`.
+/// such as texture coordinates): `vertex(setup, i)`, at `positions[i]` (the binning pass
+/// projects the positions alone).
 pub fn env_frame_indexed<S, P, const N: usize>(
     buf: &mut EnvBuffers,
     shader: S,
+    positions: &[Vec3],
     indices: &[[u16; 3]],
     vertex: impl Fn(&EnvVertices, usize) -> Option<Vertex<N>>,
     pause: &mut dyn FnMut(),
@@ -113,9 +115,18 @@ where
         Vec3::ZERO,
     );
     let draw = ShadedDraw::<S, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    let tri = |k: usize| -> Option<[Vertex<N>; 3]> {
+    // The binning pass needs the rows only: clip positions, no varyings (the vertex stage
+    // of the reflection runs in the bands a triangle meets).
+    let tri = |k: usize, attributes: bool| -> Option<[Vertex<N>; 3]> {
         let t = indices.get(k)?;
-        let v = |i: u16| vertex(&setup, usize::from(i));
+        let v = |i: u16| {
+            if attributes {
+                vertex(&setup, usize::from(i))
+            } else {
+                let c = setup.mvp.transform_point(*positions.get(usize::from(i))?)?;
+                Some(Vertex::new([c.x, c.y, c.z, c.w], [0; N]))
+            }
+        };
         Some([v(t[0])?, v(t[1])?, v(t[2])?])
     };
     let mut hash = Fnv1a::default();

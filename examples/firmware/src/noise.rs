@@ -150,7 +150,14 @@ pub fn render_in<S: Shader<Varyings = [i32; 4]>, P: ProjectionStage>(
         &mut buf.ranges,
         Rgb565::new(0, 0, 0),
         |sink| {
-            triangles_to_sink(&draw, 0, TRIS, 0, |t| tri(verts, &sphere_triangle(t)), sink);
+            triangles_to_sink(
+                &draw,
+                0,
+                TRIS,
+                0,
+                |t, _| tri(verts, &sphere_triangle(t)),
+                sink,
+            );
             if sink.fresh() {
                 crate::scenes::geometry_done();
             }

@@ -117,6 +117,7 @@ fn env_lit(buf: &mut EnvBuffers) -> bool {
         env::env_frame_indexed::<_, Exact, 8>(
             buf,
             shader,
+            &s.positions,
             &s.indices,
             |setup, i| env::lit_vertex(setup, &s.positions, &s.normals, &s.uvs, i),
             pause,

@@ -450,6 +450,7 @@ fn main() {
         let r = env::env_frame_indexed::<_, Exact, 8>(
             &mut buf,
             shader,
+            &m.positions,
             &m.indices,
             |s, i| env::lit_vertex(s, &m.positions, &m.normals, &m.uvs, i),
             &mut a,
