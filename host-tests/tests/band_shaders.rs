@@ -547,3 +547,56 @@ fn accumulated_frames_do_not_depend_on_the_band_height() {
         assert_eq!(run(rows), whole, "{rows}-row bands");
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    /// An open mesh through `scene::triangles_to_sink` (bins full or not, band ranges
+    /// short or not: the binning pass projects positions alone once the bins are full)
+    /// gives the whole frame bit for bit.
+    #[test]
+    fn triangles_to_sink_equals_whole_frame(
+        tris in prop::collection::vec([scene_vertex(), scene_vertex(), scene_vertex()], 1..14),
+        (w, h) in (1usize..48, 1usize..40),
+        rows in 1u32..40,
+        (nbins, nranges) in (0usize..12, 0usize..16),
+    ) {
+        let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
+        let draw = ShadedDraw::<_, QuadraticBy<2>, DepthLess>::new(Mix::<8>, vp, Cull::Back).unwrap();
+        let open: Vec<[Vertex<8>; 3]> = tris.iter().map(|t| t.each_ref().map(open)).collect();
+        let mut color = vec![Rgb565::default(); w * h];
+        let mut depth = vec![0u16; w * h];
+        let mut f = Frame::new(&mut color, w as u32, h as u32).unwrap().with_depth(&mut depth).unwrap();
+        f.clear(raw(0x1234));
+        let px = draw.clip_triangles(&open, &mut f).unwrap();
+        let expected: Vec<u16> = color.iter().map(|&c| bits(c)).collect();
+
+        let rows = rows.min(h as u32);
+        let mut cbuf = vec![Rgb565::default(); w * rows as usize];
+        let mut dbuf = vec![0u16; w * rows as usize];
+        let mut band = BandRenderer::new(&mut cbuf, w as u32, rows, h as u32)
+            .unwrap()
+            .with_depth(&mut dbuf)
+            .unwrap();
+        let mut bins = vec![Binned::default(); nbins];
+        let mut ranges = vec![BandRange::EMPTY; nranges];
+        let mut got = vec![0u16; w * h];
+        let stats = band
+            .render_spans(
+                &[&draw],
+                &mut bins,
+                &mut ranges,
+                raw(0x1234),
+                |sink| {
+                    fixel::scene::triangles_to_sink(&draw, 0, open.len(), 0, |k, _| open.get(k).copied(), sink);
+                },
+                |b| {
+                    keep(&mut got, w, b);
+                    Ok::<(), ()>(())
+                },
+            )
+            .unwrap();
+        prop_assert_eq!(stats.pixels, px);
+        prop_assert!(got == expected, "triangles_to_sink: band frame differs ({:?})", stats);
+    }
+}

@@ -70,8 +70,15 @@ where
         if id >= stop {
             break;
         }
-        if let Some(v) = triangle(id - first_id, sink.attributes()) {
-            draw.project(&v, &mut |s| sink.push(id, draw_index, s));
+        let attributes = sink.attributes();
+        if let Some(v) = triangle(id - first_id, attributes) {
+            if attributes {
+                draw.project(&v, &mut |s| sink.push(id, draw_index, s));
+            } else {
+                // Rows only: the positions projected without the varyings.
+                let p = v.map(|x| Vertex::new(x.position, []));
+                draw.project(&p, &mut |s| sink.push_rows::<N>(id, draw_index, s));
+            }
         }
         id += 1;
     }

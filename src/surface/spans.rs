@@ -308,24 +308,15 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                         }
                     }
                 }
-                // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
-                let (r0, r1) = rows_of(tri);
-                let last_row = *height as i32 - 1;
-                if r1 <= r0 || r1 <= 0 || r0 > last_row {
-                    return; // no row of the frame
-                }
-                let band = |r: i32| rows.div(r.clamp(0, last_row) as u32);
-                let (b0, b1) = (band(r0), band(r1 - 1));
-                let sat = |b: u32| b.min(LAST_BAND) as u8;
-                match ranges.get_mut(id) {
-                    Some(r) => r.include(sat(b0), sat(b1)),
-                    None => *ranges_short = true,
-                }
-                for g in windows.group.div(b0)..=windows.group.div(b1) {
-                    if let Some(w) = windows.ids.get_mut(g as usize) {
-                        *w = (w.0.min(id), w.1.max(id));
-                    }
-                }
+                note_rows(
+                    windows,
+                    ranges,
+                    ranges_short,
+                    *rows,
+                    *height,
+                    id,
+                    rows_of(tri),
+                );
             }
             Pass::Band {
                 draws,
@@ -359,6 +350,78 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                     *pixels += d.draw_piece(tri.as_any(), *band, slot);
                 }
             }
+        }
+    }
+}
+
+/// Grows triangle `id`'s band range (and its window groups) by the pixel rows
+/// `r0..r1` (`r1` excluded) its screen triangle draws.
+#[inline(always)]
+fn note_rows(
+    windows: &mut Windows,
+    ranges: &mut [BandRange],
+    ranges_short: &mut bool,
+    rows: FrameDivisor,
+    height: u32,
+    id: usize,
+    (r0, r1): (i32, i32),
+) {
+    // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
+    let last_row = height as i32 - 1;
+    if r1 <= r0 || r1 <= 0 || r0 > last_row {
+        return; // no row of the frame
+    }
+    let band = |r: i32| rows.div(r.clamp(0, last_row) as u32);
+    let (b0, b1) = (band(r0), band(r1 - 1));
+    let sat = |b: u32| b.min(LAST_BAND) as u8;
+    match ranges.get_mut(id) {
+        Some(r) => r.include(sat(b0), sat(b1)),
+        None => *ranges_short = true,
+    }
+    for g in windows.group.div(b0)..=windows.group.div(b1) {
+        if let Some(w) = windows.ids.get_mut(g as usize) {
+            *w = (w.0.min(id), w.1.max(id));
+        }
+    }
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// [`push`](Self::push) for a pass that needs the rows only ([`attributes`](Self::attributes)
+    /// is `false`): the screen triangle of a draw of `N` varyings, projected without them
+    /// (the same positions, so the same rows). Anywhere else it gives up the bins for the
+    /// frame (the bands then re-project every triangle: the same pixels).
+    pub(crate) fn push_rows<const N: usize>(
+        &mut self,
+        id: usize,
+        draw: u8,
+        tri: &ScreenTriangle<0>,
+    ) {
+        if let Pass::Bin {
+            windows,
+            bins_full,
+            ranges,
+            ranges_short,
+            rows,
+            height,
+            triangles,
+            draws,
+            check,
+            ..
+        } = &mut self.pass
+        {
+            check.check(draws, draw, N);
+            *triangles += 1;
+            *bins_full = true;
+            self.attributes = false;
+            note_rows(
+                windows,
+                ranges,
+                ranges_short,
+                *rows,
+                *height,
+                id,
+                rows_of(tri),
+            );
         }
     }
 }
