@@ -17,8 +17,8 @@ use fixel::demo;
 use fixel::geometry::ClipVertex;
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
-use fixel::surface::Binned;
 use fixel::surface::DrawTargetFlush;
+use fixel::surface::{BandDraw, Binned};
 
 /// A display in RAM: what `embedded-graphics-simulator` would be, without a window.
 struct Display {
@@ -161,7 +161,10 @@ fn main() -> Result<(), Error> {
     let mut renderer = BandRenderer::new(&mut band, w, 16, h)?.with_depth(&mut depth)?;
     let mut flush = DrawTargetFlush(&mut display);
     let stats = renderer.render(
-        &draws,
+        &draws
+            .iter()
+            .map(|d| *d as &dyn BandDraw<Rgb565>)
+            .collect::<Vec<_>>(),
         &mut bins,
         Rgb565::new(2, 4, 6),
         |sink| {

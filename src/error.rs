@@ -111,6 +111,16 @@ pub enum Error {
         /// How many draws there are.
         draws: usize,
     },
+    /// A triangle was pushed to the band renderer with a varying count other than its
+    /// draw's (each draw's screen triangles carry the varyings its shader declares).
+    WrongVaryings {
+        /// The index of the draw.
+        draw: u8,
+        /// The draw's varyings per vertex.
+        expected: u8,
+        /// The triangle's.
+        actual: u8,
+    },
     /// A vector that must have a direction is zero (for example a light direction).
     ZeroVector(&'static str),
     /// A number converted into fixed point is NaN or outside the format's range.
@@ -198,6 +208,14 @@ impl fmt::Display for Error {
             Error::BadDrawIndex { index, draws } => write!(
                 f,
                 "draw index {index} is past the {draws} draws given to the renderer"
+            ),
+            Error::WrongVaryings {
+                draw,
+                expected,
+                actual,
+            } => write!(
+                f,
+                "a triangle of draw {draw} carries {actual} varyings, the draw's shader takes {expected}"
             ),
             Error::ZeroVector(what) => write!(f, "{what} is a zero vector"),
             Error::OutOfRange { what } => {

@@ -245,6 +245,87 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 //!
+//! A technique goes through the same path: the band renderer takes any list of draws,
+//! the classic [`Draw`](crate::pipeline::Draw) and open
+//! [`ShadedDraw`](crate::pipeline::ShadedDraw)s of any shader types side by side
+//! ([`BandDraw`](crate::surface::BandDraw)), each screen triangle carrying its own draw's
+//! varyings. Here the environment-mapped sphere (a mirror in a sky cube map, the reflection
+//! computed per pixel) in bands, sent to a display; its triangles are handed over by id with
+//! [`triangles_to_sink`](crate::scene::triangles_to_sink), so each band computes the
+//! vertices of only the triangles it meets:
+//!
+//! ```
+//! # use fixel::embedded_graphics_core::{draw_target::DrawTarget, geometry::{OriginDimensions, Size}, Pixel};
+//! # struct Display(u32);
+//! # impl OriginDimensions for Display { fn size(&self) -> Size { Size::new(320, 240) } }
+//! # impl DrawTarget for Display {
+//! #     type Color = fixel::Rgb565;
+//! #     type Error = core::convert::Infallible;
+//! #     fn draw_iter<I: IntoIterator<Item = Pixel<fixel::Rgb565>>>(&mut self, p: I) -> Result<(), Self::Error> {
+//! #         self.0 += p.into_iter().count() as u32;
+//! #         Ok(())
+//! #     }
+//! # }
+//! use fixel::prelude::*;
+//! use fixel::geometry::Vertex;
+//! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+//! use fixel::scene::triangles_to_sink;
+//! use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
+//! use fixel::surface::{BandRange, Binned, DrawTargetFlush};
+//! use fixel::texture::Bilinear;
+//!
+//! // The sky cube map: six 16 x 16 faces (GL order).
+//! let mut faces = [[Rgb565::BLACK; 16 * 16]; 6];
+//! for (f, face) in faces.iter_mut().enumerate() {
+//!     sky::sky_face(f, 16, face)?;
+//! }
+//! let face = |f: usize| Texture::new(&faces[f], 16, 16);
+//! let sky = CubeMap::new([face(0)?, face(1)?, face(2)?, face(3)?, face(4)?, face(5)?], Bilinear)?;
+//! let vp = Viewport::new(0, 0, 320, 240)?;
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(sky), vp, Cull::Back)?;
+//!
+//! // Triangle k of the sphere: clip positions, and the normal and view vector to reflect
+//! // (when the pass needs the attributes; the binning pass, once the bins are full, needs
+//! // the positions only).
+//! let sphere = fixel::demo::sphere();
+//! let camera = fixel::demo::camera(20);
+//! let view_proj = camera.projection.mul(&camera.view);
+//! let setup = EnvVertices::new(&fixel::demo::sphere_model(0), &view_proj, Vec3::ZERO);
+//! let triangle = |k: usize, attributes: bool| {
+//!     let v = |i: u16| {
+//!         let (p, n) = (sphere.positions[usize::from(i)], sphere.normals[usize::from(i)]);
+//!         if attributes {
+//!             setup.per_pixel(p, n)
+//!         } else {
+//!             let c = setup.mvp.transform_point(p)?;
+//!             Some(Vertex::new([c.x, c.y, c.z, c.w], [0; 6]))
+//!         }
+//!     };
+//!     let t = sphere.indices.get(k)?;
+//!     Some([v(t[0])?, v(t[1])?, v(t[2])?])
+//! };
+//!
+//! // 8 rows of colour and depth, 2 bytes per triangle: 14.6 KB.
+//! let (mut color, mut depth) = ([Rgb565::BLACK; 320 * 8], [0u16; 320 * 8]);
+//! let mut ranges = [BandRange::EMPTY; fixel::demo::SPHERE_TRIANGLES];
+//! let mut bands = BandRenderer::new(&mut color, 320, 8, 240)?.with_depth(&mut depth)?;
+//! let mut display = Display(0);
+//! let mut out = DrawTargetFlush(&mut display);
+//! let stats = bands.render_spans(
+//!     &[&draw],
+//!     &mut [] as &mut [Binned],
+//!     &mut ranges,
+//!     Rgb565::BLACK,
+//!     |sink| {
+//!         triangles_to_sink(&draw, 0, sphere.indices.len(), 0, triangle, sink);
+//!     },
+//!     |band| out.flush(band),
+//! )?;
+//! assert!(stats.pixels > 20_000 && !stats.rewalked);
+//! assert_eq!(display.0, 320 * 240);
+//! # Ok::<(), fixel::Error>(())
+//! ```
+//!
 //! `examples/firmware` has complete firmwares for Cortex-M0+, Cortex-M4F and RV32IMC, and
 //! `examples/display` the same wired to an ST7789.
 //!
@@ -255,6 +336,8 @@
 //! | a depth-testing draw into a target without depth | [`Error::NoDepthBuffer`](crate::Error::NoDepthBuffer), nothing drawn |
 //! | forgetting [`Frame::clear`](crate::surface::Frame::clear) before the first frame | nothing: depth is filled when attached |
 //! | `sink.push(i, ..)` with `i` past the draws | [`Error::BadDrawIndex`](crate::Error::BadDrawIndex) before any band is flushed |
+//! | `sink.push(i, tri)` with a triangle of another draw's varyings | [`Error::WrongVaryings`](crate::Error::WrongVaryings) before any band is flushed |
+//! | more screen triangles than bins | the same pixels, the geometry run once per band ([`BandStats::rewalked`](crate::surface::BandStats::rewalked)) |
 //! | a viewport larger than the target | the target shows the viewport's top-left part, exactly (GL's window clipping) |
 //! | a zero light direction | [`Error::ZeroVector`](crate::Error::ZeroVector) |
 //! | `40000` or NaN through [`fx`](crate::math::fx) | `Fx::MAX` or zero; [`try_fx`](crate::math::try_fx) refuses them |

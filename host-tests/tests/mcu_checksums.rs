@@ -210,6 +210,26 @@ fn mcu_frames() {
     )
     .unwrap();
     print("aa_cube", &r);
+    // One band holding the whole frame (the whole-frame firmware; its 750 KB of buffers are
+    // built on a thread with the stack for them).
+    let w = std::thread::Builder::new()
+        .stack_size(16 << 20)
+        .spawn(|| {
+            let t128 = texture(128, 128);
+            let mut buf = Box::new(aa_scene::AaCubeBuffers::<{ aa_scene::WHOLE }>::sized());
+            aa_scene::aa_cube(
+                Texture::new(&t128, 128, 128).unwrap(),
+                0,
+                &mut buf,
+                &mut || {},
+                &mut || {},
+            )
+            .unwrap()
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    print_whole("aa_cube", &r, &w);
     let (t64a, t8a) = (texture(64, 64), texture(8, 8));
     let r = alpha_scene::transparency(
         Texture::new(&t64a, 64, 64).unwrap(),
@@ -220,6 +240,16 @@ fn mcu_frames() {
     )
     .unwrap();
     print("transparency", &r);
+    let (mut wc, mut wd) = (vec![Rgb565::new(0, 0, 0); 320 * 240], vec![0u16; 320 * 240]);
+    let w = alpha_scene::transparency_in(
+        Texture::new(&t64a, 64, 64).unwrap(),
+        Texture::new(&t8a, 8, 8).unwrap(),
+        alpha_scene::AlphaTarget::Whole(&mut wc, &mut wd),
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("transparency", &r, &w);
 
     // Per-pixel lighting with bump mapping (whole-frame layout on the MCUs).
     let mut assets = Box::new(bump_scene::BumpAssets::zeroed());
@@ -331,6 +361,10 @@ fn mcu_noise_frame() {
     let shader = SolidShader::new(ramps.marble(), BandLimit::new(6));
     let r = noise::render(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
     print("noise", &r);
+    let mut color = vec![Rgb565::new(0, 0, 0); 320 * 240];
+    let mut verts = Box::new([None; noise::VERTS]);
+    let w = noise::render_whole(shader, &mut color, &mut verts, &mut || {}, &mut || {}).unwrap();
+    print_whole("noise", &r, &w);
 }
 
 /// The flame firmware (`examples/firmware/src/bin/noise_flame.rs`).
@@ -359,6 +393,9 @@ fn mcu_noise_light3d() {
     };
     let r = light3d_scene::render_light_map(shader, &mut buf, &mut || {}, &mut || {}).unwrap();
     print("noise_light3d", &r);
+    let mut whole = Box::new(light3d_scene::Light3dBuffers::<{ light3d_scene::WHOLE }>::sized());
+    let w = light3d_scene::render_light_map(shader, &mut whole, &mut || {}, &mut || {}).unwrap();
+    print_whole("noise_light3d", &r, &w);
 }
 
 // The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.

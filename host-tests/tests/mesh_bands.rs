@@ -137,7 +137,7 @@ proptest! {
         let vp = Viewport::new(0, 0, w as u32, h as u32).unwrap();
         let d0 = Draw::dynamic(modes.0, Some(t), vp).unwrap();
         let d1 = Draw::dynamic(modes.1, Some(t), vp).unwrap().with_flat_color(raw(0x07E0));
-        let draws = [&d0, &d1];
+        let draws: [&dyn fixel::surface::BandDraw<Rgb565>; 2] = [&d0, &d1];
         let (ma, mb) = (meshes.0.mesh(), meshes.1.mesh());
         // The walker and the bands draw each mesh with or without baked face planes; the
         // reference never.

@@ -313,7 +313,7 @@ proptest! {
         let mut got = vec![0u16; w * h];
         let stats = band
             .render(
-                &draws,
+                &[&d0, &d1],
                 &mut bins,
                 raw(0x1234),
                 |sink| {

@@ -46,7 +46,10 @@ fn frames<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     light: SceneLight,
     cull: Cull,
-) -> (u32, u32, u32) {
+) -> (u32, u32, u32)
+where
+    fixel::geometry::ScreenTriangle<M>: fixel::surface::Binnable,
+{
     let (t128, t64) = (texture(128, 128), texture(64, 64));
     let (c, f) = (
         Texture::new(&t128, 128, 128).unwrap(),

@@ -28,6 +28,7 @@ use core::marker::PhantomData;
 
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
+use super::SetupSlot;
 use crate::color::TargetColor;
 use crate::geometry::{
     clip_and_project_varyings, project_unclipped_varyings, Cull, ScreenTriangle, Vertex, Viewport,
@@ -223,7 +224,22 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
     where
         S: Shader<Varyings = [i32; N]>,
     {
+        self.raster_slot(tri, target, None)
+    }
+
+    /// Draws one screen triangle into a checked target, the set-up taken from, or kept in,
+    /// a band renderer's cache (`slot`).
+    #[inline]
+    pub(crate) fn raster_slot<const N: usize, C: TargetColor>(
+        &self,
+        tri: &ScreenTriangle<N>,
+        target: &mut dyn RenderTarget<Color = C>,
+        slot: SetupSlot<'_>,
+    ) -> u32
+    where
+        S: Shader<Varyings = [i32; N]>,
+    {
         let params = RasterParams::new(&self.viewport, self.projection, true);
-        raster_shaded::<S, P, D, C, N>(&self.shader, tri, |v| *v, &params, target, None)
+        raster_shaded::<S, P, D, C, N>(&self.shader, tri, |v| *v, &params, target, slot)
     }
 }

@@ -41,6 +41,7 @@ mod face_planes;
 mod light;
 mod lit_mesh;
 mod mesh;
+mod open_sink;
 mod tangent;
 mod walk;
 
@@ -53,6 +54,7 @@ pub(crate) use mesh::check_indices;
 pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
+pub use open_sink::triangles_to_sink;
 pub use tangent::{tangents, Tangent};
 pub use walk::{
     draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, MeshTransform, TriangleOut,

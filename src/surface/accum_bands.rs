@@ -13,16 +13,16 @@
 use embedded_graphics_core::pixelcolor::Rgb565;
 
 use super::band::{BandError, BandStats, Binned, TriangleSink};
+use super::band_draw::{each_variant, AnyTriangle, BandDraw, Binnable};
 use super::{Accumulator, BandRenderer, Frame, RenderTarget};
 use crate::geometry::ScreenTriangle;
 use crate::math::Fx;
-use crate::pipeline::Draw;
 use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::Error;
 
 /// `tri` moved by `d` (`2^-ATTR_SUBPIXEL_BITS` pixel units), re-split into the coverage grid
 /// and the attribute offset as the projection does (`x = floor(p / 256 + 1/2)`).
-fn shifted(tri: &ScreenTriangle, d: [i32; 2]) -> ScreenTriangle {
+fn shifted<const N: usize>(tri: &ScreenTriangle<N>, d: [i32; 2]) -> ScreenTriangle<N> {
     const K: u32 = ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS;
     let mut t = *tri;
     if d == [0, 0] {
@@ -42,6 +42,11 @@ fn shifted(tri: &ScreenTriangle, d: [i32; 2]) -> ScreenTriangle {
     t
 }
 
+/// [`shifted`] for a binned triangle of any varying count.
+fn shifted_any(tri: &AnyTriangle, d: [i32; 2]) -> AnyTriangle {
+    each_variant!(AnyTriangle, tri, t => shifted(t, d).to_any())
+}
+
 impl BandRenderer<'_, Rgb565> {
     /// Draws one frame with `offsets.len()` samples per pixel (sub-pixel offsets in I16F16
     /// pixels, for example from [`crate::scene::SamplePattern::offsets`]), averaged per band
@@ -52,7 +57,7 @@ impl BandRenderer<'_, Rgb565> {
     #[allow(clippy::too_many_arguments)]
     pub fn render_accumulated<E>(
         &mut self,
-        draws: &[&Draw<'_, Rgb565>],
+        draws: &[&dyn BandDraw<Rgb565>],
         bins: &mut [Binned],
         clear: Rgb565,
         offsets: &[[Fx; 2]],
@@ -72,15 +77,9 @@ impl BandRenderer<'_, Rgb565> {
             }));
         }
         let capacity = bins.len();
-        let mut sink = TriangleSink::binning(bins, draws.len());
+        let mut sink = TriangleSink::binning(bins, draws);
         geometry(&mut sink);
-        let (bins, len, overflow, bad) = sink.into_bins();
-        if let Some(index) = bad {
-            return Err(BandError::Input(Error::BadDrawIndex {
-                index,
-                draws: draws.len(),
-            }));
-        }
+        let (bins, len, overflow) = sink.into_bins()?;
         if overflow {
             return Err(BandError::Input(Error::CapacityExceeded { capacity }));
         }
@@ -112,7 +111,7 @@ impl BandRenderer<'_, Rgb565> {
                     if let Some(dr) = draws.get(usize::from(b.draw)) {
                         pixels = u32::saturating_add(
                             pixels,
-                            dr.screen_triangle_checked(&shifted(&b.tri, d), band),
+                            dr.draw_piece(shifted_any(&b.tri, d).as_ref(), band, None),
                         );
                     }
                 }
@@ -123,9 +122,11 @@ impl BandRenderer<'_, Rgb565> {
             if let Err(e) = acc.resolve(band.pixels_mut()) {
                 failed = Some(e);
             }
-            pixels / offsets.len() as u32
+            pixels
         })
         .map_err(BandError::Flush)?;
+        // Pixels per sample over the frame: the same whatever the band height.
+        stats.pixels /= offsets.len() as u32;
         if let Some(e) = failed {
             return Err(BandError::Input(e));
         }

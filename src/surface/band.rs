@@ -7,8 +7,14 @@
 //! binned triangles that overlap it and flushes. The per-triangle raster set-up is redone in
 //! each band a triangle touches (a few `i64` divisions), the geometry is not.
 //!
+//! A frame is any number of draws of any shader types ([`BandDraw`]: the classic
+//! [`Draw`](crate::pipeline::Draw) and every [`ShadedDraw`](crate::pipeline::ShadedDraw)),
+//! each with its own projection and depth stage, in one list; each binned triangle keeps
+//! the varyings of its draw ([`AnyTriangle`](super::AnyTriangle), 168 bytes a bin).
+//!
 //! When the bin storage is too small for the frame, the renderer falls back to running the
-//! geometry once per band (same pixels, more time) and says so in [`BandStats`].
+//! geometry once per band (same pixels, more time) and says so in [`BandStats::rewalked`];
+//! [`BandRenderer::render_spans`] keeps a 2-byte band range per triangle instead.
 //!
 //! A band is a [`Frame`] that holds rows `y0..y0 + rows`, and the raster set-up depends only
 //! on the viewport, never on the band, so a frame drawn in bands is bit-identical to the
@@ -18,17 +24,19 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
+use super::band_draw::{AnyTriangle, BandDraw, Binnable};
 use super::{Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
-use crate::pipeline::{DepthTest, Draw, KeptSetup};
+use crate::pipeline::KeptSetup;
 use crate::raster::triangle::first_row_at_or_below;
 use crate::Error;
 
-/// One binned triangle: screen vertices, the draw it belongs to, and its pixel rows.
+/// One binned triangle: screen vertices with its draw's varyings, the draw it belongs to,
+/// and its pixel rows. 168 bytes on 32-bit targets (a triangle of 8 varyings).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Binned {
-    pub(super) tri: ScreenTriangle,
+    pub(super) tri: AnyTriangle,
     pub(super) draw: u8,
     pub(super) rows: (i16, i16),
 }
@@ -39,14 +47,21 @@ fn clamp_row(r: i32) -> i16 {
 }
 
 impl Binned {
-    /// Stores `tri` of draw `draw`, with its conservative pixel-row range, in place. Vertex
-    /// by vertex on purpose: building a `Binned` and assigning it made the compiler copy the
-    /// triangle with `memmove`, 1.5 KB of flash linked for this copy alone.
-    pub(super) fn store(&mut self, draw: u8, tri: &ScreenTriangle) {
+    /// An empty bin (the same as `Binned::default()`, usable in constants).
+    pub const EMPTY: Binned = Binned {
+        tri: AnyTriangle::EMPTY,
+        draw: 0,
+        rows: (0, 0),
+    };
+
+    /// Stores `tri` of draw `draw`, with its conservative pixel-row range, in place.
+    #[inline]
+    pub(super) fn store<const N: usize>(&mut self, draw: u8, tri: &ScreenTriangle<N>)
+    where
+        ScreenTriangle<N>: Binnable,
+    {
         let (r0, r1) = rows_of(tri);
-        for (d, s) in self.tri.iter_mut().zip(tri) {
-            *d = *s;
-        }
+        self.tri = tri.to_any();
         self.draw = draw;
         self.rows = (clamp_row(r0), clamp_row(r1));
     }
@@ -59,7 +74,7 @@ impl Binned {
 
 /// Pixel rows of a screen triangle: the rasterizer draws rows `r0..r1` (`r1` excluded), the
 /// first rows whose centres are at or below its top and its bottom.
-pub(super) fn rows_of(tri: &ScreenTriangle) -> (i32, i32) {
+pub(super) fn rows_of<const N: usize>(tri: &ScreenTriangle<N>) -> (i32, i32) {
     let top = tri[0].y.min(tri[1].y).min(tri[2].y);
     let bot = tri[0].y.max(tri[1].y).max(tri[2].y);
     (first_row_at_or_below(top), first_row_at_or_below(bot))
@@ -123,76 +138,155 @@ impl<E: core::fmt::Display> core::fmt::Display for BandError<E> {
 
 impl<E: core::fmt::Debug + core::fmt::Display> core::error::Error for BandError<E> {}
 
-/// The first draw index pushed that is not in `0..draws`, kept for the error.
-pub(super) fn note_bad_draw(bad: &mut Option<u8>, draw: u8, draws: usize) {
-    if usize::from(draw) >= draws && bad.is_none() {
-        *bad = Some(draw);
+/// The binning pass's check of the triangles pushed: the first problem, kept for the error
+/// returned before any band is drawn, and the last (draw, varying count) pair found right,
+/// which most pushes repeat (one comparison instead of a call through the draw).
+#[derive(Debug)]
+pub(super) struct PushCheck {
+    bad: Option<Error>,
+    ok: u32,
+}
+
+impl PushCheck {
+    /// Nothing checked yet.
+    pub(super) const NEW: PushCheck = PushCheck {
+        bad: None,
+        ok: u32::MAX,
+    };
+
+    /// Checks a triangle of `varyings` varyings pushed for draw `draw`.
+    #[inline(always)]
+    pub(super) fn check<C: TargetColor>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        draw: u8,
+        varyings: usize,
+    ) {
+        let key = (u32::from(draw) << 8) | (varyings as u32 & 0xFF);
+        if key != self.ok {
+            self.check_draw(draws, draw, varyings, key);
+        }
+    }
+
+    #[inline(never)]
+    fn check_draw<C: TargetColor>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        draw: u8,
+        varyings: usize,
+        key: u32,
+    ) {
+        if self.bad.is_some() {
+            return;
+        }
+        match draws.get(usize::from(draw)) {
+            None => {
+                self.bad = Some(Error::BadDrawIndex {
+                    index: draw,
+                    draws: draws.len(),
+                })
+            }
+            Some(d) if d.varyings() != varyings => {
+                self.bad = Some(Error::WrongVaryings {
+                    draw,
+                    expected: d.varyings() as u8,
+                    actual: varyings as u8,
+                })
+            }
+            Some(_) => self.ok = key,
+        }
+    }
+
+    /// The first problem found.
+    pub(super) fn error(&self) -> Option<Error> {
+        self.bad
     }
 }
 
 /// Receives screen triangles from the scene's geometry pass.
-#[derive(Debug)]
-pub struct TriangleSink<'s, 'f, 'a, C: TargetColor> {
-    mode: SinkMode<'s, 'f, 'a, C>,
+pub struct TriangleSink<'s, 'f, 'd, C: TargetColor> {
+    mode: SinkMode<'s, 'f, 'd, C>,
 }
 
-#[derive(Debug)]
-enum SinkMode<'s, 'f, 'a, C: TargetColor> {
+impl<C: TargetColor> core::fmt::Debug for TriangleSink<'_, '_, '_, C> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self.mode {
+            SinkMode::Bin { .. } => "TriangleSink(binning)",
+            SinkMode::Immediate { .. } => "TriangleSink(band)",
+        })
+    }
+}
+
+enum SinkMode<'s, 'f, 'd, C: TargetColor> {
     Bin {
         bins: &'s mut [Binned],
         len: usize,
         overflow: bool,
-        draws: usize,
-        bad_draw: Option<u8>,
+        draws: &'s [&'d dyn BandDraw<C>],
+        check: PushCheck,
     },
     Immediate {
-        draws: &'s [&'s Draw<'a, C>],
+        draws: &'s [&'d dyn BandDraw<C>],
         band: &'s mut Frame<'f, C>,
         pixels: u32,
     },
 }
 
-impl<'s, C: TargetColor> TriangleSink<'s, '_, '_, C> {
-    /// A sink that bins into `bins` (for draws `0..draws`).
-    pub(super) fn binning(bins: &'s mut [Binned], draws: usize) -> Self {
+impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
+    /// A sink that bins into `bins` (for `draws`).
+    pub(super) fn binning(bins: &'s mut [Binned], draws: &'s [&'d dyn BandDraw<C>]) -> Self {
         TriangleSink {
             mode: SinkMode::Bin {
                 bins,
                 len: 0,
                 overflow: false,
                 draws,
-                bad_draw: None,
+                check: PushCheck::NEW,
             },
         }
     }
 
-    /// The bins after a binning pass: `(bins, len, overflow, first bad draw index)`.
-    pub(super) fn into_bins(self) -> (&'s mut [Binned], usize, bool, Option<u8>) {
+    /// The bins after a binning pass: `(bins, len, overflow)`, or the first bad push.
+    pub(super) fn into_bins(self) -> Result<(&'s mut [Binned], usize, bool), Error> {
         match self.mode {
             SinkMode::Bin {
                 bins,
                 len,
                 overflow,
-                bad_draw,
+                check,
                 ..
-            } => (bins, len, overflow, bad_draw),
-            SinkMode::Immediate { .. } => (&mut [], 0, true, None),
+            } => match check.error() {
+                Some(e) => Err(e),
+                None => Ok((bins, len, overflow)),
+            },
+            SinkMode::Immediate { .. } => Ok((&mut [], 0, true)),
         }
     }
 
+    /// True in the binning pass, which starts a frame (the geometry runs again, in each
+    /// band, only when the bins overflowed).
+    #[inline]
+    pub fn fresh(&self) -> bool {
+        matches!(self.mode, SinkMode::Bin { .. })
+    }
+
     /// Hands over one screen triangle of draw number `draw` (an index into the draws given
-    /// to [`BandRenderer::render`]; an index past them makes `render` return
-    /// [`Error::BadDrawIndex`] before drawing).
-    pub fn push(&mut self, draw: u8, tri: &ScreenTriangle) {
+    /// to [`BandRenderer::render`]), carrying that draw's varyings. An index past the draws
+    /// makes `render` return [`Error::BadDrawIndex`], a triangle whose varying count is not
+    /// its draw's [`Error::WrongVaryings`], both before anything is drawn.
+    pub fn push<const N: usize>(&mut self, draw: u8, tri: &ScreenTriangle<N>)
+    where
+        ScreenTriangle<N>: Binnable,
+    {
         match &mut self.mode {
             SinkMode::Bin {
                 bins,
                 len,
                 overflow,
                 draws,
-                bad_draw,
+                check,
             } => {
-                note_bad_draw(bad_draw, draw, *draws);
+                check.check(draws, draw, N);
                 if let Some(slot) = bins.get_mut(*len) {
                     slot.store(draw, tri);
                     *len += 1;
@@ -206,7 +300,7 @@ impl<'s, C: TargetColor> TriangleSink<'s, '_, '_, C> {
                 pixels,
             } => {
                 if let Some(d) = draws.get(usize::from(draw)) {
-                    *pixels = pixels.saturating_add(d.screen_triangle_checked(tri, *band));
+                    *pixels = pixels.saturating_add(d.draw_piece(tri.as_any(), *band, None));
                 }
             }
         }
@@ -300,8 +394,11 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     }
 
     /// Refuses draws that test depth when the bands have no depth buffer.
-    pub(super) fn check_draws(&self, draws: &[&Draw<'_, C>]) -> Result<(), Error> {
-        let tests_depth = draws.iter().any(|d| d.mode().depth == DepthTest::Less);
+    pub(super) fn check_draws(&self, draws: &[&dyn BandDraw<C>]) -> Result<(), Error> {
+        if draws.len() > usize::from(u8::MAX) + 1 {
+            return Err(Error::CapacityExceeded { capacity: 256 });
+        }
+        let tests_depth = draws.iter().any(|d| d.tests_depth());
         if tests_depth && self.depth.is_none() {
             return Err(Error::NoDepthBuffer);
         }
@@ -309,50 +406,34 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     }
 
     /// Draws one frame. `geometry` is called with a [`TriangleSink`] and must push every
-    /// screen triangle of the frame (usually via [`Draw::project`]), tagged with the index of
-    /// its draw in `draws`. Each band is cleared to `clear`, drawn and passed to `flush`; the
-    /// first flush error stops the frame and is returned as [`BandError::Flush`].
+    /// screen triangle of the frame (usually via [`Draw::project`](crate::pipeline::Draw::project)
+    /// or [`ShadedDraw::project`](crate::pipeline::ShadedDraw::project)), tagged with the
+    /// index of its draw in `draws`; the draws may be of any shader types. Each band is
+    /// cleared to `clear`, drawn and passed to `flush`; the first flush error stops the frame
+    /// and is returned as [`BandError::Flush`].
+    ///
+    /// When the frame's screen triangles do not fit `bins`, the geometry runs again in
+    /// every band (the same pixels, the geometry's time once per band) and
+    /// [`BandStats::rewalked`] says so: size `bins` from [`BandStats::triangles`], or use
+    /// [`render_spans`](Self::render_spans) for meshes too large to bin.
     ///
     /// Refused before any band is drawn, as [`BandError::Input`]: a draw that tests depth
-    /// when the renderer has no depth band ([`Error::NoDepthBuffer`]), and a triangle pushed
-    /// with a draw index past `draws` ([`Error::BadDrawIndex`]).
+    /// when the renderer has no depth band ([`Error::NoDepthBuffer`]), more than 256 draws
+    /// ([`Error::CapacityExceeded`]), a triangle pushed with a draw index past `draws`
+    /// ([`Error::BadDrawIndex`]) or with a varying count other than its draw's
+    /// ([`Error::WrongVaryings`]).
     pub fn render<E>(
         &mut self,
-        draws: &[&Draw<'_, C>],
+        draws: &[&dyn BandDraw<C>],
         bins: &mut [Binned],
         clear: C,
         mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
         mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
     ) -> Result<BandStats, BandError<E>> {
         self.check_draws(draws)?;
-        let mut sink = TriangleSink {
-            mode: SinkMode::Bin {
-                bins,
-                len: 0,
-                overflow: false,
-                draws: draws.len(),
-                bad_draw: None,
-            },
-        };
+        let mut sink = TriangleSink::binning(bins, draws);
         geometry(&mut sink);
-        let (bins, len, overflow) = match sink.mode {
-            SinkMode::Bin {
-                bad_draw: Some(index),
-                ..
-            } => {
-                return Err(BandError::Input(Error::BadDrawIndex {
-                    index,
-                    draws: draws.len(),
-                }))
-            }
-            SinkMode::Bin {
-                bins,
-                len,
-                overflow,
-                ..
-            } => (bins, len, overflow),
-            SinkMode::Immediate { .. } => (&mut [][..], 0, true),
-        };
+        let (bins, len, overflow) = sink.into_bins()?;
         let mut stats = BandStats {
             rewalked: overflow,
             triangles: len as u32,
@@ -381,7 +462,7 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
                     }
                     if let Some(d) = draws.get(usize::from(b.draw)) {
                         pixels =
-                            u32::saturating_add(pixels, d.screen_triangle_checked(&b.tri, band));
+                            u32::saturating_add(pixels, d.draw_piece(b.tri.as_ref(), band, None));
                     }
                 }
                 pixels

@@ -14,6 +14,7 @@
 
 pub(crate) mod accum_bands;
 pub(crate) mod band;
+mod band_draw;
 pub(crate) mod depth_map;
 mod fill;
 pub(crate) mod frame;
@@ -23,6 +24,7 @@ pub(crate) mod smooth;
 pub(crate) mod spans;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
+pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
 pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use resample::{resolve_box, Accumulator};

@@ -1,7 +1,7 @@
 //! Band rendering for meshes of any size: two bytes per triangle instead of a screen
 //! triangle per bin.
 //!
-//! [`BandRenderer::render`] keeps every screen triangle of the frame (about 100 bytes each);
+//! [`BandRenderer::render`] keeps every screen triangle of the frame (168 bytes each);
 //! a mesh of a thousand visible triangles does not fit a small part's RAM, and the fallback
 //! runs the whole geometry once per band. [`BandRenderer::render_spans`] keeps, per mesh
 //! triangle, only the range of bands it touches ([`BandRange`], 2 bytes), found by one
@@ -24,7 +24,7 @@
 //!    every band ([`BandStats::rewalked`]); with empty `ranges` this is the plain per-band
 //!    re-walk.
 //!
-//! Storage (bytes; 32-bit targets): a screen triangle in `bins` 104, a [`BandRange`] 2, a
+//! Storage (bytes; 32-bit targets): a screen triangle in `bins` 168, a [`BandRange`] 2, a
 //! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, a kept set-up
 //! ([`KeptSetup`](crate::pipeline::KeptSetup), optional, see
 //! [`BandRenderer::with_setup_cache`]) 88, plus 512 on the stack for the per-band id
@@ -32,23 +32,22 @@
 //!
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
 //! |---|---:|---|---:|---:|
-//! | cube | 12 (6 on screen) | bins (16) | 1,664 + cache 32 x 32 = 1,024 + set-ups 16 x 88 = 1,408 | 19.2 KB |
+//! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 88 = 1,408 | 19.2 KB |
 //! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 36 x 88 = 3,168 | 23.4 KB |
 //! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
-//! | any | n | bins | 104 per screen triangle | |
+//! | any | n | bins | 168 per screen triangle | |
 //!
 //! Bit-exactness: the band pass gets the very same screen triangles as a whole-frame draw
 //! (the geometry is deterministic), in the same order (triangle ids ascending within each
 //! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
 //! viewport only.
 
-use super::band::{note_bad_draw, rows_of, BandError, BandStats, Binned};
+use super::band::{rows_of, BandError, BandStats, Binned, PushCheck};
+use super::band_draw::{BandDraw, Binnable};
 use super::setup_queue::{self, QueueState, SetupQueue};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
-use crate::pipeline::Draw;
-use crate::Error;
 
 /// The bands one triangle touches: band indices `first..end`, saturated at 254 (a
 /// triangle below band 254 is then looked at in every band from 254 on: conservative).
@@ -105,15 +104,22 @@ impl BandRange {
 
 /// Receives the screen triangles of a frame's geometry, tagged with a triangle id (the
 /// triangle's index in its mesh plus the mesh's first id) and the index of their draw.
-#[derive(Debug)]
-pub struct MeshSink<'s, 'f, 'a, C: TargetColor> {
-    pass: Pass<'s, 'f, 'a, C>,
+pub struct MeshSink<'s, 'f, 'd, C: TargetColor> {
+    pass: Pass<'s, 'f, 'd, C>,
     /// What [`MeshSink::attributes`] says (false once the binning pass's bins are full).
     attributes: bool,
 }
 
-#[derive(Debug)]
-enum Pass<'s, 'f, 'a, C: TargetColor> {
+impl<C: TargetColor> core::fmt::Debug for MeshSink<'_, '_, '_, C> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self.pass {
+            Pass::Bin { .. } => "MeshSink(binning)",
+            Pass::Band { .. } => "MeshSink(band)",
+        })
+    }
+}
+
+enum Pass<'s, 'f, 'd, C: TargetColor> {
     /// The binning pass: screen triangles to `bins` while they fit, band ranges always.
     Bin {
         windows: &'s mut Windows,
@@ -125,13 +131,13 @@ enum Pass<'s, 'f, 'a, C: TargetColor> {
         rows: FrameDivisor,
         height: u32,
         triangles: u32,
-        draws: usize,
-        bad_draw: Option<u8>,
+        draws: &'s [&'d dyn BandDraw<C>],
+        check: PushCheck,
     },
     /// One band: draw what covers it.
     Band {
         window: (usize, usize),
-        draws: &'s [&'s Draw<'a, C>],
+        draws: &'s [&'d dyn BandDraw<C>],
         band: &'s mut Frame<'f, C>,
         ranges: &'s [BandRange],
         /// Band index, saturated at 254 as the ranges are.
@@ -265,9 +271,15 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
         self.attributes
     }
 
-    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]` (an index
-    /// past the draws makes `render_spans` return [`Error::BadDrawIndex`] before drawing).
-    pub fn push(&mut self, id: usize, draw: u8, tri: &ScreenTriangle) {
+    /// Hands over one screen triangle of triangle `id`, drawn by `draws[draw]` and carrying
+    /// that draw's varyings (an index past the draws makes `render_spans` return
+    /// [`Error::BadDrawIndex`](crate::Error::BadDrawIndex), another varying count
+    /// [`Error::WrongVaryings`](crate::Error::WrongVaryings), both before
+    /// drawing).
+    pub fn push<const N: usize>(&mut self, id: usize, draw: u8, tri: &ScreenTriangle<N>)
+    where
+        ScreenTriangle<N>: Binnable,
+    {
         match &mut self.pass {
             Pass::Bin {
                 windows,
@@ -280,9 +292,9 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 height,
                 triangles,
                 draws,
-                bad_draw,
+                check,
             } => {
-                note_bad_draw(bad_draw, draw, *draws);
+                check.check(draws, draw, N);
                 *triangles += 1;
                 if !*bins_full {
                     match bins.get_mut(*len) {
@@ -296,24 +308,15 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                         }
                     }
                 }
-                // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
-                let (r0, r1) = rows_of(tri);
-                let last_row = *height as i32 - 1;
-                if r1 <= r0 || r1 <= 0 || r0 > last_row {
-                    return; // no row of the frame
-                }
-                let band = |r: i32| rows.div(r.clamp(0, last_row) as u32);
-                let (b0, b1) = (band(r0), band(r1 - 1));
-                let sat = |b: u32| b.min(LAST_BAND) as u8;
-                match ranges.get_mut(id) {
-                    Some(r) => r.include(sat(b0), sat(b1)),
-                    None => *ranges_short = true,
-                }
-                for g in windows.group.div(b0)..=windows.group.div(b1) {
-                    if let Some(w) = windows.ids.get_mut(g as usize) {
-                        *w = (w.0.min(id), w.1.max(id));
-                    }
-                }
+                note_rows(
+                    windows,
+                    ranges,
+                    ranges_short,
+                    *rows,
+                    *height,
+                    id,
+                    rows_of(tri),
+                );
             }
             Pass::Band {
                 draws,
@@ -344,9 +347,81 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                         Some(key) => setups.slot(key, draw, r1 > end),
                         None => None,
                     };
-                    *pixels = pixels.saturating_add(d.screen_triangle_slot(tri, *band, slot));
+                    *pixels = pixels.saturating_add(d.draw_piece(tri.as_any(), *band, slot));
                 }
             }
+        }
+    }
+}
+
+/// Grows triangle `id`'s band range (and its window groups) by the pixel rows
+/// `r0..r1` (`r1` excluded) its screen triangle draws.
+#[inline(always)]
+fn note_rows(
+    windows: &mut Windows,
+    ranges: &mut [BandRange],
+    ranges_short: &mut bool,
+    rows: FrameDivisor,
+    height: u32,
+    id: usize,
+    (r0, r1): (i32, i32),
+) {
+    // The rasterizer draws rows r0..r1 (r1 excluded) and no other.
+    let last_row = height as i32 - 1;
+    if r1 <= r0 || r1 <= 0 || r0 > last_row {
+        return; // no row of the frame
+    }
+    let band = |r: i32| rows.div(r.clamp(0, last_row) as u32);
+    let (b0, b1) = (band(r0), band(r1 - 1));
+    let sat = |b: u32| b.min(LAST_BAND) as u8;
+    match ranges.get_mut(id) {
+        Some(r) => r.include(sat(b0), sat(b1)),
+        None => *ranges_short = true,
+    }
+    for g in windows.group.div(b0)..=windows.group.div(b1) {
+        if let Some(w) = windows.ids.get_mut(g as usize) {
+            *w = (w.0.min(id), w.1.max(id));
+        }
+    }
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// [`push`](Self::push) for a pass that needs the rows only ([`attributes`](Self::attributes)
+    /// is `false`): the screen triangle of a draw of `N` varyings, projected without them
+    /// (the same positions, so the same rows). Anywhere else it gives up the bins for the
+    /// frame (the bands then re-project every triangle: the same pixels).
+    pub(crate) fn push_rows<const N: usize>(
+        &mut self,
+        id: usize,
+        draw: u8,
+        tri: &ScreenTriangle<0>,
+    ) {
+        if let Pass::Bin {
+            windows,
+            bins_full,
+            ranges,
+            ranges_short,
+            rows,
+            height,
+            triangles,
+            draws,
+            check,
+            ..
+        } = &mut self.pass
+        {
+            check.check(draws, draw, N);
+            *triangles += 1;
+            *bins_full = true;
+            self.attributes = false;
+            note_rows(
+                windows,
+                ranges,
+                ranges_short,
+                *rows,
+                *height,
+                id,
+                rows_of(tri),
+            );
         }
     }
 }
@@ -362,7 +437,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
     /// errors are refused before any band is drawn, as for [`render`](Self::render).
     pub fn render_spans<E>(
         &mut self,
-        draws: &[&Draw<'_, C>],
+        draws: &[&dyn BandDraw<C>],
         bins: &mut [Binned],
         ranges: &mut [BandRange],
         clear: C,
@@ -387,8 +462,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                 rows: FrameDivisor::new(rows),
                 height: self.height,
                 triangles: 0,
-                draws: draws.len(),
-                bad_draw: None,
+                draws,
+                check: PushCheck::NEW,
             },
             attributes: true,
         };
@@ -401,17 +476,14 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             ranges,
             ranges_short,
             triangles,
-            bad_draw,
+            check,
             ..
         } = sink.pass
         else {
             return Ok(BandStats::default());
         };
-        if let Some(index) = bad_draw {
-            return Err(BandError::Input(Error::BadDrawIndex {
-                index,
-                draws: draws.len(),
-            }));
+        if let Some(e) = check.error() {
+            return Err(BandError::Input(e));
         }
         let mut stats = BandStats {
             triangles,
@@ -467,7 +539,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                     if let Some(d) = draws.get(usize::from(b.draw)) {
                         let slot = setup_queue::key(i, 0)
                             .and_then(|key| kept.slot(key, b.draw, i32::from(b.rows.1) > r1));
-                        pixels += d.screen_triangle_slot(&b.tri, band, slot);
+                        pixels += d.draw_piece(b.tri.as_ref(), band, slot);
                     }
                 }
                 queue = kept.state();

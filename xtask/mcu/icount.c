@@ -9,8 +9,9 @@
  *                            (so the histogram sums to region_sum exactly)
  *   lo=0xADDR,hi=0xADDR      restrict the histogram to PCs in [lo,hi) (default: all)
  *   mark=0xADDR              at each hit of this address print the running region sum
- *                            and pair count to stderr (`icount: mark region_sum=S pairs=P`):
- *                            multi-mode firmwares take per-mode counts as differences
+ *                            and pair count to stderr (`icount: mark region_sum=S pairs=P`),
+ *                            (the open region so far included): multi-mode firmwares
+ *                            take per-mode counts as differences, scenes their geometry
  * Report goes to stderr at exit: total, pairs, region sum, first pair, min/max pair.
  *
  * (From ../shared/mcu/MEASURE.md, histogram restricted to the regions for fixel.)
@@ -70,8 +71,10 @@ static void on_end(unsigned int vcpu, void *u)
 static void on_mark(unsigned int vcpu, void *u)
 {
     (void)vcpu; (void)u;
+    /* Inside an open region, the region so far counts too (a mark within a frame). */
+    uint64_t running = sum + (open_pair ? total - snap : 0);
     fprintf(stderr, "icount: mark region_sum=%" PRIu64 " pairs=%" PRIu64 " first_pair=%" PRIu64 "\n",
-            sum, pairs, first);
+            running, pairs, first);
 }
 
 /* Histogram entry += 1 when inside a marker region. A callback (not an inline add) because

@@ -19,36 +19,47 @@ use fixel::Error;
 pub const ROWS: u32 = 4;
 const N: usize = (W * ROWS) as usize;
 
-/// The band buffers.
-pub struct AaCubeBuffers {
-    color: [Rgb565; N],
-    depth: [u16; N],
-    sums: [[u16; 3]; N],
+/// Pixels of the whole frame (one band of 240 rows: the whole-frame firmware).
+pub const WHOLE: usize = (W * H) as usize;
+
+/// The band buffers, `P / 320` rows (4 by default; [`WHOLE`] for one band holding the frame).
+pub struct AaCubeBuffers<const P: usize = N> {
+    color: [Rgb565; P],
+    depth: [u16; P],
+    sums: [[u16; 3]; P],
 }
 
 impl AaCubeBuffers {
-    /// Zeroed.
+    /// Zeroed 4-row bands.
     pub const fn new() -> Self {
+        Self::sized()
+    }
+}
+
+impl<const P: usize> AaCubeBuffers<P> {
+    /// Zeroed.
+    pub const fn sized() -> Self {
         AaCubeBuffers {
-            color: [Rgb565::new(0, 0, 0); N],
-            depth: [0; N],
-            sums: [[0; 3]; N],
+            color: [Rgb565::new(0, 0, 0); P],
+            depth: [0; P],
+            sums: [[0; 3]; P],
         }
     }
 }
 
 /// The cube, frame `i`, rotated grid of 4 accumulated in bands; checksum of the frame.
-pub fn aa_cube(
+pub fn aa_cube<const P: usize>(
     texture: Texture<'_>,
     i: u32,
-    buf: &mut AaCubeBuffers,
+    buf: &mut AaCubeBuffers<P>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let mut offsets = [[Fx::ZERO; 2]; 4];
     let n = SamplePattern::RotatedGrid4.offsets(&mut offsets)?;
     let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let rows = (P as u32 / W).min(H);
+    let mut bands = BandRenderer::new(&mut buf.color, W, rows, H)?.with_depth(&mut buf.depth)?;
     let (m, model, camera, light) = (
         demo::cube(),
         demo::cube_model(i),
@@ -68,7 +79,8 @@ pub fn aa_cube(
             |sink| {
                 mesh_triangles(&mesh, &model, &camera, Some(&light), |t| {
                     draw.project(t, &mut |s| sink.push(0, s));
-                })
+                });
+                crate::scenes::geometry_done();
             },
             |band| {
                 pause();

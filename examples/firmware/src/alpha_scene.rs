@@ -1,6 +1,8 @@
 //! The `transparency` scene (`cargo xtask mcu`): the benchmark floor drawn opaque, a fence
 //! quad cut out by alpha test and a window quad blended over it with an alpha plane, in
-//! 320 x 8 bands (the four triangles of the quads and the floor's two drawn in each band).
+//! 320 x 8 bands: three draws of three shader types (the classic floor, `AlphaTest`,
+//! `AlphaBlend`) in one frame of fixel's band renderer, projected and binned once, drawn in
+//! each band in the order given (the window, blended, last).
 //! Included by the firmware binary and by the host's checksum test (outside the firmware
 //! library, so the other scenes' code is not touched).
 
@@ -12,7 +14,7 @@ use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Draw, Exact, ShadedDraw};
 use fixel::scene::mesh_triangles;
 use fixel::shading::alpha::{AlphaBlend, AlphaSource, AlphaTest, BlendMode};
-use fixel::surface::{BandStats, Frame};
+use fixel::surface::{BandDraw, BandRenderer, Binned};
 use fixel::texture::{Bilinear, Nearest, Texture};
 use fixel::Error;
 
@@ -21,10 +23,15 @@ const N: usize = (W * ROWS) as usize;
 /// Side of the quads' alpha planes (the 8 x 8 texture's).
 pub const A: u32 = 8;
 
-/// Band buffers: colour and depth, 10 KB.
+/// Bins: the floor's screen triangles (clipped by the near plane into a few pieces) and
+/// the quads' four.
+pub const BINS: usize = 16;
+
+/// Band buffers: colour and depth, 10 KB, and the bins (2.7 KB).
 pub struct AlphaBuffers {
     color: [Rgb565; N],
     depth: [u16; N],
+    bins: [Binned; BINS],
 }
 
 impl AlphaBuffers {
@@ -33,6 +40,7 @@ impl AlphaBuffers {
         AlphaBuffers {
             color: [Rgb565::new(0, 0, 0); N],
             depth: [0; N],
+            bins: [Binned::EMPTY; BINS],
         }
     }
 }
@@ -79,11 +87,30 @@ pub fn quad(model: &Mat4) -> [[Vertex<3>; 3]; 2] {
     [[a, b, c], [a, c, d]]
 }
 
+/// Where the frame is drawn.
+pub enum AlphaTarget<'b> {
+    /// In bands through the band renderer.
+    Bands(&'b mut AlphaBuffers),
+    /// Into one whole 320 x 240 frame (colour, depth), draw by draw.
+    Whole(&'b mut [Rgb565], &'b mut [u16]),
+}
+
 /// The frame: floor (`floor_tex`, `T(64, 64)`), fence and window (`quad_tex`, `T(8, 8)`).
 pub fn transparency(
     floor_tex: Texture<'_>,
     quad_tex: Texture<'_>,
     buf: &mut AlphaBuffers,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    transparency_in(floor_tex, quad_tex, AlphaTarget::Bands(buf), pause, resume)
+}
+
+/// [`transparency`] into `target` (the whole frame has the same checksum).
+pub fn transparency_in(
+    floor_tex: Texture<'_>,
+    quad_tex: Texture<'_>,
+    target: AlphaTarget<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
@@ -122,24 +149,55 @@ pub fn transparency(
     );
     let window_tris = quad(&Mat4::translation(Vec3::from_num(1, 0, -6)));
     let mut sum = Fnv1a::default();
-    let mut stats = BandStats::default();
-    let mut y0 = 0;
-    while y0 < H {
-        let rows = ROWS.min(H - y0);
-        let n = (W * rows) as usize;
-        let mut band = Frame::new(&mut buf.color[..n], W, rows)?
-            .with_depth(&mut buf.depth[..n])?
-            .at_row(y0);
-        band.clear(Rgb565::new(14, 30, 22));
-        stats.pixels += floor_draw.clip_triangles(&floor[..k.min(2)], &mut band)?;
-        stats.pixels += fence.clip_triangles(&fence_tris, &mut band)?;
-        stats.pixels += window.clip_triangles(&window_tris, &mut band)?;
-        pause();
-        sum.pixels(band.pixels());
-        resume();
-        stats.bands += 1;
-        y0 += rows;
-    }
+    let clear = Rgb565::new(14, 30, 22);
+    let buf = match target {
+        AlphaTarget::Bands(b) => b,
+        AlphaTarget::Whole(color, depth) => {
+            let mut frame = fixel::surface::Frame::new(color, W, H)?.with_depth(depth)?;
+            frame.clear(clear);
+            let pixels = floor_draw.clip_triangles(&floor[..k.min(2)], &mut frame)?
+                + fence.clip_triangles(&fence_tris, &mut frame)?
+                + window.clip_triangles(&window_tris, &mut frame)?;
+            pause();
+            sum.pixels(frame.pixels());
+            resume();
+            return Ok(FrameResult {
+                checksum: sum.0,
+                stats: fixel::surface::BandStats {
+                    bands: 1,
+                    pixels,
+                    ..fixel::surface::BandStats::default()
+                },
+            });
+        }
+    };
+    let draws: [&dyn BandDraw<Rgb565>; 3] = [&floor_draw, &fence, &window];
+    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?.with_depth(&mut buf.depth)?;
+    let stats = bands.render(
+        &draws,
+        &mut buf.bins,
+        clear,
+        |sink| {
+            for t in &floor[..k.min(2)] {
+                floor_draw.project(t, &mut |s| sink.push(0, s));
+            }
+            for t in &fence_tris {
+                fence.project(t, &mut |s| sink.push(1, s));
+            }
+            for t in &window_tris {
+                window.project(t, &mut |s| sink.push(2, s));
+            }
+            if sink.fresh() {
+                crate::scenes::geometry_done();
+            }
+        },
+        |band| {
+            pause();
+            sum.pixels(band.pixels());
+            resume();
+            Ok::<(), core::convert::Infallible>(())
+        },
+    )?;
     Ok(FrameResult {
         checksum: sum.0,
         stats,

@@ -5,18 +5,20 @@
 //! test `host-tests/tests/env_mcu/mod.rs` (included with `#[path]`), so both checksums come
 //! from the same code.
 //!
-//! One pass projects every triangle once and keeps the band range it covers (2 B per
-//! triangle) and, per band, the run of triangle indices that meets it; each 320 x 8 band
-//! then scans its run and re-projects only the triangles that meet it.
+//! Drawn through fixel's band renderer (`BandRenderer::render_spans`): one binning pass
+//! projects every triangle once and keeps the band range it covers (2 B per triangle); each
+//! 320 x 8 band then re-projects only the triangles that meet it
+//! (`fixel::scene::triangles_to_sink`).
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Vec3;
 use fixel::pipeline::{DepthLess, ProjectionStage, ShadedDraw};
+use fixel::scene::triangles_to_sink;
 use fixel::shading::env::EnvVertices;
 use fixel::shading::Shader;
-use fixel::surface::{BandStats, Frame};
+use fixel::surface::{BandRange, BandRenderer, Binnable, Binned};
 use fixel::texture::{Bilinear, Texture};
 use fixel::Error;
 
@@ -30,18 +32,14 @@ pub const ENV_TRIS: usize = demo::SPHERE_TRIANGLES;
 /// The cube map the scene reads.
 pub type EnvCube<'a> = fixel::shading::env::CubeMap<'a, Bilinear>;
 
-/// Band buffers, one band range per triangle (first and last band; `first > last` when
-/// the triangle is culled or off screen) and one index run per band: 10 KiB + 4.5 KB.
+/// Band buffers and one band range per triangle (2 B each): 10 KiB + 4.4 KB.
 pub struct EnvBuffers {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
     /// Depth band.
     pub depth: [u16; BAND_PIXELS],
     /// Band range per triangle.
-    pub ranges: [[u8; 2]; ENV_TRIS],
-    /// Per band, the first and one past the last triangle index that meets it (a mesh
-    /// stored row by row, like the UV sphere, meets each band with a short index run).
-    pub runs: [[u16; 2]; (H / ROWS) as usize],
+    pub ranges: [BandRange; ENV_TRIS],
 }
 
 impl EnvBuffers {
@@ -50,8 +48,7 @@ impl EnvBuffers {
         EnvBuffers {
             color: [Rgb565::new(0, 0, 0); BAND_PIXELS],
             depth: [0; BAND_PIXELS],
-            ranges: [[1, 0]; ENV_TRIS],
-            runs: [[0, 0]; (H / ROWS) as usize],
+            ranges: [BandRange::EMPTY; ENV_TRIS],
         }
     }
 }
@@ -88,19 +85,89 @@ pub fn env_frame<S, P, const N: usize>(
 where
     S: Shader<Varyings = [i32; N]>,
     P: ProjectionStage,
+    fixel::geometry::ScreenTriangle<N>: Binnable,
 {
     let v = |s: &EnvVertices, i: usize| vertex(s, *positions.get(i)?, *normals.get(i)?);
     env_frame_indexed::<S, P, N>(buf, shader, positions, indices, v, pause, resume)
 }
 
 /// [`env_frame`] with vertices made from their index (for varyings beyond `n` and `v`,
-/// such as texture coordinates): `vertex(setup, i)`.
+/// such as texture coordinates): `vertex(setup, i)`, at `positions[i]` (the binning pass
+/// projects the positions alone).
 pub fn env_frame_indexed<S, P, const N: usize>(
     buf: &mut EnvBuffers,
     shader: S,
     positions: &[Vec3],
     indices: &[[u16; 3]],
     vertex: impl Fn(&EnvVertices, usize) -> Option<Vertex<N>>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error>
+where
+    S: Shader<Varyings = [i32; N]>,
+    P: ProjectionStage,
+    fixel::geometry::ScreenTriangle<N>: Binnable,
+{
+    let cam = demo::camera(20);
+    let setup = EnvVertices::new(
+        &demo::sphere_model(0),
+        &cam.projection.mul(&cam.view),
+        Vec3::ZERO,
+    );
+    let draw = ShadedDraw::<S, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    // The binning pass needs the rows only: clip positions, no varyings (the vertex stage
+    // of the reflection runs in the bands a triangle meets).
+    let tri = |k: usize, attributes: bool| -> Option<[Vertex<N>; 3]> {
+        let t = indices.get(k)?;
+        let v = |i: u16| {
+            if attributes {
+                vertex(&setup, usize::from(i))
+            } else {
+                let c = setup.mvp.transform_point(*positions.get(usize::from(i))?)?;
+                Some(Vertex::new([c.x, c.y, c.z, c.w], [0; N]))
+            }
+        };
+        Some([v(t[0])?, v(t[1])?, v(t[2])?])
+    };
+    let mut hash = Fnv1a::default();
+    let mut bands =
+        BandRenderer::new(&mut buf.color[..], W, ROWS, H)?.with_depth(&mut buf.depth[..])?;
+    let stats = bands.render_spans(
+        &[&draw],
+        &mut [] as &mut [Binned],
+        &mut buf.ranges,
+        Rgb565::new(0, 0, 0),
+        |sink| {
+            triangles_to_sink(&draw, 0, indices.len(), 0, &tri, sink);
+            if sink.fresh() {
+                crate::scenes::geometry_done();
+            }
+        },
+        |band| {
+            pause();
+            hash.pixels(band.pixels());
+            resume();
+            Ok::<(), core::convert::Infallible>(())
+        },
+    )?;
+    Ok(FrameResult {
+        checksum: hash.0,
+        stats,
+    })
+}
+
+/// [`env_frame`] drawn into one whole frame (`color`, `depth`: 320 x 240) with the same
+/// draw, triangle by triangle: the figure the banded frame is compared with (the same
+/// checksum: the hash runs over the frame's pixels in the same order).
+#[allow(clippy::too_many_arguments)]
+pub fn env_frame_whole<S, P, const N: usize>(
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    shader: S,
+    positions: &[Vec3],
+    normals: &[Vec3],
+    indices: &[[u16; 3]],
+    vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error>
@@ -115,77 +182,29 @@ where
         Vec3::ZERO,
     );
     let draw = ShadedDraw::<S, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    let tri = |t: &[u16; 3]| -> Option<[Vertex<N>; 3]> {
-        let v = |i: u16| vertex(&setup, usize::from(i));
-        Some([v(t[0])?, v(t[1])?, v(t[2])?])
-    };
-    let bands = H / ROWS;
-    let mut stats = BandStats {
-        bands,
-        reprojected: true,
-        ..BandStats::default()
-    };
-    // Pass 1: the band range of every triangle (rows in 1/16 pixel, 4 fraction bits), from
-    // clip positions alone (no varyings).
-    let clip = |t: &[u16; 3]| -> Option<[Vertex<0>; 3]> {
+    let mut frame = fixel::surface::Frame::new(color, W, H)?.with_depth(depth)?;
+    frame.clear(Rgb565::new(0, 0, 0));
+    let mut pixels = 0u32;
+    for t in indices {
         let v = |i: u16| {
-            let c = setup.mvp.transform_point(*positions.get(usize::from(i))?)?;
-            Some(Vertex::new([c.x, c.y, c.z, c.w], []))
+            let i = usize::from(i);
+            vertex(&setup, *positions.get(i)?, *normals.get(i)?)
         };
-        Some([v(t[0])?, v(t[1])?, v(t[2])?])
-    };
-    buf.runs = [[u16::MAX, 0]; (H / ROWS) as usize];
-    for (k, (t, range)) in indices.iter().zip(buf.ranges.iter_mut()).enumerate() {
-        *range = [1, 0];
-        let Some(v) = clip(t) else { continue };
-        let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-        draw.project(&v, &mut |s| {
-            for p in s {
-                lo = lo.min(p.y);
-                hi = hi.max(p.y);
-            }
-        });
-        if lo <= hi {
-            stats.triangles += 1;
-            let band = |y: i32| ((y >> 4).clamp(0, H as i32 - 1) as u32 / ROWS) as u8;
-            *range = [band(lo), band(hi + 15)];
-            let k = k as u16;
-            for run in buf.runs[usize::from(range[0])..=usize::from(range[1])].iter_mut() {
-                run[0] = run[0].min(k);
-                run[1] = run[1].max(k + 1);
-            }
+        if let (Some(a), Some(b), Some(c)) = (v(t[0]), v(t[1]), v(t[2])) {
+            pixels = pixels.wrapping_add(draw.clip_triangles(&[[a, b, c]], &mut frame)?);
         }
     }
+    pause();
     let mut hash = Fnv1a::default();
-    for b in 0..bands {
-        let mut frame = Frame::new(&mut buf.color[..], W, ROWS)?
-            .at_row(b * ROWS)
-            .with_depth(&mut buf.depth[..])?;
-        frame.clear(Rgb565::new(0, 0, 0));
-        let b8 = b as u8;
-        let [first, end] = buf.runs[b as usize];
-        let (first, end) = (usize::from(first), usize::from(end).max(usize::from(first)));
-        let tris = indices.get(first..end).unwrap_or(&[]);
-        let ranges = buf.ranges.get(first..end).unwrap_or(&[]);
-        for (t, r) in tris.iter().zip(ranges.iter()) {
-            if r[0] > b8 || r[1] < b8 {
-                continue;
-            }
-            let Some(v) = tri(t) else { continue };
-            let mut err = Ok(());
-            draw.project(&v, &mut |s| match draw.screen_triangle(s, &mut frame) {
-                Ok(n) => stats.pixels = stats.pixels.wrapping_add(n),
-                Err(e) => err = Err(e),
-            });
-            err?;
-        }
-        pause();
-        hash.pixels(frame.pixels());
-        resume();
-    }
+    hash.pixels(frame.pixels());
+    resume();
     Ok(FrameResult {
         checksum: hash.0,
-        stats,
+        stats: fixel::surface::BandStats {
+            bands: 1,
+            pixels,
+            ..fixel::surface::BandStats::default()
+        },
     })
 }
 

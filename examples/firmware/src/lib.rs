@@ -100,6 +100,16 @@ pub extern "C" fn bench_mark() {
     unsafe { core::ptr::write_volatile(core::ptr::addr_of_mut!(MARK), 3) }
 }
 
+/// End of a banded frame's binning pass (geometry: walk, transform, clip, project, bin):
+/// `cargo xtask mcu` has the QEMU plugin print its running region sum here, so the share of
+/// a scene's count spent on geometry is the sum at the first hit over the whole count.
+#[inline(never)]
+#[no_mangle]
+pub extern "C" fn bench_geometry() {
+    // SAFETY: as above.
+    unsafe { core::ptr::write_volatile(core::ptr::addr_of_mut!(MARK), 4) }
+}
+
 extern "C" {
     /// End of .bss (+ .uninit): the lowest address the stack may grow to.
     static __sheap: u32;

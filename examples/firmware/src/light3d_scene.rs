@@ -4,8 +4,10 @@
 //! instead of a per-vertex light. Band-limited wood (at most 6 octaves, footprint per span),
 //! 320x240 in bands of 8 rows, no depth buffer (one convex object, back faces culled).
 //!
-//! RAM: the band (5 KB) and the cube's 12 clip-space triangles, computed once (1.1 KB, plus
-//! 0.9 KB for the light-map draw's copy without the intensity). Kept out of the firmware
+//! RAM: the band (5 KB), the cube's 12 clip-space triangles, computed once (1.1 KB, plus
+//! 0.9 KB for the light-map draw's copy without the intensity), and 16 bins of fixel's band
+//! renderer (2.7 KB): the triangles are projected once and binned, each band draws the bins
+//! that meet it. Kept out of the firmware
 //! library (the bins include it by path) so the other firmwares' code does not move. Shared
 //! with the host test `host-tests/tests/mcu_checksums.rs` and the report
 //! (`host-tests/src/bin/noise_report/`), which render the same frame.
@@ -13,6 +15,7 @@
 use crate::scenes::{Fnv1a, FrameResult, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
+use fixel::geometry::ScreenTriangle;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
@@ -20,7 +23,7 @@ use fixel::scene::DirectionalLight;
 use fixel::shading::noise::presets::SHOWCASE_SCALE;
 use fixel::shading::noise::{LightMap3d, SolidMesh};
 use fixel::shading::Shader;
-use fixel::surface::{BandStats, Frame};
+use fixel::surface::{BandRenderer, Binnable, Binned};
 use fixel::Error;
 
 #[path = "../../common/light3d_cube.rs"]
@@ -33,8 +36,8 @@ pub use light3d_cube::{
 
 /// Cube triangles.
 pub const TRIS: usize = 12;
-/// Bands per frame.
-pub const BANDS: usize = (H / ROWS) as usize;
+/// Bins: the cube's screen triangles (at most 6 face the camera; room for clipped pieces).
+pub const BINS: usize = 16;
 
 /// The baked light map of the cube (`light3d_cube.rs`).
 ///
@@ -56,25 +59,38 @@ pub fn model() -> Mat4 {
         * (Mat4::rotation_x(Angle::from_turns(5000)) * Mat4::rotation_y(Angle::from_turns(7000)))
 }
 
-/// Scratch of the scene.
-pub struct Light3dBuffers {
-    color: [Rgb565; (W * ROWS) as usize],
+/// Pixels of a band.
+pub const BAND: usize = (W * ROWS) as usize;
+/// Pixels of the whole frame (one band of 240 rows: the whole-frame firmware).
+pub const WHOLE: usize = (W * H) as usize;
+
+/// Scratch of the scene: a colour band of `P / 320` rows (8 by default; [`WHOLE`] for one
+/// band holding the frame).
+pub struct Light3dBuffers<const P: usize = BAND> {
+    color: [Rgb565; P],
     lit: [[Vertex<4>; 3]; TRIS],
     point: [[Vertex<3>; 3]; TRIS],
-    ranges: [(u8, u8); TRIS],
+    bins: [Binned; BINS],
 }
 
 const V4: Vertex<4> = Vertex::new([Fx::ZERO; 4], [0; 4]);
 const V3: Vertex<3> = Vertex::new([Fx::ZERO; 4], [0; 3]);
 
 impl Light3dBuffers {
-    /// Zeroed.
+    /// Zeroed 8-row band.
     pub const fn new() -> Self {
+        Self::sized()
+    }
+}
+
+impl<const P: usize> Light3dBuffers<P> {
+    /// Zeroed.
+    pub const fn sized() -> Self {
         Light3dBuffers {
-            color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
+            color: [Rgb565::new(0, 0, 0); P],
             lit: [[V4; 3]; TRIS],
             point: [[V3; 3]; TRIS],
-            ranges: [(1, 0); TRIS],
+            bins: [Binned::EMPTY; BINS],
         }
     }
 }
@@ -114,9 +130,9 @@ pub fn triangles(out: &mut [[Vertex<4>; 3]; TRIS]) -> usize {
 
 /// The frame with a light-map shader (varyings `x, y, z`, e.g. `LitSolid`): geometry, then
 /// the bands. `pause` / `resume` bracket the harness-only checksum of each band.
-pub fn render_light_map<S: Shader<Varyings = [i32; 3]>>(
+pub fn render_light_map<S: Shader<Varyings = [i32; 3]>, const P: usize>(
     shader: S,
-    buf: &mut Light3dBuffers,
+    buf: &mut Light3dBuffers<P>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
@@ -125,69 +141,61 @@ pub fn render_light_map<S: Shader<Varyings = [i32; 3]>>(
         *p = l.map(|v| Vertex::new(v.position, [v.varyings[0], v.varyings[1], v.varyings[2]]));
     }
     let tris = buf.point.get(..n).unwrap_or(&[]);
-    bands(shader, tris, &mut buf.color, &mut buf.ranges, pause, resume)
+    bands(shader, tris, &mut buf.color, &mut buf.bins, pause, resume)
 }
 
 /// The same frame lit per vertex (varyings `x, y, z, i`, e.g. `SolidShader`): the baseline
 /// the light map is compared with.
-pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>>(
+pub fn render_vertex_lit<S: Shader<Varyings = [i32; 4]>, const P: usize>(
     shader: S,
-    buf: &mut Light3dBuffers,
+    buf: &mut Light3dBuffers<P>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let n = triangles(&mut buf.lit);
     let tris = buf.lit.get(..n).unwrap_or(&[]);
-    bands(shader, tris, &mut buf.color, &mut buf.ranges, pause, resume)
+    bands(shader, tris, &mut buf.color, &mut buf.bins, pause, resume)
 }
 
-/// Each triangle's band range once, then band by band the triangles that meet the band.
+/// The triangles projected and binned once, then band by band the bins that meet the band
+/// (`BandRenderer::render`).
 fn bands<S: Shader<Varyings = [i32; N]>, const N: usize>(
     shader: S,
     tris: &[[Vertex<N>; 3]],
-    color: &mut [Rgb565; (W * ROWS) as usize],
-    ranges: &mut [(u8, u8); TRIS],
+    color: &mut [Rgb565],
+    bins: &mut [Binned; BINS],
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
-) -> Result<FrameResult, Error> {
+) -> Result<FrameResult, Error>
+where
+    ScreenTriangle<N>: Binnable,
+{
     let draw =
         ShadedDraw::<S, Exact, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    for (tr, r) in tris.iter().zip(ranges.iter_mut()) {
-        *r = (1, 0);
-        draw.project(tr, &mut |s| {
-            let lo = s.iter().map(|v| v.y).min().unwrap_or(0).max(0) >> 4;
-            let hi = s.iter().map(|v| v.y).max().unwrap_or(0).max(0) >> 4;
-            let (b0, b1) = (
-                (lo / ROWS as i32).min(BANDS as i32 - 1) as u8,
-                ((hi / ROWS as i32) as u8).min(BANDS as u8 - 1),
-            );
-            *r = if r.0 > r.1 {
-                (b0, b1)
-            } else {
-                (r.0.min(b0), r.1.max(b1))
-            };
-        });
-    }
     let mut sum = Fnv1a::default();
-    let mut pixels = 0;
-    for band in 0..BANDS as u8 {
-        let mut frame = Frame::new(color, W, ROWS)?.at_row(u32::from(band) * ROWS);
-        frame.clear(Rgb565::new(0, 0, 0));
-        for (tr, r) in tris.iter().zip(ranges.iter()) {
-            if r.0 <= band && band <= r.1 {
-                pixels += draw.clip_triangles(core::slice::from_ref(tr), &mut frame)?;
+    let rows = (color.len() as u32 / W).min(H);
+    let mut bands = BandRenderer::new(color, W, rows, H)?;
+    let stats = bands.render(
+        &[&draw],
+        bins,
+        Rgb565::new(0, 0, 0),
+        |sink| {
+            for tr in tris {
+                draw.project(tr, &mut |s| sink.push(0, s));
             }
-        }
-        pause();
-        sum.pixels(frame.pixels());
-        resume();
-    }
+            if sink.fresh() {
+                crate::scenes::geometry_done();
+            }
+        },
+        |band| {
+            pause();
+            sum.pixels(band.pixels());
+            resume();
+            Ok::<(), core::convert::Infallible>(())
+        },
+    )?;
     Ok(FrameResult {
         checksum: sum.0,
-        stats: BandStats {
-            bands: BANDS as u32,
-            pixels,
-            ..BandStats::default()
-        },
+        stats,
     })
 }

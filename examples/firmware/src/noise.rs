@@ -3,7 +3,8 @@
 //! 8 rows, no depth buffer (one convex object, back faces culled).
 //!
 //! RAM: the band (5 KB), the lit clip-space vertices computed once (325 x 36 B), one band
-//! range per triangle (528 x 2 B) and the 512-byte colour ramp; the sphere itself is
+//! range per triangle (528 x 2 B, fixel's `BandRenderer::render_spans`) and the 512-byte
+//! colour ramp; the sphere itself is
 //! computed, vertex by vertex, and its triangles are numbered, so no mesh is stored. Shared with the host test
 //! `host-tests/tests/mcu_checksums.rs`, which renders the same frame and prints its checksum.
 
@@ -13,12 +14,13 @@ use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{sin_cos, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw};
+use fixel::scene::triangles_to_sink;
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::presets::{marble_sphere_model, SHOWCASE_SCALE};
 use fixel::shading::noise::SolidMesh;
 use fixel::shading::Shader;
 use fixel::surface::BandStats;
-use fixel::surface::Frame;
+use fixel::surface::{BandRange, BandRenderer, Binned, Frame};
 use fixel::Error;
 
 /// Sphere stacks.
@@ -77,7 +79,7 @@ pub fn model() -> Mat4 {
 pub struct NoiseBuffers {
     color: [Rgb565; (W * ROWS) as usize],
     verts: [Option<Vertex<4>>; VERTS],
-    ranges: [(u8, u8); TRIS],
+    ranges: [BandRange; TRIS],
 }
 
 impl NoiseBuffers {
@@ -86,7 +88,7 @@ impl NoiseBuffers {
         NoiseBuffers {
             color: [Rgb565::new(0, 0, 0); (W * ROWS) as usize],
             verts: [None; VERTS],
-            ranges: [(1, 0); TRIS],
+            ranges: [BandRange::EMPTY; TRIS],
         }
     }
 }
@@ -111,7 +113,8 @@ pub fn vertices(verts: &mut [Option<Vertex<4>>; VERTS]) {
 }
 
 /// Renders the frame with `shader`: vertices once (lit, object-space point as varyings),
-/// each triangle's band range once, then band by band the triangles that meet the band.
+/// then through fixel's band renderer: each triangle's band range once, then band by band
+/// the triangles that meet the band.
 /// `pause` / `resume` bracket the harness-only checksum of each band.
 pub fn render<S: Shader<Varyings = [i32; 4]>>(
     shader: S,
@@ -136,44 +139,70 @@ pub fn render_in<S: Shader<Varyings = [i32; 4]>, P: ProjectionStage>(
         let v = |k: usize| verts.get(usize::from(t[k])).copied().flatten();
         Some([v(0)?, v(1)?, v(2)?])
     };
-    for (t, r) in buf.ranges.iter_mut().enumerate() {
-        *r = (1, 0);
-        if let Some(tr) = tri(&buf.verts, &sphere_triangle(t)) {
-            draw.project(&tr, &mut |s| {
-                let lo = s.iter().map(|v| v.y).min().unwrap_or(0).max(0) >> 4;
-                let hi = s.iter().map(|v| v.y).max().unwrap_or(0).max(0) >> 4;
-                let (b0, b1) = (
-                    (lo / ROWS as i32) as u8,
-                    ((hi / ROWS as i32) as u8).min(BANDS as u8 - 1),
-                );
-                *r = if r.0 > r.1 {
-                    (b0, b1)
-                } else {
-                    (r.0.min(b0), r.1.max(b1))
-                };
-            });
-        }
-    }
+    let verts = &buf.verts;
     let mut sum = Fnv1a::default();
-    let mut pixels = 0;
-    for band in 0..BANDS as u8 {
-        let mut frame = Frame::new(&mut buf.color, W, ROWS)?.at_row(u32::from(band) * ROWS);
-        frame.clear(Rgb565::new(0, 0, 0));
-        for (t, r) in buf.ranges.iter().enumerate() {
-            if r.0 <= band && band <= r.1 {
-                if let Some(tr) = tri(&buf.verts, &sphere_triangle(t)) {
-                    pixels += draw.clip_triangles(&[tr], &mut frame)?;
-                }
+    let mut bands = BandRenderer::new(&mut buf.color, W, ROWS, H)?;
+    let stats = bands.render_spans(
+        &[&draw],
+        &mut [] as &mut [Binned],
+        &mut buf.ranges,
+        Rgb565::new(0, 0, 0),
+        |sink| {
+            triangles_to_sink(
+                &draw,
+                0,
+                TRIS,
+                0,
+                |t, _| tri(verts, &sphere_triangle(t)),
+                sink,
+            );
+            if sink.fresh() {
+                crate::scenes::geometry_done();
             }
+        },
+        |band| {
+            pause();
+            sum.pixels(band.pixels());
+            resume();
+            Ok::<(), core::convert::Infallible>(())
+        },
+    )?;
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats,
+    })
+}
+
+/// [`render`] drawn into one whole 320 x 240 frame (`color`) with the same draw, triangle
+/// by triangle: the figure the banded frame is compared with (the same checksum).
+pub fn render_whole<S: Shader<Varyings = [i32; 4]>>(
+    shader: S,
+    color: &mut [Rgb565],
+    verts: &mut [Option<Vertex<4>>; VERTS],
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let draw =
+        ShadedDraw::<S, Exact, NoDepth>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
+    vertices(verts);
+    let mut frame = Frame::new(color, W, H)?;
+    frame.clear(Rgb565::new(0, 0, 0));
+    let mut pixels = 0u32;
+    for t in 0..TRIS {
+        let k = sphere_triangle(t);
+        let v = |i: usize| verts.get(usize::from(k[i])).copied().flatten();
+        if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
+            pixels = pixels.wrapping_add(draw.clip_triangles(&[[a, b, c]], &mut frame)?);
         }
-        pause();
-        sum.pixels(frame.pixels());
-        resume();
     }
+    pause();
+    let mut sum = Fnv1a::default();
+    sum.pixels(frame.pixels());
+    resume();
     Ok(FrameResult {
         checksum: sum.0,
         stats: BandStats {
-            bands: BANDS as u32,
+            bands: 1,
             pixels,
             ..BandStats::default()
         },

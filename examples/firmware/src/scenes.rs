@@ -22,13 +22,22 @@ use fixel::texture::{
     Bilinear, BilinearFootprint, BilinearFootprintSized, MipTexture, Nearest, Repeat,
 };
 
+/// Marks the end of a banded frame's binning pass for `cargo xtask mcu`'s geometry share
+/// (call it from the geometry closure when its sink is in the binning pass). Nothing on the
+/// host.
+#[inline(always)]
+pub fn geometry_done() {
+    #[cfg(target_os = "none")]
+    crate::bench_geometry();
+}
+
 /// Frame size of every scene.
 pub const W: u32 = demo::WIDTH;
 /// Frame height.
 pub const H: u32 = demo::HEIGHT;
 /// Rows per band: colour + depth band = 320 * 8 * 4 B = 10 KiB.
 pub const ROWS: u32 = 8;
-/// Binned screen triangles (~104 B each). The cube and floor fit; the sphere overflows and
+/// Binned screen triangles (168 B each). The cube and floor fit; the sphere overflows and
 /// the renderer keeps a 2-byte band range per triangle instead (`reprojected`).
 pub const BINS: usize = 16;
 /// Band ranges of the sphere firmware: one per sphere triangle (2 B each, 4.4 KB).
@@ -292,6 +301,9 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
         Rgb565::new(0, 0, 0),
         |sink| {
             mesh_to_sink(draw, 0, mesh, &transform, light, cache, 0, sink);
+            if sink.fresh() {
+                geometry_done();
+            }
         },
         |band| {
             pause();

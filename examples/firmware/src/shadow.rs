@@ -1,6 +1,6 @@
 //! The shadow-mapping scene (`fixel::demo::shadow`) for the firmware: the light pass into a
 //! 64 x 64 map (8 KiB), then the lit pass in bands of 4 rows (5 KiB of colour and depth),
-//! its screen triangles binned once. Shared word for word with the host test
+//! its screen triangles binned once by fixel's band renderer (`BandRenderer::render`). Shared word for word with the host test
 //! `host-tests/tests/shadow_mcu.rs` (included there with `#[path]`), so the checksums are
 //! computed by the same code. The floor uses `T(64, 64)` here (the host picture uses a
 //! stone texture), the cube `T(128, 128)`.
@@ -15,8 +15,8 @@ use fixel::shading::pcf::ShadowFilter;
 use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Shadowed};
 use fixel::shading::Classic;
 use fixel::shading::{ModulateIntensity, Shader};
-use fixel::surface::BandStats;
 use fixel::surface::DepthMap;
+use fixel::surface::{BandRenderer, Binnable, Binned};
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
 
 use crate::scenes::{Fnv1a, FrameResult, H, W};
@@ -30,7 +30,8 @@ pub const ROWS: u32 = 4;
 /// Binned screen triangles (the scene has 8 to 10 after culling and clipping).
 pub const BINS: usize = 16;
 
-/// Everything the shadowed frame needs in RAM: map 8 KiB, band 5 KiB (the bins, 2 KiB, are on the stack).
+/// Everything the shadowed frame needs in RAM: map 8 KiB, band 5 KiB (the bins, 2.7 KiB,
+/// are on the stack).
 pub struct ShadowBuffers {
     /// The shadow map.
     pub map: [u16; MAP_TEXELS],
@@ -82,7 +83,10 @@ pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
     floor_tex: Texture<'_>,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
-) -> Result<FrameResult, Error> {
+) -> Result<FrameResult, Error>
+where
+    ScreenTriangle<M>: Binnable,
+{
     let map = fixel::surface::ShadowMap::new(&buf.map, MAP)?;
     let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
     let shader = |t| -> Result<Shadowed<'_, _, K, F, M>, Error> {
@@ -155,66 +159,45 @@ fn banded<K: LightKind, S: Shader<Varyings = [i32; M]>, const M: usize>(
     light: SceneLight,
     pause: &mut dyn FnMut(),
     resume: &mut dyn FnMut(),
-) -> Result<FrameResult, Error> {
-    let mut bins = [(0u8, ScreenTriangle::<M>::default()); BINS];
-    let mut n = 0usize;
-    let mut overflow = false;
+) -> Result<FrameResult, Error>
+where
+    ScreenTriangle<M>: Binnable,
+{
+    let mut bins = [Binned::EMPTY; BINS];
     let (cube, model, floor) = scene::meshes();
     let (cam, gl) = (scene::camera(), scene::gouraud_light(light));
-    for (d, (mesh, m)) in [(cube.mesh()?, model), (floor.mesh()?, Mat4::IDENTITY)]
-        .into_iter()
-        .enumerate()
-    {
-        let draw = &draws[d];
-        shadowed_mesh_triangles(&mesh, &m, &cam, Some(&gl), space, |cv, lv| {
-            let tri = [0, 1, 2].map(|k| {
-                let v = cv[k].to_vertex();
-                let inner =
-                    ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(&v.varyings);
-                with_light::<3, M>(&fixel::geometry::Vertex::new(v.position, inner), lv[k])
-            });
-            draw.project(&tri, &mut |s| match bins.get_mut(n) {
-                Some(b) => {
-                    *b = (d as u8, *s);
-                    n += 1;
-                }
-                None => overflow = true,
-            });
-        });
-    }
-    if overflow {
-        return Err(Error::BadMode(
-            "shadow scene: more screen triangles than bins",
-        ));
-    }
+    let meshes = [(cube.mesh()?, model), (floor.mesh()?, Mat4::IDENTITY)];
     let mut sum = Fnv1a::default();
-    let mut stats = BandStats {
-        triangles: n as u32,
-        ..BandStats::default()
-    };
-    let mut y0 = 0;
-    while y0 < H {
-        let mut frame = Frame::new(&mut *color, W, ROWS)?
-            .with_depth(&mut *depth)?
-            .at_row(y0);
-        frame.clear(Rgb565::new(4, 10, 14));
-        let (r0, r1) = (y0 as i32, (y0 + ROWS) as i32);
-        for (d, s) in bins.iter().take(n) {
-            let top = s[0].y.min(s[1].y).min(s[2].y) >> 4;
-            let bot = (s[0].y.max(s[1].y).max(s[2].y) >> 4) + 1;
-            if bot < r0 || top >= r1 {
-                continue;
+    let mut bands = BandRenderer::new(color, W, ROWS, H)?.with_depth(depth)?;
+    let stats = bands.render(
+        &[&draws[0], &draws[1]],
+        &mut bins,
+        Rgb565::new(4, 10, 14),
+        |sink| {
+            for (d, (mesh, m)) in meshes.iter().enumerate() {
+                let draw = &draws[d];
+                shadowed_mesh_triangles(mesh, m, &cam, Some(&gl), space, |cv, lv| {
+                    let tri = [0, 1, 2].map(|k| {
+                        let v = cv[k].to_vertex();
+                        let inner = ModulateIntensity::<Bilinear, Repeat, Repeat>::from_classic(
+                            &v.varyings,
+                        );
+                        with_light::<3, M>(&fixel::geometry::Vertex::new(v.position, inner), lv[k])
+                    });
+                    draw.project(&tri, &mut |s| sink.push(d as u8, s));
+                });
             }
-            if let Some(draw) = draws.get(usize::from(*d)) {
-                stats.pixels += draw.screen_triangle(s, &mut frame)?;
+            if sink.fresh() {
+                crate::scenes::geometry_done();
             }
-        }
-        pause();
-        sum.pixels(frame.pixels());
-        resume();
-        stats.bands += 1;
-        y0 += ROWS;
-    }
+        },
+        |band| {
+            pause();
+            sum.pixels(band.pixels());
+            resume();
+            Ok::<(), core::convert::Infallible>(())
+        },
+    )?;
     Ok(FrameResult {
         checksum: sum.0,
         stats,
@@ -246,7 +229,10 @@ pub fn run<K: LightKind, F: ShadowFilter, const M: usize>(
     light: SceneLight,
     cull: Cull,
     buf: &mut ShadowBuffers,
-) -> bool {
+) -> bool
+where
+    ScreenTriangle<M>: Binnable,
+{
     if light_pass_culling(space, &mut buf.map, cull).is_err() {
         return false;
     }

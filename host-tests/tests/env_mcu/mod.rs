@@ -94,6 +94,24 @@ fn env_frames() {
         whole(ReflectPerPixel(cube), EnvVertices::per_pixel),
         (r.checksum, r.stats.pixels)
     );
+    // The whole-frame firmware's own path.
+    let (mut wc, mut wd) = (
+        vec![Rgb565::new(0, 0, 0); (W * H) as usize],
+        vec![0u16; (W * H) as usize],
+    );
+    let w = env::env_frame_whole::<_, Exact, 6>(
+        &mut wc,
+        &mut wd,
+        ReflectPerPixel(cube),
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.indices,
+        EnvVertices::per_pixel,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    crate::print_whole("env_pixel", &r, &w);
     let r = env::env_frame::<_, Exact, 3>(
         &mut buf,
         ReflectPerVertex(cube),

@@ -99,9 +99,10 @@ const SCENES: [&str; 20] = [
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
-/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers; and `bump`
-/// (per-pixel lit, bump-mapped sphere), whose per-pixel shader has no band path yet.
-const WHOLE_SCENES: [&str; 8] = [
+/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and the
+/// banded technique scenes; and `bump` (per-pixel lit, bump-mapped sphere), drawn whole
+/// only (its 48-byte prepared vertices, 59 KB, are kept for the frame).
+const WHOLE_SCENES: [&str; 13] = [
     "whole_cube",
     "whole_sphere",
     "whole_sphere_adaptive",
@@ -109,6 +110,11 @@ const WHOLE_SCENES: [&str; 8] = [
     "whole_sphere_sized",
     "whole_floor",
     "whole_floor_bilinear",
+    "whole_env_pixel",
+    "whole_noise",
+    "whole_transparency",
+    "whole_aa_cube",
+    "whole_noise_light3d",
     "bump",
 ];
 

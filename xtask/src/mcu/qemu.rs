@@ -82,6 +82,15 @@ pub(super) fn num(text: &str, key: &str) -> Option<u64> {
     kv(text, key)?.parse().ok()
 }
 
+/// The plugin's report at exit: its stderr without the `icount: mark` lines (which carry
+/// the same keys, counted so far).
+fn final_report(err: &str) -> String {
+    err.lines()
+        .filter(|l| !l.starts_with("icount: mark "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 pub(super) struct Measured {
     pub(super) checksum: String,
     pub(super) pixels: u64,
@@ -90,6 +99,9 @@ pub(super) struct Measured {
     pub(super) total: u64,
     pub(super) est_cycles: f64,
     pub(super) rewalked: bool,
+    /// Counted instructions up to the end of the binning pass (`bench_geometry`'s first
+    /// hit), when the firmware marks it.
+    pub(super) geometry: Option<u64>,
     pub(super) profile: Vec<String>,
     pub(super) mix: String,
 }
@@ -107,11 +119,16 @@ pub(super) fn measure(
         (Some(s), Some(e)) => (s, e),
         _ => return Err(format!("{}: no bench_start/bench_end", elf.display())),
     };
+    // The end of a banded frame's binning pass, where the scene marks it.
+    let geometry_mark = symbol(&nm, "bench_geometry");
     let hist = out_dir().join(format!("hist-{}.tsv", m.core));
     let mut seen = Vec::new();
     let mut first: Option<(String, String)> = None;
     for i in 0..runs.max(1) {
         let mut arg = format!("{},start={start},end={end}", plugin.display());
+        if let Some(g) = &geometry_mark {
+            arg.push_str(&format!(",mark={g}"));
+        }
         if i == 0 {
             arg.push_str(&format!(",hist={}", hist.display()));
         }
@@ -123,10 +140,11 @@ pub(super) fn measure(
                 m.label
             ));
         }
-        let total = num(&err, "total").ok_or("plugin printed no total")?;
-        let region = num(&err, "region_sum").ok_or("no region_sum")?;
-        let pairs = num(&err, "pairs").ok_or("no pairs")?;
-        let fp = num(&err, "first_pair").ok_or("no first_pair")?;
+        let report = final_report(&err);
+        let total = num(&report, "total").ok_or("plugin printed no total")?;
+        let region = num(&report, "region_sum").ok_or("no region_sum")?;
+        let pairs = num(&report, "pairs").ok_or("no pairs")?;
+        let fp = num(&report, "first_pair").ok_or("no first_pair")?;
         seen.push((total, region - pairs * fp));
         if first.is_none() {
             first = Some((out, err));
@@ -138,8 +156,20 @@ pub(super) fn measure(
         .find(|l| l.starts_with("scene="))
         .ok_or_else(|| format!("no result line from {}:\n{out}{err}", elf.display()))?;
     let pixels = num(line, "pixels").unwrap_or(0);
-    let region = num(&err, "region_sum").unwrap_or(1).max(1);
+    let region = num(&final_report(&err), "region_sum").unwrap_or(1).max(1);
     let (total, net) = seen[0];
+    // The first mark: the region sum so far, less the marker pairs' overhead.
+    let geometry = err
+        .lines()
+        .find(|l| l.starts_with("icount: mark "))
+        .and_then(|l| {
+            let (s, p, f) = (
+                num(l, "region_sum")?,
+                num(l, "pairs")?,
+                num(l, "first_pair")?,
+            );
+            Some(s.saturating_sub(p * f))
+        });
 
     let nm_file = out_dir().join(format!("nm-{}.txt", m.core));
     let nm_sorted = output(
@@ -175,6 +205,7 @@ pub(super) fn measure(
             // The marker overhead (pairs x first pair) is taken out in proportion.
             est_cycles: est * net as f64 / region as f64,
             rewalked: kv(line, "rewalked") == Some("true"),
+            geometry,
             profile: cyc
                 .lines()
                 .filter(|l| l.trim_start().starts_with("profile:"))

@@ -229,6 +229,8 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
     }
     report.push('\n');
     let mut per_px: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
+    // Share of each banded count spent up to the end of the binning pass.
+    let mut geometry_share: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
     let sets: Vec<_> = SCENES
         .iter()
         .map(|s| (*s, &MCUS, &td))
@@ -284,6 +286,9 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             ));
             let px = r.pixels.max(1) as f64;
             per_px.insert((scene.to_string(), m.label), r.net as f64 / px);
+            if let Some(g) = r.geometry {
+                geometry_share.insert((scene.to_string(), m.label), g as f64 / r.net.max(1) as f64);
+            }
             report.push_str(&format!(
                 "| {scene}{} | {} | {:.2} | {:.1} | {} | {} | {} | {} | {} ({} + {}) |",
                 if r.rewalked { " (rewalk)" } else { "" },
@@ -348,16 +353,29 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
     println!(
         "\nwhole_* = the same frame drawn into one 320x240 frame (colour + 16-bit depth, \
          300 KiB) with one prepared vertex per mesh vertex, on mps2-an386 (both Arm builds) \
-         and RV32 virt: the figures to set beside whole-frame renderers.\n"
+         and RV32 virt: the figures to set beside whole-frame renderers. geometry = the share \
+         of the banded count spent up to the end of the frame's binning pass (walk, transform, \
+         clip, project, bin: `bench_geometry` in the scene), the rest in the bands (clears, \
+         set-ups, spans, and the triangles a band re-projects).\n"
     );
-    println!("| scene | target | bands insns/px | whole insns/px | bands / whole |\n|---|---|---:|---:|---:|");
+    println!(
+        "| scene | target | bands insns/px | geometry | bands - geometry | whole insns/px | bands / whole |\n|---|---|---:|---:|---:|---:|---:|"
+    );
     for scene in SCENES {
         for m in &MCUS {
-            let b = per_px.get(&(scene.to_string(), m.label));
+            let Some(b) = per_px.get(&(scene.to_string(), m.label)) else {
+                continue;
+            };
+            let g = geometry_share.get(&(scene.to_string(), m.label));
             let w = per_px.get(&(format!("whole_{scene}"), m.label));
-            if let (Some(b), Some(w)) = (b, w) {
-                println!("| {scene} | {} | {b:.2} | {w:.2} | {:.3} |", m.label, b / w);
-            }
+            println!(
+                "| {scene} | {} | {b:.2} | {} | {} | {} | {} |",
+                m.label,
+                g.map_or("-".into(), |g| format!("{:.1} %", 100.0 * g)),
+                g.map_or("-".into(), |g| format!("{:.2}", b * (1.0 - g))),
+                w.map_or("-".into(), |w| format!("{w:.2}")),
+                w.map_or("-".into(), |w| format!("{:.3}", b / w)),
+            );
         }
     }
     match geometry.unwrap_or(Ok(String::new())) {

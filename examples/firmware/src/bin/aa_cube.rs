@@ -4,6 +4,7 @@
 #![no_main]
 
 #[path = "../aa_scene.rs"]
+#[allow(dead_code)] // the other size (bands or whole frame)
 mod aa_scene;
 
 use fixel_firmware::{data, report};

@@ -4,6 +4,7 @@
 #![no_main]
 
 #[path = "../alpha_scene.rs"]
+#[allow(dead_code)] // the other target (bands or whole frame)
 mod alpha_scene;
 
 use fixel_firmware::{data, report};

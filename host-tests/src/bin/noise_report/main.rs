@@ -28,6 +28,7 @@
 //! (`noise_marble.png`, `noise_light3d.png`, `noise_flame.png`, the floors).
 
 #[path = "../../../../examples/firmware/src/light3d_scene.rs"]
+#[allow(dead_code)] // the whole-frame size
 mod light3d_scene;
 #[path = "../../../../examples/firmware/src/noise.rs"]
 #[allow(dead_code)]

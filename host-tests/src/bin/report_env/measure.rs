@@ -132,7 +132,10 @@ pub fn read_mcu(path: &PathBuf) -> BTreeMap<String, BTreeMap<String, (f64, u64, 
 pub fn band_checksum<S: Shader<Varyings = [i32; N]>, const N: usize>(
     shader: S,
     vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
-) -> (String, u64) {
+) -> (String, u64)
+where
+    fixel::geometry::ScreenTriangle<N>: fixel::surface::Binnable,
+{
     let s = Box::new(fixel::demo::sphere());
     let mut buf = Box::new(env::EnvBuffers::new());
     let (mut a, mut b) = (|| {}, || {});
