@@ -140,7 +140,7 @@
 //!   positions rounded to 1/4096 pixel (GL: snapping moves edges, not textures). Affine
 //!   interpolation is GL's `noperspective`, clipping included.
 //! * Texel centres at `(i + 0.5) / size`; `t = 0` is the first row of the texel slice; wrap
-//!   modes and nearest/bilinear as GL ES 3.0 §3.8.10–11 (wrap applied to integer texel
+//!   modes and nearest/bilinear as OpenGL ES 3.2 defines them (wrap applied to integer texel
 //!   indices).
 //! * Depth test `GL_LESS` against a buffer cleared to 65535 (the far plane).
 //!

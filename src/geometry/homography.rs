@@ -1,6 +1,7 @@
-//! The projective map of a quadrilateral (seed 000 §2.1): the 3x3 homography that takes the
-//! unit square of texture coordinates onto four screen corners, its inverse, and the
-//! per-corner weights that let the ordinary perspective-correct span loop draw it exactly.
+//! The projective map of a quadrilateral (Heckbert, "Fundamentals of Texture Mapping and
+//! Image Warping", 1989): the 3x3 homography that takes the unit square of texture
+//! coordinates onto four screen corners, its inverse, and the per-corner weights that let
+//! the ordinary perspective-correct span loop draw it exactly.
 //!
 //! For corners `p0..p3` (the images of `(0,0), (1,0), (1,1), (0,1)`), Heckbert's
 //! construction gives

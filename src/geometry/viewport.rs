@@ -111,7 +111,7 @@ impl Viewport {
     /// core has a divide instruction, through one reciprocal of `w` where it has not (see
     /// `project_recip`; the same integers).
     ///
-    /// Measured in session 35 on the cores with a divide instruction, where the 64-bit
+    /// Measured on the cores with a divide instruction, where the 64-bit
     /// quotients are library divisions: the reciprocal saved the whole-frame sphere 1.0
     /// instructions per pixel on Cortex-M4F and 1.9 on RV32IMC, but on Cortex-M4F its 1 KB
     /// table took the minimal open-stage firmware over its 10 KB bar (10,084 -> 11,172 B),

@@ -72,8 +72,8 @@ fn div_small(x: i32, n: u32, log2: Option<u32>) -> i32 {
 /// plus a loop-invariant multiple of the second difference: 14 such constants, spilled and
 /// reloaded every 8 pixels. Hiding the first difference's new value keeps the loop as
 /// written (13 instructions per 2 pixels instead of 56 per 8, and a shorter segment
-/// set-up). The cube (quadratic N=16), instructions per pixel, this change alone (`prof`,
-/// session 13): M4F 110.37 -> 108.83, RV32 125.16 -> 124.97, M0+ 188.82 -> 189.53. An
+/// set-up). Measured on the cube (quadratic N=16), instructions per pixel, this change
+/// alone (`prof`): M4F 110.37 -> 108.83, RV32 125.16 -> 124.97, M0+ 188.82 -> 189.53. An
 /// empty `asm!` is the only zero-cost barrier (`core::hint::black_box` goes through
 /// memory).
 #[inline(always)]

@@ -90,7 +90,7 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
 
 /// [`rasterize`], out of line: the run-time draw's (`Draw::dynamic`) one copy for all its
 /// span writers behind `dyn SpanSink`. Inlined into each of its draw types' raster
-/// functions, as the typed draws' rasterizer is, its firmware grew by 9 KB (session 36).
+/// functions, as the typed draws' rasterizer is, its firmware grows by 9 KB (measured).
 #[inline(never)]
 pub(crate) fn rasterize_shared<S: SpanSink + ?Sized>(
     v: [(i32, i32); 3],

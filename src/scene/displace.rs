@@ -1,6 +1,7 @@
-//! Displacement mapping (seed 000 §3.2): the geometry itself moves, each vertex along its
-//! normal by a height map, and the normals are recomputed from the moved surface. Unlike
-//! bump mapping, which only tilts normals per pixel, the silhouette becomes bumpy.
+//! Displacement mapping (Cook, "Shade Trees", SIGGRAPH 1984): the geometry itself moves,
+//! each vertex along its normal by a height map, and the normals are recomputed from the
+//! moved surface. Unlike bump mapping, which only tilts normals per pixel, the silhouette
+//! becomes bumpy.
 //!
 //! # The formula
 //! For a vertex at `p` with unit normal `n` and texture coordinates `uv`,

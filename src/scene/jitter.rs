@@ -1,5 +1,6 @@
-//! Sub-pixel sample patterns and the camera offsets that render them (seed 004: stochastic
-//! sampling with jitter, the accumulation buffer).
+//! Sub-pixel sample patterns and the camera offsets that render them: stochastic sampling
+//! with jitter (Cook, "Stochastic Sampling in Computer Graphics", ACM TOG 1986) and the
+//! accumulation buffer (Haeberli & Akeley, SIGGRAPH 1990).
 //!
 //! A [`SamplePattern`] gives `n` sample positions inside the pixel, as offsets from its
 //! centre in `(−1/2, 1/2)` pixel (I16F16). Rendering the frame once per offset with

@@ -1,6 +1,6 @@
-//! Textured quadrilaterals on screen with exact projective mapping and no 3D set-up (seed
-//! 000 §2.1): a photo, a dial or a sprite on any convex four-corner shape, for user
-//! interfaces.
+//! Textured quadrilaterals on screen with exact projective mapping and no 3D set-up
+//! (Heckbert, "Fundamentals of Texture Mapping and Image Warping", 1989): a photo, a dial or
+//! a sprite on any convex four-corner shape, for user interfaces.
 //!
 //! [`draw_quad`] finds the homography of the unit square onto the corners
 //! ([`Homography`]), clips the quad to the viewport (plus a quarter pixel) in screen space,

@@ -2,7 +2,7 @@
 //! meshes get theirs from `cargo xtask bake-obj --tangents`).
 //!
 //! For a triangle with edges `e1 = p1 − p0`, `e2 = p2 − p0` and uv differences
-//! `(du1, dv1)`, `(du2, dv2)`, the surface derivatives are (seed 000 §3.1, `Pu`, `Pv`):
+//! `(du1, dv1)`, `(du2, dv2)`, the surface derivatives are (Blinn's `Pu`, `Pv`):
 //!
 //! ```text
 //! det = du1 dv2 − du2 dv1

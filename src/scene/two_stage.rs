@@ -1,4 +1,4 @@
-//! Two-stage texture mapping (seed 000 §2.2, after Bier and Sloan; seed 001's cylinder): the
+//! Two-stage texture mapping (Bier & Sloan, "Two-Part Texture Mappings", IEEE CG&A 1986): the
 //! texture is first put on a simple intermediate surface with an analytic map (the
 //! *S-mapping*: plane, cylinder, sphere or box), then each point of the object is matched to
 //! a point of that surface (the *O-mapping*) by one of four rules:

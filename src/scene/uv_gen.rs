@@ -1,5 +1,6 @@
-//! Texture coordinates generated from model-space positions (seed 000 §2): planar,
-//! cylindrical and spherical projections, per vertex, at bake time or at run time.
+//! Texture coordinates generated from model-space positions: planar, cylindrical and
+//! spherical projections (Bier & Sloan, "Two-Part Texture Mappings", IEEE CG&A 1986), per
+//! vertex, at bake time or at run time.
 //!
 //! For a position `p`, with `d = p − center` split along the mapping's axis into `up`
 //! (along the axis), `right` and `front` (a right-handed frame: for [`Axis::Y`] they are

@@ -1,6 +1,6 @@
 //! Triplanar mapping: a texture projected along the three model axes and blended per pixel
 //! by the surface normal, for surfaces with no usable texture coordinates (terrain,
-//! scanned or generated objects). Seed 000 §2's planar projection, three times.
+//! scanned or generated objects). The planar projection, three times.
 //!
 //! For a model-space point `p` (in texels: `p · texels_per_unit`) and normal `n`:
 //!

@@ -1,4 +1,4 @@
-//! Accumulation through bands (seed 004's accumulation buffer on a part that cannot hold a
+//! Accumulation through bands (the accumulation buffer on a part that cannot hold a
 //! frame): the frame's geometry is binned once; then each band is drawn once per sample
 //! offset, with the binned screen triangles shifted by the offset, the drawings summed in a
 //! band-sized [`Accumulator`] and averaged into the band before it is flushed. RAM: the

@@ -1,4 +1,4 @@
-//! Anti-aliasing by supersampling and accumulation (seed 004): averaging several samples
+//! Anti-aliasing by supersampling and accumulation: averaging several samples
 //! per pixel, in RGB565 channels with one rounding.
 //!
 //! * **Supersampling on a regular grid** through bands: render the frame at `k` times the

@@ -19,7 +19,7 @@
 //! once per span), so the masked index needs no bounds test per pixel either.
 //!
 //! Cost, in instructions per drawn pixel on the benchmark sphere drawn whole (a 256 x 128
-//! texture; `whole_sphere_footprint` against `whole_sphere_sized`, session 31): Cortex-M4F
+//! texture; `whole_sphere_footprint` against `whole_sphere_sized`): Cortex-M4F
 //! 188.59 -> 180.63, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
 
 use super::footprint::{gather_footprint, BilinearFootprint};

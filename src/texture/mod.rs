@@ -1,6 +1,7 @@
 //! Textures: a borrowed power-of-two RGB565 [`Texture`], wrap modes and filters.
 //!
-//! Units and conventions (OpenGL ES 3.0 §3.8.10/§3.8.11): texels are row-major with row 0
+//! Units and conventions (OpenGL ES 3.2, texture minification and magnification): texels
+//! are row-major with row 0
 //! first (`v = 0` at row 0), texel centres at `i + 0.5`, sampling coordinates are raw I16F16
 //! texel units (`i32`, 65536 = one texel). Sides are powers of two, 1..=4096. Wrap modes and
 //! filters are zero-sized markers ([`Repeat`], [`MirroredRepeat`], [`ClampToEdge`],

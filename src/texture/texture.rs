@@ -1,6 +1,6 @@
 //! A borrowed, power-of-two RGB565 texture.
 //!
-//! Units and conventions (OpenGL ES 3.0 §3.8.10/§3.8.11):
+//! Units and conventions (OpenGL ES 3.2, texture minification and magnification):
 //! - Texels are a row-major `&[Rgb565]` slice: texel `(i, j)` (column `i`, row `j`) is at
 //!   index `j * width + i`. Row 0 comes first and is where `t = 0` (`v = 0`) lies.
 //! - Sides are powers of two from 1 to 4096 (`log2` 0..=[`MAX_LOG2_SIZE`]); width and height

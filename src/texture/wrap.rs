@@ -1,6 +1,7 @@
 //! Texture wrap modes: map an integer texel index (any `i32`) onto a power-of-two axis.
 //!
-//! Units and conventions (OpenGL ES 3.0 §3.8.10): the input is an integer texel index `i`
+//! Units and conventions (OpenGL ES 3.2, coordinate wrapping): the input is an integer texel
+//! index `i`
 //! (already floored from the I16F16 texel coordinate by the sampler), the axis has
 //! `size = 2^log2_size` texels, and the result is an index in `0..size`, or `None` meaning
 //! "use the border colour". With `mirror(a) = if a >= 0 { a } else { -(1 + a) }`:

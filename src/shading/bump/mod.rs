@@ -1,5 +1,5 @@
-//! Bump mapping (Blinn, seed 000 §3.1) and normal mapping: per-pixel lighting with a normal
-//! perturbed by a height map, no new geometry.
+//! Bump mapping (Blinn, "Simulation of Wrinkled Surfaces", SIGGRAPH 1978) and normal
+//! mapping: per-pixel lighting with a normal perturbed by a height map, no new geometry.
 //!
 //! * [`Bumped`]: the shader (colour texture, normal source, [`Material`](crate::shading::lighting::Material)),
 //!   fed by [`LitMesh::bump_triangles`](crate::scene::LitMesh::bump_triangles);

@@ -1,7 +1,7 @@
 //! Where a bump shader gets its tangent-space normal per pixel: Blinn's perturbation from a
 //! height map (precomputed derivatives, or central differences per pixel) or a normal map.
 //!
-//! Blinn's perturbed normal (seed 000 §3.1) is `n' = n + (Bu (n × Pv) − Bv (n × Pu)) / |n|`
+//! Blinn's perturbed normal (SIGGRAPH 1978) is `n' = n + (Bu (n × Pv) − Bv (n × Pu)) / |n|`
 //! with `B` the height and `Pu`, `Pv` the surface derivatives. In the orthonormal tangent
 //! frame `(t, b, n)` with `Pu = t`, `Pv = b` per texel (the height map is a surface
 //! `z = σ h(i, j)` over the texel grid, in texel widths), `n × b = −t` and `n × t = b`, so

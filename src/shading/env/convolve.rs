@@ -1,5 +1,6 @@
-//! Diffuse and glossy environment maps (seed 000 §3.3.3), baked from a cube map, and the
-//! shader that combines them with a base texture.
+//! Diffuse and glossy environment maps (Greene, "Environment Mapping and Other Applications
+//! of World Projections", IEEE CG&A 1986), baked from a cube map, and the shader that
+//! combines them with a base texture.
 //!
 //! * The **irradiance** map, indexed by the normal `n`: the cosine-weighted average of the
 //!   environment, `E(n) = (1/π) ∫ L(ω) max(0, n·ω) dω` (1 for a uniform white sky).

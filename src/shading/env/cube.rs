@@ -1,7 +1,7 @@
 //! Cube maps: six square power-of-two RGB565 faces, indexed by a direction that need not
 //! be a unit vector.
 //!
-//! # Face selection and face coordinates (OpenGL ES 3.0 §3.8.10, Table 3.21)
+//! # Face selection and face coordinates (OpenGL ES 3.2, cube map texture selection)
 //!
 //! The face is the one of the direction's major axis (the component of largest magnitude)
 //! and its sign; `sc`, `tc` and `ma` come from the table, and

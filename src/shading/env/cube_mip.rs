@@ -1,5 +1,5 @@
 //! Mipmapped cube maps: a mip chain per face and the level of detail from the derivatives
-//! of the reflection's face coordinates (GL ES 3.0 §3.8.10 and §3.8.11 for cube maps).
+//! of the reflection's face coordinates (OpenGL ES 3.2's rules for cube maps).
 //!
 //! GL takes the LOD of a cube-map lookup from the screen derivatives of the face
 //! coordinates `s`, `t` on the face the pixel's direction selects. fixel gets them from

@@ -1,5 +1,6 @@
-//! Environment mapping (seed 000 §3.3): a shiny surface shows its surroundings in the
-//! direction of the reflection vector `r = 2 (n·v) n − v`.
+//! Environment mapping (Blinn & Newell, "Texture and Reflection in Computer Generated
+//! Images", CACM 1976): a shiny surface shows its surroundings in the direction of the
+//! reflection vector `r = 2 (n·v) n − v`.
 //!
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
 //!   major axis through a reciprocal table, nearest or bilinear within a face;

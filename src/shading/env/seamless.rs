@@ -1,4 +1,4 @@
-//! Seamless cube-map filtering (GL's `TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6 §8.14.1):
+//! Seamless cube-map filtering (GL's `TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6):
 //! bilinear taps that fall off the edge of a face are read from the face beyond that edge,
 //! so a filtered cube map has no visible seams where faces meet.
 //!

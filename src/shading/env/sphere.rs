@@ -1,4 +1,4 @@
-//! Sphere maps (seed 000 §3.3, `GL_SPHERE_MAP`): the environment as seen in a mirrored ball
+//! Sphere maps (`GL_SPHERE_MAP`): the environment as seen in a mirrored ball
 //! from far along `+z`, one texture indexed by
 //!
 //! ```text

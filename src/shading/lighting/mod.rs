@@ -1,6 +1,7 @@
-//! Per-pixel lighting (seed 000 §3 and seed 004): Phong and Blinn-Phong evaluated at every
-//! pixel from interpolated, renormalised vectors, against fixel's per-vertex (Gouraud)
-//! lighting.
+//! Per-pixel lighting: Phong and Blinn-Phong evaluated at every pixel from interpolated,
+//! renormalised vectors, against fixel's per-vertex (Gouraud) lighting (Phong, "Illumination
+//! for Computer Generated Pictures", CACM 1975; Blinn, "Models of Light Reflection for
+//! Computer Synthesized Pictures", SIGGRAPH 1977).
 //!
 //! * [`Material`], [`Specular`], [`SpecularTable`]: the lighting model, in Q14 vectors and
 //!   Q8 coefficients (see [`material`]);

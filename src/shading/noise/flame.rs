@@ -1,4 +1,4 @@
-//! The animated flame of seed `000` §4.2: a flame shape in the plane, `(1 − y/h) ·
+//! An animated flame: a flame shape in the plane, `(1 − y/h) ·
 //! flame_colour(|x/b|)`, set in motion by turbulence over 3D + time,
 //! `flame_colour(|x/b| + turbulence(x, t))`.
 //!

@@ -1,4 +1,4 @@
-//! 3D light maps (seed `000` §4.3): the light reaching each point of an object's space,
+//! 3D light maps: the light reaching each point of an object's space,
 //! precomputed into a small cube of intensities (for example 16³ = 4 KB) and read back by
 //! object-space position with trilinear interpolation. Baked by `cargo xtask bake-light3d`
 //! from point lights with inverse-square falloff; independent of the view, free per light

@@ -1,5 +1,6 @@
-//! Solid textures from table-based Perlin noise (seed `000` §4): a colour as a function of
-//! the 3D object-space point, with no seams, no distortion and no texture memory.
+//! Solid textures from table-based Perlin noise (Perlin, "An Image Synthesizer", SIGGRAPH
+//! 1985): a colour as a function of the 3D object-space point, with no seams, no distortion
+//! and no texture memory.
 //!
 //! * [`noise3`]: Perlin's improved gradient noise in 3D, all in `i32` fixed point;
 //!   [`noise4`](fn@noise4), [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
@@ -9,9 +10,9 @@
 //! * [`Ramp`], [`Marble`], [`Wood`], [`Granite`]: patterns over the noise, and
 //!   [`SolidShader`], the fragment shader that draws any [`Pattern`] on a mesh with the
 //!   object-space point as three varyings and a light intensity as the fourth.
-//! * [`flame`](fn@flame) and [`FlameShader`]: the animated flame of seed `000` §4.2 (a texture of
+//! * [`flame`](fn@flame) and [`FlameShader`]: an animated flame (a texture of
 //!   the plane: 2D + time through [`noise3`], time as the third axis).
-//! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map (seed `000` §4.3), trilinear
+//! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map, trilinear
 //!   (`cargo xtask bake-light3d`).
 //! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light;
 //!   [`Select`]: one of two solid textures, chosen by a third noise with a smooth threshold.

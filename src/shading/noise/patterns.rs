@@ -1,5 +1,6 @@
-//! Patterns over noise (seed `000` §4.1.1: "structure, then turbulence to perturb it"):
-//! marble, wood and granite, each a colour [`Ramp`] indexed by a function of the point.
+//! Patterns over noise, a structure and then turbulence to perturb it (Perlin, "An Image
+//! Synthesizer", SIGGRAPH 1985): marble, wood and granite, each a colour [`Ramp`] indexed by
+//! a function of the point.
 //!
 //! Every pattern reads the point `p` (I16F16 lattice units) and asks an [`Octaves`] policy
 //! for its turbulence, so the same pattern draws with a fixed number of octaves or

@@ -1,4 +1,5 @@
-//! Turbulence (seed `000` §4.1.1): `Σ_{k=0}^{n−1} |noise(2^k p)| / 2^k`, and its
+//! Turbulence (Perlin, "An Image Synthesizer", SIGGRAPH 1985):
+//! `Σ_{k=0}^{n−1} |noise(2^k p)| / 2^k`, and its
 //! band-limited form, where the octaves finer than the pixel are not summed.
 //!
 //! The seeds truncate the sum at the smallest `k` with `1 / 2^(k+1) <` the pixel size: an

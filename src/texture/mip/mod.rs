@@ -11,7 +11,7 @@
 //! where a side is already 1 the two texels along the other side are averaged,
 //! `(a + b + 1) >> 1`).
 //!
-//! # Level of detail (GL ES 3.0 §3.8.11)
+//! # Level of detail (OpenGL ES 3.2, scale factor and level of detail)
 //! `lambda = log2(rho)` with Heckbert's
 //! `rho = max(sqrt(ux^2 + vx^2), sqrt(uy^2 + vy^2))` (derivatives of the level-0 texel
 //! coordinates per pixel), computed without a square root as `log2(max(...)) / 2`, with

@@ -1,6 +1,6 @@
 //! Texture filters: nearest and bilinear sampling of an RGB565 [`Texture`].
 //!
-//! Units and conventions (OpenGL ES 3.0 §3.8.10/§3.8.11):
+//! Units and conventions (OpenGL ES 3.2, texture minification and magnification):
 //! - `u`, `v` are raw I16F16 texel coordinates (`i32`, 16 fractional bits, 65536 = one texel,
 //!   `u = s * width`, `v = t * height`); `v = 0` is the top edge of row 0 (the first row of the
 //!   slice). Any `i32` is accepted (range -32768.0 ..= 32767.99998 texels).
