@@ -1,4 +1,4 @@
-//! Displacement mapping (issue 14 §3): fixel's subdivision, displacement and recomputed
+//! Displacement mapping: fixel's subdivision, displacement and recomputed
 //! normals against the f64 reference (`host_tests::reference::displace`), property tests
 //! over scale, bias, offset and levels, the baked assets' freshness and a rendered
 //! checksum. The hard cases are in `displacement_hard_cases.rs`.

@@ -1,4 +1,4 @@
-//! Displacement mapping's hard cases (issue 14 §3): a fold, zero-area triangles, storage too
+//! Displacement mapping's hard cases: a fold, zero-area triangles, storage too
 //! small, indices out of range, seam and pole copies that must not crack, and the
 //! silhouette against bump mapping's.
 
@@ -259,7 +259,7 @@ fn welded_copies_move_together() {
     assert!(cracked > 0, "without twins some copies part");
 }
 
-/// The silhouette, the difference from bump mapping (issue 14 §3): drawn the same way, the
+/// The silhouette, the difference from bump mapping: drawn the same way, the
 /// undisplaced sphere (what a bump-mapped sphere's outline is: bump mapping only tilts
 /// normals) has a round outline, the displaced one a rough outline. Measured as the spread
 /// of the outline's radius, row by row, about the frame centre (where the sphere's centre

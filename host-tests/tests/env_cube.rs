@@ -1,6 +1,6 @@
 //! Cube-map environment mapping against the f64 reference (`host_tests::reference::env`):
-//! the lookup (face selection, face coordinates, nearest and bilinear), the hard cases of
-//! issue 11 (edge and corner ties, tiny components, zero directions and normals, extremes),
+//! the lookup (face selection, face coordinates, nearest and bilinear), the hard cases
+//! (edge and corner ties, tiny components, zero directions and normals, extremes),
 //! and whole frames of the benchmark sphere and cube with `r` per pixel and per vertex.
 //!
 //! Figures (printed with `--nocapture`; the budgets below are these plus a margin):

@@ -1,5 +1,5 @@
-//! Golden images of texture-coordinate generation, projective quads (issue 15) and
-//! anti-aliasing (issue 16), compared bit for bit with `host-tests/golden/*.png`. Bless with
+//! Golden images of texture-coordinate generation, projective quads and
+//! anti-aliasing, compared bit for bit with `host-tests/golden/*.png`. Bless with
 //! `FIXEL_BLESS=1 cargo test -p host-tests --test mapping_goldens` after an intended change
 //! (and look at the images).
 

@@ -398,10 +398,10 @@ fn mcu_noise_light3d() {
     print_whole("noise_light3d", &r, &w);
 }
 
-// The environment-mapping frames (issue 11): `env_pixel`, `env_vertex`.
+// The environment-mapping frames: `env_pixel`, `env_vertex`.
 mod env_mcu;
 
-// The run-time displacement frame (issue 14): `water`.
+// The run-time displacement frame: `water`.
 #[path = "../../examples/firmware/src/water_scene.rs"]
 #[allow(dead_code)]
 mod water_scene;

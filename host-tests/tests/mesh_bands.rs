@@ -1,4 +1,4 @@
-//! Every way of drawing a mesh gives the same pixels (issue 10): random meshes (vertices
+//! Every way of drawing a mesh gives the same pixels: random meshes (vertices
 //! behind the camera, off screen and on it; random normals, uvs and indices), two meshes
 //! with two draws in random modes, drawn
 //!

@@ -1,4 +1,4 @@
-//! Mipmapping (issue 4): fixel's chains, level of detail and the four GL mipmapped
+//! Mipmapping: fixel's chains, level of detail and the four GL mipmapped
 //! minification filters against the independent f64 reference, goldens of the floor with
 //! every filter and LOD granularity, wrap modes at every level, LOD bias and clamps.
 //!

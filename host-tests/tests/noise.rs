@@ -1,5 +1,5 @@
 //! fixel's fixed-point Perlin noise and turbulence against the f64
-//! reference (`host_tests::reference::noise`), with the hard cases of issue 13: lattice
+//! reference (`host_tests::reference::noise`), with the hard cases: lattice
 //! points, the varying limits, negative coordinates and the period boundary, continuity
 //! across cells, and a view so distant that a pixel covers many cells.
 

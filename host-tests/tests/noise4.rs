@@ -1,7 +1,7 @@
 //! fixel's 4D gradient noise (`noise4`, `turbulence4`: solid textures animated over time)
 //! against the f64 reference (`host_tests::reference::noise::noise4`, written from the
 //! construction: chained permutation hash, Gustavson's 32 edge gradients, quintic fade),
-//! with the hard cases of issue 13: lattice points, the varying limits, negative
+//! with the hard cases: lattice points, the varying limits, negative
 //! coordinates and the period boundary, continuity across cells (in time too).
 
 use fixel::shading::noise::{noise4, turbulence4, PERIOD};

@@ -1,4 +1,4 @@
-//! Property tests (issue 3, item 6):
+//! Property tests:
 //!
 //! * random triangles with clip coordinates across the whole I16F16 range (w <= 0, huge,
 //!   tiny) in random modes never panic and never write outside the buffers;

@@ -1,6 +1,6 @@
 //! Per-pixel lighting, bump and normal mapping against the f64 reference
 //! (`host_tests::reference::lighting`): error budgets per variant, the gain of per-pixel
-//! lighting over Gouraud on the highlight, and the hard cases of issue 14.
+//! lighting over Gouraud on the highlight, and the hard cases.
 
 use fixel::demo::surface;
 use fixel::math::{fx, Vec3};

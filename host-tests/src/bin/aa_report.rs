@@ -1,4 +1,4 @@
-//! `cargo xtask report`, anti-aliasing (issue 16): the benchmark cube (frame 0) at 1x,
+//! `cargo xtask report`, anti-aliasing: the benchmark cube (frame 0) at 1x,
 //! regular-grid 2 x 2 and 4 x 4 supersampling in bands, and the rotated grid of 4 and 16
 //! stratified jittered samples accumulated through bands (`examples/firmware/src/aa.rs`, the
 //! firmware's code), and 1x with post-process edge smoothing.
@@ -258,7 +258,7 @@ fn main() {
         });
     }
     let mut md = String::from(
-        "# Anti-aliasing (issue 16)\n\n\
+        "# Anti-aliasing\n\n\
          The benchmark cube, frame 0, 320 x 240, lit bilinear. Error against a 16 x 16 supersampled f64 \
          reference: edges = pixels the reference covers partly. Per display pixel (35,485 covered). \
          Band RAM: the k-times colour and depth band plus one display band (8 rows).\n\n\

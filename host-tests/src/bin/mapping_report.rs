@@ -1,4 +1,4 @@
-//! `cargo xtask report`, texture-coordinate generation (issue 15): one row per generator
+//! `cargo xtask report`, texture-coordinate generation: one row per generator
 //! over the 860 vertices of the Utah teapot baked from OBJ, and one for the triplanar teapot
 //! frame (240 x 180).
 //!
@@ -294,7 +294,7 @@ fn main() {
         });
     }
     let mut md = String::from(
-        "# Texture-coordinate generation (issue 15)\n\n\
+        "# Texture-coordinate generation\n\n\
          The Utah teapot baked from OBJ (`cargo xtask teapot`, `cargo xtask bake-obj`; 860 vertices, \
          1560 triangles). Generators per vertex, no seam handling (`examples/firmware/src/mapping.rs`); \
          triplanar and cylindrical per pixel: the lit teapot, 240 x 180, exact perspective, bilinear, \

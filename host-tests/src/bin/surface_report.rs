@@ -1,4 +1,4 @@
-//! `cargo xtask report`, surface detail (issue 14): the brick sphere of
+//! `cargo xtask report`, surface detail: the brick sphere of
 //! `fixel::demo::surface` (frame 0, light 0, 160 x 160) lit per vertex (Gouraud), per pixel
 //! (Phong, Blinn-Phong, textured), bump-mapped (precomputed derivatives, exact and
 //! subdivided by 8; height differences per pixel) and normal-mapped, through the firmware's
@@ -101,7 +101,7 @@ fn main() {
         });
     }
     let mut md = String::from(
-        "# Surface detail: per-pixel lighting, bump and normal maps (issue 14)\n\n\
+        "# Surface detail: per-pixel lighting, bump and normal maps\n\n\
          The brick sphere of `fixel::demo::surface` (2208 triangles, 64 x 64 brick maps, strength 0.02), \
          frame 0 under the point light of frame 0, 160 x 160, exact perspective unless stated; vertices \
          prepared once per frame and counted. Per drawn pixel. Error against the f64 per-pixel reference \

@@ -1,4 +1,4 @@
-//! The f64 reference for displacement mapping (seed 000 §3.2), written from the formulas;
+//! The f64 reference for displacement mapping, written from the formulas;
 //! it shares only data (the mesh, the height bytes) and the documented conventions (the
 //! order of the children and of the new vertices, which copies are welded) with fixel.
 //!

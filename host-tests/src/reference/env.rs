@@ -1,5 +1,5 @@
-//! Environment mapping in f64, written from the formulas (seed 000 §3.3, GL ES 3.0
-//! §3.8.10), sharing only data with fixel (texels, vertex bits).
+//! Environment mapping in f64, written from the formulas (Blinn & Newell; OpenGL ES
+//! 3.2's cube map texture selection), sharing only data with fixel (texels, vertex bits).
 //!
 //! * [`reflect`]: `r = 2 (n·v) n − (n·n) v`, the mirror image of `v` about `n` (any
 //!   lengths; the direction of the unit formula `2 (n̂·v̂) n̂ − v̂`).
@@ -66,8 +66,8 @@ pub fn cube_sample(faces: &[RefTexture; 6], d: [f64; 3], filter: RefFilter) -> [
     )
 }
 
-/// GL's seamless cube-map bilinear filter (`TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6
-/// §8.14.1) in direction `d`: the four taps around `(s n − 1/2, t n − 1/2)`; a tap outside
+/// GL's seamless cube-map bilinear filter (`TEXTURE_CUBE_MAP_SEAMLESS`, OpenGL 4.6)
+/// in direction `d`: the four taps around `(s n − 1/2, t n − 1/2)`; a tap outside
 /// the face is the texel, on whichever face it lands, that contains the tap's centre on
 /// the face's extended plane (found by GL's face selection of that point); a tap outside in
 /// both `i` and `j` is the average of the other three, as the specification recommends.
@@ -268,7 +268,7 @@ pub fn cube_sample_trilinear(
     )
 }
 
-/// Sphere-map `(s, t)` of direction `d` (seed 000 §3.3): `r̂ = d / |d|`,
+/// Sphere-map `(s, t)` of direction `d`: `r̂ = d / |d|`,
 /// `m = 2 sqrt(r̂x² + r̂y² + (r̂z + 1)²)`, `s = r̂x / m + 1/2`, `t = r̂y / m + 1/2`. At the
 /// rim singularity (`m = 0`, `r̂ = (0, 0, -1)`) and for the zero direction: fixel's
 /// documented choices, `(1, 1/2)` and `(1/2, 1/2)`.
@@ -338,7 +338,8 @@ pub fn texel_dir(face: usize, i: u32, j: u32, size: u32) -> [f64; 3] {
     d.map(|c| c / l)
 }
 
-/// Seed 000 §3.3.3 by brute force, in f64: the environment `faces` (RGB565, GL order)
+/// Diffuse and glossy environment maps by brute force, in f64: the environment `faces`
+/// (RGB565, GL order)
 /// convolved with the cosine lobe (`exponent = None`: `(1/π) ∫ L max(0, n·ω) dω`) or the
 /// Phong lobe (`((e + 1)/2π) ∫ L max(0, r·ω)^e dω`) in unit direction `n`, each source texel
 /// weighted by its solid angle `(2/S)² / (1 + sc² + tc²)^(3/2)`.

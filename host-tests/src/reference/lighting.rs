@@ -1,4 +1,4 @@
-//! The f64 reference for per-pixel lighting and bump mapping (seed 000 §3.1, seed 004),
+//! The f64 reference for per-pixel lighting and bump mapping,
 //! written from the formulas; it shares only data with fixel (the mesh arrays, the
 //! matrices, the light, the textures and the height bytes).
 //!

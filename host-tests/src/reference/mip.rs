@@ -1,5 +1,5 @@
 //! Mipmapping in the reference renderer, written from Williams' pyramid and
-//! GL ES 3.0 §3.8.11, in f64 (it shares no code with fixel's `texture::mip`).
+//! OpenGL ES 3.2's mipmapping, in f64 (it shares no code with fixel's `texture::mip`).
 //!
 //! * Chain: level `k` is `max(1, w >> k) x max(1, h >> k)`. The chain is
 //!   *data*, so it is built with the same integer rule as fixel's: a 2 x 2

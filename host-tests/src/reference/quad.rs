@@ -1,4 +1,4 @@
-//! The f64 reference for projective quads (seed 000 §2.1): Heckbert's square-to-quad
+//! The f64 reference for projective quads: Heckbert's square-to-quad
 //! homography from the formulas, its inverse by the adjugate, and the two clip-space
 //! triangles (corner `w` = the homography's denominator) through which the reference
 //! rasterizer's hyperbolic interpolation reproduces the map.

@@ -1,5 +1,5 @@
 //! Texture sampling of the reference renderer, straight from the OpenGL ES 3.0
-//! rules (§3.8.10 wrap, §3.8.11 filters), in f64. Texel-space coordinates are
+//! rules (coordinate wrapping, filters), in f64. Texel-space coordinates are
 //! `u = s * width`, `v = t * height`. NEAREST takes `wrap(floor(u))`; LINEAR
 //! takes `i0 = floor(u - 0.5)`, `alpha = frac(u - 0.5)` and blends the four
 //! wrapped texels `(i0|i0+1, j0|j0+1)`. Texels are RGB565 expanded to

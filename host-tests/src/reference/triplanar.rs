@@ -1,4 +1,4 @@
-//! The f64 reference for triplanar mapping (three planar projections, seed 000 §2, blended
+//! The f64 reference for triplanar mapping (three planar projections, blended
 //! by the normal): its own perspective-correct interpolation of the point, normal and
 //! intensity from the exact window positions, the weights from the formula, and the
 //! reference bilinear sampler. Shares only data with fixel (the vertices and the texture).

@@ -1,4 +1,4 @@
-//! The f64 reference for two-stage mapping (seed 000 §2.2, Bier and Sloan; seed 001's
+//! The f64 reference for two-stage mapping (Bier & Sloan, "Two-Part Texture Mappings"; the
 //! cylinder S-mapping `u = atan2`, `v = height`): ray and surface intersections from the
 //! formulas in f64, then the S-mappings of [`super::uv_gen`]. Shares only the conventions
 //! (axes, seam, face layouts) with fixel.

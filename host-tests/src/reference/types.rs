@@ -60,7 +60,7 @@ pub enum RefFilter {
     Bilinear,
 }
 
-/// Filtering between mip levels (GL ES 3.0 §3.8.11).
+/// Filtering between mip levels (OpenGL ES 3.2, mipmapping).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RefMip {
     /// No mipmapping: the minification filter samples level 0.
@@ -94,7 +94,7 @@ impl Default for RefLod {
     }
 }
 
-/// Texture wrap mode, applied to integer texel indices (GL ES 3.0 §3.8.10).
+/// Texture wrap mode, applied to integer texel indices (OpenGL ES 3.2, coordinate wrapping).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RefWrap {
     /// GL_REPEAT.

@@ -1,4 +1,4 @@
-//! The f64 reference for fixel's texture-coordinate generators (seed 000 §2: planar,
+//! The f64 reference for fixel's texture-coordinate generators (planar,
 //! cylindrical and spherical projections), written from the formulas with `f64::atan2` and
 //! `f64::asin`; it shares only the conventions (which axis is up, where the seam is) with
 //! fixel.

@@ -1,4 +1,4 @@
-//! Hard-case stability suite (issue 3, item 5): slivers, needles, fill-rule ties, fans and
+//! Hard-case stability suite: slivers, needles, fill-rule ties, fans and
 //! strips, the near plane and w near zero, enormous and limit coordinates, extreme texture
 //! coordinates and sizes, depth extremes and precision, degenerate input.
 //!

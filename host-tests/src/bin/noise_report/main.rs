@@ -1,4 +1,4 @@
-//! Speed against error for the solid textures (issue 13), run by `cargo xtask report` after
+//! Speed against error for the solid textures, run by `cargo xtask report` after
 //! the main report:
 //!
 //! ```text

@@ -1,4 +1,4 @@
-//! `cargo xtask report`, environment mapping (issue 11): one row per variant of the
+//! `cargo xtask report`, environment mapping: one row per variant of the
 //! environment-mapped benchmark sphere (frame 0, the 64-texel procedural sky cube map,
 //! exact perspective): reflection per pixel or per vertex, nearest or bilinear; then the
 //! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map; then the
@@ -85,7 +85,7 @@ fn main() {
     let cubem = mesh(&fixel::demo::cube(), &fixel::demo::cube_model(0));
 
     let mut md = String::from(
-        "## Environment mapping (issue 11)\n\n\
+        "## Environment mapping\n\n\
          Benchmark sphere, frame 0, mirroring the procedural sky cube map (six 64 x 64 faces), \
          exact perspective, depth-tested, 320 x 240. Host: median of the runs, whole frame. \
          MCU: exact instructions per pixel of `report_env` (QEMU, frame 0 in 8-row bands, \

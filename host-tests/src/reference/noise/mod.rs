@@ -1,6 +1,6 @@
 //! The f64 reference for fixel's solid textures, written from the published algorithm
 //! (Perlin, "Improving Noise", SIGGRAPH 2002, and his Java reference code) and the seeds'
-//! formulas (seed `000` §4.1.1 turbulence and its truncation at the pixel size; marble as
+//! formulas (Perlin's turbulence and its truncation at the pixel size; marble as
 //! `sin(x + turbulence)`; wood rings). It shares only data with fixel: the permutation
 //! table, the colour-ramp keys and pattern constants, and the vertices.
 //!

@@ -123,7 +123,7 @@ impl RefPattern {
     }
 }
 
-/// The flame of seed `000` §4.2 as fixel defines it (`fixel::shading::noise::flame`), in
+/// The flame as fixel defines it (`fixel::shading::noise::flame`), in
 /// f64: turbulence at `(2x, 2y − rise·t, churn·t)`, bend `= gain · (turbulence − mid)`,
 /// colour `ramp(|x| + y/2 + bend)` times the fade `1 − y + bend / 2`. `x`, `y` in flame
 /// units, `t` in seconds; constants from fixel's (data).

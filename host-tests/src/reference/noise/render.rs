@@ -175,7 +175,7 @@ pub fn footprint_pair(p: &[[f64; 3]; 3]) -> (usize, usize) {
     }
 }
 
-/// A baked 3D light map read back in f64 (seed `000` §4.3): trilinear interpolation of the
+/// A baked 3D light map read back in f64: trilinear interpolation of the
 /// `side³` texels (`x` fastest, `255` = 1.0) between texel centres `origin + (i + 0.5) ·
 /// texel` (cells), clamp-to-edge; `0..=1`.
 pub fn light_map_trilinear(
@@ -209,7 +209,7 @@ pub fn light_map_trilinear(
     l(plane(k), plane(k + 1), fz) / 255.0
 }
 
-/// The light a 3D light map is baked from, unbaked (seed `000` §4.3): `min(1, ambient +
+/// The light a 3D light map is baked from, unbaked: `min(1, ambient +
 /// Σ power / max(d², 1/16))`, `d` the distance in cells from `p` to each light (`[x, y, z,
 /// power]`).
 pub fn inverse_square(lights: &[[f64; 4]], ambient: f64, p: [f64; 3]) -> f64 {
