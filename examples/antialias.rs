@@ -1,4 +1,4 @@
-//! Anti-aliasing (seed 004) on the benchmark cube and sphere: no anti-aliasing, 2 x 2
+//! Anti-aliasing on the benchmark cube and sphere: no anti-aliasing, 2 x 2
 //! regular-grid supersampling (a 2-times frame resolved by `fixel::surface::resolve_box`),
 //! 2 x 2 stratified jitter and the 4-sample rotated grid accumulated from jittered frames
 //! (`fixel::scene::jittered`, `fixel::surface::Accumulator`), and 4 x 4 supersampling, side

@@ -1,4 +1,4 @@
-//! Displacement mapping (seed 000 §3.2, `fixel::scene::displace`): the demo sphere as it is
+//! Displacement mapping (`fixel::scene::displace`): the demo sphere as it is
 //! (its texture coloured by the height map, so the detail is only painted on), the same
 //! sphere subdivided once and displaced by the height map (the silhouette turns rocky and
 //! the lighting follows the recomputed normals), and a water surface: a flat grid

@@ -1,4 +1,4 @@
-//! Cube-map filtering showcase (issue 11): seams and mipmaps on the mirror sphere in the
+//! Cube-map filtering showcase: seams and mipmaps on the mirror sphere in the
 //! procedural sky of `fixel::shading::env::sky`.
 //!
 //! ```text

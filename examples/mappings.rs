@@ -1,10 +1,10 @@
-//! Texture-coordinate generation (seed 000 §2) on the Utah teapot, baked from its public
+//! Texture-coordinate generation on the Utah teapot, baked from its public
 //! patch data (`cargo xtask teapot`, then `cargo xtask bake-obj`): the same teapot and UV
 //! test grid under the planar, cylindrical and spherical generators of
 //! `fixel::scene::map_mesh`, and the cylindrical one without the per-triangle seam fix (the
 //! column of triangles across the seam shows the whole texture squeezed backwards), and
 //! triplanar mapping per pixel (`fixel::shading::triplanar`), which needs no coordinates.
-//! Also `two_stage.png`: two-stage mapping (seed 000 §2.2), a row per intermediate surface
+//! Also `two_stage.png`: two-stage mapping (Bier & Sloan 1986), a row per intermediate surface
 //! (plane, cylinder, sphere, box) and a column per O-mapping rule (reflected ray, object
 //! normal, centroid, surface normal).
 //!

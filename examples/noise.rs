@@ -3,7 +3,7 @@
 //! the marble teapot (`noise_teapot.png`: the Utah teapot carved from one block), and marble
 //! that changes shape over time through 4D noise (`noise_marble4d.gif`).
 //! Also writes the same scene with 6 fixed octaves (aliasing on the floor) and the animated
-//! flame of seed `000` §4.2 as a GIF (48 frames, 2 s loop).
+//! flame as a GIF (48 frames, 2 s loop).
 //!
 //! `cargo run --release --example noise` (pictures in `target/pictures/`).
 

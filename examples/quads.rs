@@ -1,4 +1,4 @@
-//! Projective quads for user interfaces (seed 000 §2.1): a clock dial and a photo drawn onto
+//! Projective quads for user interfaces: a clock dial and a photo drawn onto
 //! arbitrary four-corner shapes with `fixel::scene::draw_quad` (exact projective mapping, no
 //! 3D set-up), beside the same photo drawn as two affine triangles (the classic seam).
 //!

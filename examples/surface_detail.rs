@@ -1,4 +1,4 @@
-//! Surface detail (seed 000 §3, seed 004): per-pixel lighting and bump mapping on a brick
+//! Surface detail: per-pixel lighting and bump mapping on a brick
 //! sphere under a point light.
 //!
 //! * `lighting.png`: one plain sphere lit per vertex (Gouraud), per pixel with Phong, and

@@ -1,4 +1,4 @@
-//! Transparency (issue 16): the benchmark floor and cube drawn opaque, then a picket fence
+//! Transparency: the benchmark floor and cube drawn opaque, then a picket fence
 //! cut out by alpha test (it writes depth), a stained-glass window blended over with an
 //! alpha plane, and an additive glow, the translucent quads sorted back to front.
 //!

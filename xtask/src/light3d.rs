@@ -1,4 +1,4 @@
-//! `cargo xtask bake-light3d`: a 3D light map (seed `000` §4.3) for
+//! `cargo xtask bake-light3d`: a 3D light map for
 //! `fixel::shading::noise::LightMap3d`, baked from point lights with inverse-square
 //! falloff into a Rust source file of `static` texels.
 //!

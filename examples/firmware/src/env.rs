@@ -1,4 +1,4 @@
-//! The environment-mapping frame (issue 11), band by band: the benchmark sphere (frame 0,
+//! The environment-mapping frame, band by band: the benchmark sphere (frame 0,
 //! radius 1.5 at z = -5) as a mirror in the procedural sky cube map
 //! (`fixel::shading::env::sky`, 64-texel faces), bilinear within a face, per-pixel or
 //! per-vertex reflection. Shared word for word by the firmware (`env_*` bins) and the host

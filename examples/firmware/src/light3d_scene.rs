@@ -1,4 +1,4 @@
-//! Scene `noise_light3d` (issue 13, seed `000` §4.3): the wooden cube lit by the baked 3D
+//! Scene `noise_light3d`: the wooden cube lit by the baked 3D
 //! light map (`examples/common/light3d_cube.rs`, `cargo xtask bake-light3d`: two point
 //! lights with inverse-square falloff in the cube's own space, 16³ texels, 4 KB of flash)
 //! instead of a per-vertex light. Band-limited wood (at most 6 octaves, footprint per span),

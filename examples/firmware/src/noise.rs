@@ -1,4 +1,4 @@
-//! The solid-texture scene (issue 13): a marble sphere (a 12 x 24 UV sphere, radius 1.5,
+//! The solid-texture scene: a marble sphere (a 12 x 24 UV sphere, radius 1.5,
 //! lattice scale 1.8 cells per unit) drawn with fixel's `SolidShader`, 320x240 in bands of
 //! 8 rows, no depth buffer (one convex object, back faces culled).
 //!

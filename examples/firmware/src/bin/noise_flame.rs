@@ -1,4 +1,4 @@
-//! Scene `noise_flame`: the animated flame of seed `000` §4.2 as a firmware loop: 4 frames
+//! Scene `noise_flame`: the animated flame as a firmware loop: 4 frames
 //! (t = 0, 1/8, 2/8, 3/8 s) of an 80 x 96 quad, 5 octaves, one checksum over all frames.
 #![no_std]
 #![no_main]

@@ -1,4 +1,4 @@
-//! `cargo xtask report`: texture-coordinate generation (issue 15) on the Utah teapot baked
+//! `cargo xtask report`: texture-coordinate generation on the Utah teapot baked
 //! from OBJ: each per-vertex generator of `mapping::GENERATORS` over its 860 vertices
 //! (`pixels` = vertices, so the figure is instructions per vertex), then the triplanar
 //! teapot frame and the teapot with cylindrical coordinates per pixel (240 x 180, per pixel; in the report memory layout only: the frame does not
