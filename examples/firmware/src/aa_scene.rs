@@ -82,12 +82,7 @@ pub fn aa_cube<const P: usize>(
                 });
                 crate::scenes::geometry_done();
             },
-            |band| {
-                pause();
-                sum.pixels(band.pixels());
-                resume();
-                Ok::<(), Error>(())
-            },
+            sum.band_flush::<Error>(pause, resume),
         )
         .map_err(|e| match e {
             BandError::Input(e) | BandError::Flush(e) => e,

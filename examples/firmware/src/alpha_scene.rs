@@ -191,12 +191,7 @@ pub fn transparency_in(
                 crate::scenes::geometry_done();
             }
         },
-        |band| {
-            pause();
-            sum.pixels(band.pixels());
-            resume();
-            Ok::<(), core::convert::Infallible>(())
-        },
+        sum.band_flush::<core::convert::Infallible>(pause, resume),
     )?;
     Ok(FrameResult {
         checksum: sum.0,

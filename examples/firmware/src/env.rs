@@ -143,12 +143,7 @@ where
                 crate::scenes::geometry_done();
             }
         },
-        |band| {
-            pause();
-            hash.pixels(band.pixels());
-            resume();
-            Ok::<(), core::convert::Infallible>(())
-        },
+        hash.band_flush::<core::convert::Infallible>(pause, resume),
     )?;
     Ok(FrameResult {
         checksum: hash.0,

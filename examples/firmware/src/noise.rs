@@ -160,12 +160,7 @@ pub fn render_in<S: Shader<Varyings = [i32; 4]>, P: ProjectionStage>(
                 crate::scenes::geometry_done();
             }
         },
-        |band| {
-            pause();
-            sum.pixels(band.pixels());
-            resume();
-            Ok::<(), core::convert::Infallible>(())
-        },
+        sum.band_flush::<core::convert::Infallible>(pause, resume),
     )?;
     Ok(FrameResult {
         checksum: sum.0,

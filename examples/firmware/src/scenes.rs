@@ -121,6 +121,21 @@ impl Fnv1a {
         }
         self.0 = h;
     }
+
+    /// The flush of a banded frame: each band's pixels fed in order, between `pause` and
+    /// `resume` (the checksum is not the frame's cost).
+    pub fn band_flush<'s, E>(
+        &'s mut self,
+        pause: &'s mut dyn FnMut(),
+        resume: &'s mut dyn FnMut(),
+    ) -> impl FnMut(&Frame<'_, Rgb565>) -> Result<(), E> + 's {
+        move |band| {
+            pause();
+            self.pixels(band.pixels());
+            resume();
+            Ok(())
+        }
+    }
 }
 
 /// Buffers a band renderer needs: colour band, depth band, triangle bins, `R` band ranges
@@ -305,12 +320,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
                 geometry_done();
             }
         },
-        |band| {
-            pause();
-            sum.pixels(band.pixels());
-            resume();
-            Ok::<(), Infallible>(())
-        },
+        sum.band_flush::<Infallible>(pause, resume),
     )?;
     Ok(FrameResult {
         checksum: sum.0,
