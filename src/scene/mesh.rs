@@ -45,21 +45,7 @@ impl<'a> Mesh<'a> {
         indices: &'a [[u16; 3]],
     ) -> Result<Self, Error> {
         let n = positions.len();
-        if n > 1 << 16 {
-            return Err(Error::MeshTooLarge {
-                what: "vertices",
-                count: n,
-                limit: 1 << 16,
-            });
-        }
-        if let Some(nm) = normals {
-            if nm.len() != n {
-                return Err(Error::WrongLength {
-                    expected: n,
-                    actual: nm.len(),
-                });
-            }
-        }
+        check_vertices(n, normals)?;
         if uvs.len() != n {
             return Err(Error::WrongLength {
                 expected: n,
@@ -126,6 +112,25 @@ impl<'a> Mesh<'a> {
     /// The triangles.
     pub fn indices(&self) -> &'a [[u16; 3]] {
         self.indices
+    }
+}
+
+/// At most 65536 positions (what a `u16` index reaches) and, if there are normals, one per
+/// position.
+pub(crate) fn check_vertices(positions: usize, normals: Option<&[Vec3]>) -> Result<(), Error> {
+    if positions > 1 << 16 {
+        return Err(Error::MeshTooLarge {
+            what: "vertices",
+            count: positions,
+            limit: 1 << 16,
+        });
+    }
+    match normals {
+        Some(nm) if nm.len() != positions => Err(Error::WrongLength {
+            expected: positions,
+            actual: nm.len(),
+        }),
+        _ => Ok(()),
     }
 }
 

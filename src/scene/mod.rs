@@ -50,7 +50,7 @@ pub use face_cull::FacingTest;
 pub use face_planes::{face_planes, write_face_planes, FacePlane};
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
-pub(crate) use mesh::check_indices;
+pub(crate) use mesh::{check_indices, check_vertices};
 pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };

@@ -3,7 +3,7 @@
 
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
-use crate::scene::{check_indices, Camera, DirectionalLight};
+use crate::scene::{check_indices, check_vertices, Camera, DirectionalLight};
 use crate::Error;
 
 /// The object-space point `p · scale` as I16F16 lattice-unit bits (saturating).
@@ -44,21 +44,7 @@ impl<'a> SolidMesh<'a> {
         scale: Fx,
     ) -> Result<Self, Error> {
         let n = positions.len();
-        if n > 1 << 16 {
-            return Err(Error::MeshTooLarge {
-                what: "vertices",
-                count: n,
-                limit: 1 << 16,
-            });
-        }
-        if let Some(nm) = normals {
-            if nm.len() != n {
-                return Err(Error::WrongLength {
-                    expected: n,
-                    actual: nm.len(),
-                });
-            }
-        }
+        check_vertices(n, normals)?;
         check_indices(indices, n)?;
         Ok(SolidMesh {
             positions,
