@@ -78,6 +78,43 @@ fn main() {
     let f = Box::new(fixel::demo::fine_sphere());
     fs::write(out.join("fine_sphere.rs"), mesh_source(&f)).unwrap();
 
+    // The bump scene's brick sphere (texture coordinates 4 x 2 around), its tangents and
+    // the 64 x 64 brick maps: colours, and the derivative map of the heights' mip chain.
+    {
+        let (sphere, tangents) = fixel::demo::surface::sphere().unwrap();
+        fs::write(out.join("brick_sphere.rs"), mesh_source(&sphere)).unwrap();
+        let mut src = String::from("[");
+        for t in &tangents {
+            let d = t.direction;
+            let _ = write!(
+                src,
+                "tangent({},{},{},{}),",
+                d.x.to_bits(),
+                d.y.to_bits(),
+                d.z.to_bits(),
+                t.handedness
+            );
+        }
+        src.push(']');
+        fs::write(out.join("brick_tangents.rs"), src).unwrap();
+        let (n, levels) = (64u32, 7u32);
+        let chain = fixel::texture::chain_len(n, n, levels);
+        let mut colours = vec![Rgb565::new(0, 0, 0); (n * n) as usize];
+        let mut heights = vec![0u8; chain];
+        let mut derivs = vec![Rgb565::new(0, 0, 0); chain];
+        let scale =
+            fixel::demo::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
+                .unwrap();
+        for (name, t) in [("brick-colours", &colours), ("brick-derivs", &derivs)] {
+            let bytes: Vec<u8> = t
+                .iter()
+                .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+                .collect();
+            fs::write(out.join(format!("{name}.bin")), bytes).unwrap();
+        }
+        fs::write(out.join("brick_scale.rs"), format!("{}", scale.to_bits())).unwrap();
+    }
+
     // The environment-mapping scene's cube map: the procedural sky, six 64 x 64 faces.
     for face in 0..6 {
         let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];

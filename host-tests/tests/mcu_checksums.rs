@@ -23,6 +23,9 @@ mod alpha_scene;
 #[path = "../../examples/firmware/src/bump_scene.rs"]
 mod bump_scene;
 
+#[path = "../../examples/firmware/src/open_frame.rs"]
+mod open_frame;
+
 #[allow(dead_code)] // the scene needs no tangents
 mod teapot {
     include!("../../assets/teapot/teapot_mesh.rs");
@@ -197,7 +200,18 @@ fn mcu_frames() {
         (wf.checksum, wf.stats.pixels),
         "sphere: the sized footprints differ from the footprints"
     );
-    print("whole_sphere_sized", &ws);
+    // And in bands (the `sphere_sized` firmware).
+    let rs = scenes::sphere_mip_as::<scenes::LitSphereSized, _, _, _, _>(
+        Target::Bands(&mut *buf),
+        fp,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("sphere_sized", &rs);
+    print_whole("sphere_sized", &rs, &ws);
 
     // Anti-aliasing (rotated grid through 4-row bands) and transparency.
     let t128b = texture(128, 128);
@@ -251,19 +265,44 @@ fn mcu_frames() {
     .unwrap();
     print_whole("transparency", &r, &w);
 
-    // Per-pixel lighting with bump mapping (whole-frame layout on the MCUs).
-    let mut assets = Box::new(bump_scene::BumpAssets::zeroed());
-    bump_scene::BumpAssets::build(&mut assets).unwrap();
-    let (mut c, mut d) = (
-        vec![Rgb565::new(0, 0, 0); (scenes::W * scenes::H) as usize],
-        vec![0u16; (scenes::W * scenes::H) as usize],
-    );
-    let mut verts = vec![
-        fixel::geometry::Vertex::new([fixel::math::Fx::ZERO; 4], [0; 8]);
-        demo::SPHERE_VERTICES
-    ];
-    let r = bump_scene::bump(&assets, &mut c, &mut d, &mut verts, 0, &mut nop1, &mut nop2).unwrap();
+    // Per-pixel lighting with bump mapping: the firmware's flash tables, built here at run
+    // time by the same functions.
+    let (sphere, tangents) = fixel::demo::surface::sphere().unwrap();
+    let sphere = Box::new(sphere);
+    let chain = fixel::texture::chain_len(bump_scene::SIZE, bump_scene::SIZE, bump_scene::LEVELS);
+    let mut colours = vec![Rgb565::new(0, 0, 0); (bump_scene::SIZE * bump_scene::SIZE) as usize];
+    let (mut heights, mut derivs) = (vec![0u8; chain], vec![Rgb565::new(0, 0, 0); chain]);
+    let scale = fixel::demo::surface::brick_maps(
+        bump_scene::SIZE,
+        bump_scene::LEVELS,
+        &mut colours,
+        &mut heights,
+        &mut derivs,
+    )
+    .unwrap();
+    let assets = bump_scene::BumpAssets {
+        positions: &sphere.positions,
+        normals: &sphere.normals,
+        uvs: &sphere.uvs,
+        indices: &sphere.indices,
+        tangents: &tangents,
+        colours: &colours,
+        derivs: &derivs,
+        scale,
+    };
+    let mut bump_buf = Box::new(bump_scene::BumpBuffers::new());
+    let r = bump_scene::bump(&assets, &mut bump_buf, 0, &mut nop1, &mut nop2).unwrap();
     print("bump", &r);
+    let w = bump_scene::bump_whole(
+        &assets,
+        &mut whole_buf.color,
+        &mut whole_buf.depth,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("bump", &r, &w);
 
     // The teapot baked from OBJ (the firmware's `data::teapot`, the same generated file).
     let mesh = Mesh::new(
@@ -283,6 +322,16 @@ fn mcu_frames() {
     )
     .unwrap();
     print("teapot", &r);
+    let wr = scenes::teapot(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print_whole("teapot", &r, &wr);
     let w = whole::<scenes::LitSphere>(tex, &mesh, &scenes::teapot_model(0), 20, true);
     assert_eq!(
         w,
@@ -370,8 +419,11 @@ fn mcu_noise_frame() {
 /// The flame firmware (`examples/firmware/src/bin/noise_flame.rs`).
 fn mcu_noise_flame() {
     let mut color = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_PIXELS]);
-    let r = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
+    let w = noise::flame_frames(&mut color, 4, &mut || {}, &mut || {}).unwrap();
+    let mut band = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_BAND_PIXELS]);
+    let r = noise::flame_bands(&mut band, 4, &mut || {}, &mut || {}).unwrap();
     print("noise_flame", &r);
+    print_whole("noise_flame", &r, &w);
 }
 
 #[path = "../../examples/firmware/src/light3d_scene.rs"]
@@ -428,7 +480,7 @@ fn mcu_water() {
     let n = water_scene::WATER_VERTICES;
     let (mut p, mut nm) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let r = water_scene::water(
-        &mut buf,
+        Target::Bands(&mut *buf),
         tex,
         &mesh,
         &water_base::WATER_HEIGHTS,
@@ -440,6 +492,20 @@ fn mcu_water() {
     )
     .unwrap();
     print("water", &r);
+    let mut whole_buf = Box::new(Whole::new());
+    let w = water_scene::water(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        &water_base::WATER_HEIGHTS,
+        &mut p,
+        &mut nm,
+        3,
+        &mut || {},
+        &mut || {},
+    )
+    .unwrap();
+    print_whole("water", &r, &w);
     // The whole frame of the same displaced mesh gives the same picture.
     let d = water_scene::water_displacement(&water_base::WATER_HEIGHTS, 3).unwrap();
     let moved = fixel::scene::displace(&d, &mesh, None, &mut p, &mut nm).unwrap();

@@ -145,4 +145,25 @@ fn firmware_checksums_and_bands_equal_whole_frame() {
         println!("mcu-expected scene={name} checksum=0x{c:08x} pixels={px}");
     }
     assert_eq!(got, FIRMWARE);
+    // The whole-frame firmware's own path (`whole_shadow_single`).
+    let mut map = vec![0u16; shadow::MAP_TEXELS];
+    shadow::light_pass_culling(&high, &mut map, Cull::Back).unwrap();
+    let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); 320 * 240], vec![0u16; 320 * 240]);
+    let w = shadow::lit_pass_whole::<_, SingleTap, 6>(
+        &mut color,
+        &mut depth,
+        &map,
+        &high,
+        SceneLight::High,
+        c,
+        f,
+        &mut || (),
+        &mut || (),
+    )
+    .unwrap();
+    assert_eq!((w.checksum, w.stats.pixels), (got[2].1, pixels[2]));
+    println!(
+        "mcu-expected scene=whole_shadow_single checksum=0x{:08x} pixels={}",
+        w.checksum, w.stats.pixels
+    );
 }

@@ -357,6 +357,40 @@ impl<'a> LitMesh<'a> {
         )
     }
 
+    /// The vertex of [`LitMesh::bump_triangles`] at an index, built on demand (`None` past
+    /// the mesh or where a transform overflows): for a band renderer's geometry closure,
+    /// which builds only the triangles a band meets and stores no vertex per mesh vertex.
+    pub fn bump_vertex<'s>(
+        &'s self,
+        model: &Mat4,
+        camera: &Camera,
+        light: &'s PixelLight,
+    ) -> impl Fn(usize) -> Option<Vertex<8>> + use<'s, 'a> {
+        let mv = camera.view.mul(model);
+        self.builder(model, camera, light, move |i, v| self.bump_vary(&mv, i, v))
+    }
+
+    /// The vertex of [`LitMesh::phong_triangles`] at an index, built on demand (see
+    /// [`LitMesh::bump_vertex`]).
+    pub fn phong_vertex<'s>(
+        &'s self,
+        model: &Mat4,
+        camera: &Camera,
+        light: &'s PixelLight,
+    ) -> impl Fn(usize) -> Option<Vertex<8>> + use<'s, 'a> {
+        self.builder(model, camera, light, Self::phong_vary)
+    }
+
+    /// The triangles' vertex indices.
+    pub fn indices(&self) -> &'a [[u16; 3]] {
+        self.indices
+    }
+
+    /// The vertex positions (model space).
+    pub fn positions(&self) -> &'a [Vec3] {
+        self.positions
+    }
+
     /// Triangles for the built-in [`Gouraud`](crate::shading::Gouraud) shader: the same
     /// lighting model evaluated at the vertices, on a surface of colour `base` (raw RGB565):
     /// varyings `r, g, b` (Q8.16).

@@ -168,3 +168,38 @@ pub static SKY_GLOSS16: [Rgb565; 6 * 256] =
 pub mod teapot {
     include!("../../../assets/teapot/teapot_mesh.rs");
 }
+
+const fn tangent(x: i32, y: i32, z: i32, handedness: i8) -> fixel::scene::Tangent {
+    fixel::scene::Tangent {
+        direction: v(x, y, z),
+        handedness,
+    }
+}
+
+/// The bump scene's brick sphere (`fixel::demo::surface::sphere()`: the benchmark sphere's
+/// tessellation, texture coordinates 4 x 2 around), ~52 KB of flash.
+pub static BRICK_SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
+    include!(concat!(env!("OUT_DIR"), "/brick_sphere.rs"));
+
+/// [`BRICK_SPHERE`]'s tangents (16 B each, 19.6 KB).
+pub static BRICK_TANGENTS: [fixel::scene::Tangent; SPHERE_VERTICES] =
+    include!(concat!(env!("OUT_DIR"), "/brick_tangents.rs"));
+
+/// Side of the brick maps.
+pub const BRICK_SIZE: u32 = 64;
+/// Mip levels of the brick derivative map.
+pub const BRICK_LEVELS: u32 = 7;
+
+/// The 64 x 64 brick colours (`fixel::demo::surface::brick_maps`), 8 KB.
+pub static BRICK_COLOURS: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/brick-colours.bin"
+)));
+
+/// The bricks' derivative map with its mip chain (5461 texels, ~11 KB).
+pub static BRICK_DERIVS: [Rgb565; fixel::texture::chain_len(64, 64, 7)] = texels(include_bytes!(
+    concat!(env!("OUT_DIR"), "/brick-derivs.bin")
+));
+
+/// The derivative map's scale (I16F16).
+pub const BRICK_SCALE: Fx = Fx::from_bits(include!(concat!(env!("OUT_DIR"), "/brick_scale.rs")));

@@ -15,14 +15,13 @@ use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Vec3;
 use fixel::pipeline::{DepthLess, ProjectionStage, ShadedDraw};
-use fixel::scene::triangles_to_sink;
 use fixel::shading::env::EnvVertices;
 use fixel::shading::Shader;
-use fixel::surface::{BandRange, BandRenderer, Binnable, Binned};
+use fixel::surface::{BandRange, Binnable};
 use fixel::texture::{Bilinear, Texture};
 use fixel::Error;
 
-use crate::scenes::{Fnv1a, FrameResult, BAND_PIXELS, H, ROWS, W};
+use crate::scenes::{FrameResult, BAND_PIXELS, H, W};
 
 /// Side of each cube-map face (6 x 64 x 64 x 2 B = 48 KB of flash).
 pub const ENV_SIZE: u32 = 64;
@@ -129,26 +128,17 @@ where
         };
         Some([v(t[0])?, v(t[1])?, v(t[2])?])
     };
-    let mut hash = Fnv1a::default();
-    let mut bands =
-        BandRenderer::new(&mut buf.color[..], W, ROWS, H)?.with_depth(&mut buf.depth[..])?;
-    let stats = bands.render_spans(
-        &[&draw],
-        &mut [] as &mut [Binned],
+    crate::open_frame::open_bands::<S, P, N>(
+        &mut buf.color,
+        &mut buf.depth,
         &mut buf.ranges,
+        &draw,
+        indices.len(),
+        tri,
         Rgb565::new(0, 0, 0),
-        |sink| {
-            triangles_to_sink(&draw, 0, indices.len(), 0, &tri, sink);
-            if sink.fresh() {
-                crate::scenes::geometry_done();
-            }
-        },
-        hash.band_flush::<core::convert::Infallible>(pause, resume),
-    )?;
-    Ok(FrameResult {
-        checksum: hash.0,
-        stats,
-    })
+        pause,
+        resume,
+    )
 }
 
 /// [`env_frame`] drawn into one whole frame (`color`, `depth`: 320 x 240) with the same
@@ -177,30 +167,24 @@ where
         Vec3::ZERO,
     );
     let draw = ShadedDraw::<S, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H)?, Cull::Back)?;
-    let mut frame = fixel::surface::Frame::new(color, W, H)?.with_depth(depth)?;
-    frame.clear(Rgb565::new(0, 0, 0));
-    let mut pixels = 0u32;
-    for t in indices {
+    let tri = |k: usize, _: bool| -> Option<[Vertex<N>; 3]> {
+        let t = indices.get(k)?;
         let v = |i: u16| {
             let i = usize::from(i);
             vertex(&setup, *positions.get(i)?, *normals.get(i)?)
         };
-        if let (Some(a), Some(b), Some(c)) = (v(t[0]), v(t[1]), v(t[2])) {
-            pixels = pixels.wrapping_add(draw.clip_triangles(&[[a, b, c]], &mut frame)?);
-        }
-    }
-    pause();
-    let mut hash = Fnv1a::default();
-    hash.pixels(frame.pixels());
-    resume();
-    Ok(FrameResult {
-        checksum: hash.0,
-        stats: fixel::surface::BandStats {
-            bands: 1,
-            pixels,
-            ..fixel::surface::BandStats::default()
-        },
-    })
+        Some([v(t[0])?, v(t[1])?, v(t[2])?])
+    };
+    crate::open_frame::open_whole::<S, P, N>(
+        color,
+        depth,
+        &draw,
+        indices.len(),
+        tri,
+        Rgb565::new(0, 0, 0),
+        pause,
+        resume,
+    )
 }
 
 /// A vertex for `EnvLit`: `n`, `v` as [`EnvVertices::per_pixel`], then the texture

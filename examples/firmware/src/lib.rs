@@ -14,6 +14,7 @@ pub mod data;
 pub mod env;
 pub mod mapping;
 pub mod modes;
+pub mod open_frame;
 pub mod scenes;
 #[cfg(fixel_fw_report)]
 pub mod shadow_modes;

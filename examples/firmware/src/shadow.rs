@@ -114,6 +114,52 @@ where
     )
 }
 
+/// [`lit_pass`]'s frame drawn whole into `color` / `depth` (320 x 240) from the map
+/// `map`, through the scene's own lit pass (`fixel::demo::shadow::lit_pass`): the figure
+/// the banded frame is compared with, and the same checksum.
+#[allow(clippy::too_many_arguments)]
+pub fn lit_pass_whole<K: LightKind, F: ShadowFilter, const M: usize>(
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+    map: &[u16],
+    space: &LightSpace<K>,
+    light: SceneLight,
+    cube_tex: Texture<'_>,
+    floor_tex: Texture<'_>,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    let map = fixel::surface::ShadowMap::new(map, MAP)?;
+    let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
+    let shader = |t| -> Result<Shadowed<'_, _, K, F, M>, Error> {
+        Shadowed::new(
+            ModulateIntensity {
+                tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
+            },
+            map,
+            Bias::for_filter::<F>(),
+        )
+    };
+    let vp = Viewport::new(0, 0, W, H)?;
+    let cube = ShadedDraw::<_, Exact, DepthLess>::new(shader(&ct)?, vp, Cull::Back)?;
+    let floor = ShadedDraw::<_, Exact, DepthLess>::new(shader(&ft)?, vp, Cull::Back)?;
+    let mut frame = fixel::surface::Frame::new(color, W, H)?.with_depth(depth)?;
+    frame.clear(Rgb565::new(4, 10, 14));
+    let pixels = scene::lit_pass([&cube, &floor], space, light, &mut frame)?;
+    pause();
+    let mut sum = Fnv1a::default();
+    sum.pixels(frame.pixels());
+    resume();
+    Ok(FrameResult {
+        checksum: sum.0,
+        stats: fixel::surface::BandStats {
+            bands: 1,
+            pixels,
+            ..fixel::surface::BandStats::default()
+        },
+    })
+}
+
 /// The same frame without shadows (the inner shader alone, same geometry, light-space
 /// varyings computed per vertex and dropped): the baseline of the lit pass's cost.
 pub fn unshadowed_pass<K: LightKind>(
@@ -235,6 +281,37 @@ where
         lit_pass::<_, F, M>(
             buf,
             space,
+            light,
+            core::hint::black_box(crate::data::T128),
+            core::hint::black_box(crate::data::T64),
+            pause,
+            resume,
+        )
+    })
+}
+
+/// The whole-frame twin of a directional `shadow_*` firmware: the light pass into `map`
+/// (not counted), then [`lit_pass_whole`] with filter `F`, counted and reported as `name`.
+#[cfg(target_os = "none")]
+pub fn run_whole_directional<F: ShadowFilter>(
+    name: &str,
+    light: SceneLight,
+    map: &mut [u16],
+    color: &mut [Rgb565],
+    depth: &mut [u16],
+) -> bool {
+    let Ok(space) = scene::directional(light) else {
+        return false;
+    };
+    if light_pass_culling(&space, map, Cull::Back).is_err() {
+        return false;
+    }
+    crate::report(name, |pause, resume| {
+        lit_pass_whole::<_, F, 6>(
+            color,
+            depth,
+            map,
+            &space,
             light,
             core::hint::black_box(crate::data::T128),
             core::hint::black_box(crate::data::T64),

@@ -61,10 +61,11 @@ pub fn water_displace_only(
 }
 
 /// Frame `i` of the scene: displace `base` (the flat grid) into `positions` and `normals`,
-/// then draw it lit with `texture` (the checker `T(64, 64)`).
+/// then draw it lit with `texture` (the checker `T(64, 64)`) into `buf` (in bands through
+/// [`WaterBuffers`], or whole).
 #[allow(clippy::too_many_arguments)]
-pub fn water(
-    buf: &mut WaterBuffers,
+pub fn water<const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
     texture: Texture<'_>,
     base: &Mesh<'_>,
     heights: &[u8],
@@ -76,8 +77,8 @@ pub fn water(
 ) -> Result<FrameResult, Error> {
     let d = water_displacement(heights, i)?;
     let mesh = displace(&d, base, None, positions, normals)?;
-    render::<LitSphere, WATER_TRIANGLES, 64, 0, WATER_SETUPS>(
-        Target::Bands(buf),
+    render::<LitSphere, R, V, B, S>(
+        buf,
         MipTexture::single(texture),
         &mesh,
         &water_model(),

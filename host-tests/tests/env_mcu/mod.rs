@@ -128,4 +128,17 @@ fn env_frames() {
         whole(ReflectPerVertex(cube), EnvVertices::per_vertex),
         (r.checksum, r.stats.pixels)
     );
+    let w = env::env_frame_whole::<_, Exact, 3>(
+        &mut wc,
+        &mut wd,
+        ReflectPerVertex(cube),
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.indices,
+        EnvVertices::per_vertex,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    crate::print_whole("env_vertex", &r, &w);
 }

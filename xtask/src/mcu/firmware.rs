@@ -38,7 +38,7 @@ pub(super) fn build_whole(td: &Path, keep: impl Fn(&str) -> bool) -> Result<(), 
     run_visible(
         &mut cmd,
         "(cd examples/firmware && FIXEL_FW_MEMORY=whole cargo build --release --features whole \
-         --target-dir target/whole --bin whole_* --bin bump --bin geometry --bin dsp_span (or the --only ones) \
+         --target-dir target/whole --bin whole_* --bin sphere_sized --bin geometry --bin dsp_span (or the --only ones) \
          --target <3 MCU targets>)",
     )
 }

@@ -10,6 +10,7 @@
 //! microcontroller part of `cargo xtask report`; `tools`, `firmware` and `qemu` build and
 //! run.
 
+mod bands;
 mod firmware;
 mod qemu;
 mod report;
@@ -66,7 +67,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 20] = [
+const SCENES: [&str; 21] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -96,26 +97,34 @@ const SCENES: [&str; 20] = [
     "transparency",
     // Run-time displacement: a subdivided grid displaced by a moving swell each frame.
     "water",
+    // Per-pixel lighting of a bump-mapped sphere (mesh and brick maps in flash).
+    "bump",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
-/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and the
-/// banded technique scenes; and `bump` (per-pixel lit, bump-mapped sphere), drawn whole
-/// only (its 48-byte prepared vertices, 59 KB, are kept for the frame).
-const WHOLE_SCENES: [&str; 13] = [
+/// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and with the
+/// banded scenes; and `sphere_sized`, the sphere in bands in its fastest mode, whose
+/// texture footprints (256 KB) need this layout's flash (its RAM is a band firmware's).
+const WHOLE_SCENES: [&str; 19] = [
     "whole_cube",
+    "sphere_sized",
     "whole_sphere",
     "whole_sphere_adaptive",
     "whole_sphere_footprint",
     "whole_sphere_sized",
+    "whole_teapot",
     "whole_floor",
     "whole_floor_bilinear",
-    "whole_env_pixel",
+    "whole_shadow_single",
     "whole_noise",
-    "whole_transparency",
-    "whole_aa_cube",
+    "whole_noise_flame",
     "whole_noise_light3d",
-    "bump",
+    "whole_env_pixel",
+    "whole_env_vertex",
+    "whole_aa_cube",
+    "whole_transparency",
+    "whole_water",
+    "whole_bump",
 ];
 
 /// The whole-frame firmwares' machines: the band firmwares' ones, whose memory suffices
@@ -163,6 +172,10 @@ pub struct McuArgs {
     /// geometry`); every scene and the geometry firmware when not given
     #[arg(long, value_name = "FIRMWARE", value_parser = firmware_name)]
     pub only: Vec<String>,
+    /// Write the tables to docs/mcu.md and the bands table into README.md's
+    /// `mcu-bands` region (a full run only)
+    #[arg(long)]
+    pub docs: bool,
 }
 
 impl Default for McuArgs {
@@ -173,6 +186,7 @@ impl Default for McuArgs {
             opt_s: false,
             no_install: false,
             only: Vec::new(),
+            docs: false,
         }
     }
 }

@@ -8,6 +8,7 @@ use std::path::Path;
 use std::process::{Command, ExitCode};
 use std::time::Instant;
 
+use super::bands::{self, Figures};
 use super::firmware::{build_firmware, build_whole, elf, sizes};
 use super::qemu::{kv, measure, measure_modes, num, qemu};
 use super::tools::{build_plugin, ensure_tools, output, qemu_version, run_visible, rustc_version};
@@ -228,9 +229,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         report.push_str("---:|");
     }
     report.push('\n');
-    let mut per_px: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
-    // Share of each banded count spent up to the end of the binning pass.
-    let mut geometry_share: BTreeMap<(String, &'static str), f64> = BTreeMap::new();
+    let mut figures = Figures::default();
     let sets: Vec<_> = SCENES
         .iter()
         .map(|s| (*s, &MCUS, &td))
@@ -285,9 +284,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
                     .join(" | ")
             ));
             let px = r.pixels.max(1) as f64;
-            per_px.insert((scene.to_string(), m.label), r.net as f64 / px);
+            let key = (scene.to_string(), m.label);
+            figures.per_px.insert(key.clone(), r.net as f64 / px);
+            figures.ram.insert(key.clone(), ram + r.stack);
             if let Some(g) = r.geometry {
-                geometry_share.insert((scene.to_string(), m.label), g as f64 / r.net.max(1) as f64);
+                figures.geometry.insert(key, g as f64 / r.net.max(1) as f64);
             }
             report.push_str(&format!(
                 "| {scene}{} | {} | {:.2} | {:.1} | {} | {} | {} | {} | {} ({} + {}) |",
@@ -358,24 +359,41 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
          clip, project, bin: `bench_geometry` in the scene), the rest in the bands (clears, \
          set-ups, spans, and the triangles a band re-projects).\n"
     );
-    println!(
-        "| scene | target | bands insns/px | geometry | bands - geometry | whole insns/px | bands / whole |\n|---|---|---:|---:|---:|---:|---:|"
-    );
-    for scene in SCENES {
-        for m in &MCUS {
-            let Some(b) = per_px.get(&(scene.to_string(), m.label)) else {
-                continue;
-            };
-            let g = geometry_share.get(&(scene.to_string(), m.label));
-            let w = per_px.get(&(format!("whole_{scene}"), m.label));
-            println!(
-                "| {scene} | {} | {b:.2} | {} | {} | {} | {} |",
-                m.label,
-                g.map_or("-".into(), |g| format!("{:.1} %", 100.0 * g)),
-                g.map_or("-".into(), |g| format!("{:.2}", b * (1.0 - g))),
-                w.map_or("-".into(), |w| format!("{w:.2}")),
-                w.map_or("-".into(), |w| format!("{:.3}", b / w)),
+    let (bands_table, missed) = bands::table(&figures);
+    print!("{bands_table}");
+    if missed.is_empty() {
+        println!(
+            "\nEvery banded technique scene is within {}x of its whole frame.",
+            bands::BAR
+        );
+    } else {
+        println!("\nBars missed (banded technique scene against its whole frame):");
+        for m in &missed {
+            println!("  {m}");
+        }
+    }
+    if flags.docs {
+        if !flags.only.is_empty() {
+            problems.push("--docs writes the tables of a full run: drop --only".into());
+        } else {
+            let compact = bands::compact(&figures);
+            let doc = format!(
+                "# Scenes on microcontrollers\n\nWritten by `cargo xtask mcu --docs` ({}, {}). \
+                 Frame 0 of each scene, 320 x 240 RGB565; exact instructions per drawn pixel \
+                 under QEMU; RAM = static data + measured stack.\n\n## Every scene\n\n{report}\n\
+                 ## Bands against the whole frame\n\n{bands_table}\n",
+                rustc_version(),
+                qemu_version()
             );
+            let results = [
+                fs::write(root().join("docs").join("mcu.md"), doc).map_err(|e| e.to_string()),
+                bands::write_region(&root().join("README.md"), "mcu-bands", &compact),
+            ];
+            for r in results {
+                if let Err(e) = r {
+                    problems.push(format!("--docs: {e}"));
+                }
+            }
         }
     }
     match geometry.unwrap_or(Ok(String::new())) {

@@ -1,35 +1,27 @@
 //! Scene `bump`, frame 0: the brick sphere bump-mapped from a precomputed derivative map and
-//! lit per pixel by a point light (`bump_scene.rs`), in one whole 320 x 240 frame (the
-//! whole-frame memory layout, `FIXEL_FW_MEMORY=whole`, feature `whole`).
+//! lit per pixel by a point light (`bump_scene.rs`), 320 x 240 in 8-row bands; the mesh and
+//! brick maps in flash.
 #![no_std]
 #![no_main]
 
 #[path = "../bump_scene.rs"]
+#[allow(dead_code)] // each binary draws one of the two frames
 mod bump_scene;
 
 use fixel_firmware::report;
-// `bump_scene.rs` names the shared scene helpers `crate::scenes`.
-use fixel_firmware::scenes;
+// `bump_scene.rs` names the shared scene helpers and tables `crate::scenes`,
+// `crate::open_frame` and `crate::data`.
+use fixel_firmware::{data, open_frame, scenes};
+
+static mut BUF: bump_scene::BumpBuffers = bump_scene::BumpBuffers::new();
 
 fn run() -> bool {
-    let mut assets = bump_scene::BumpAssets::zeroed();
-    if bump_scene::BumpAssets::build(&mut assets).is_err() {
-        return false;
-    }
-    let mut buf = scenes::Whole::new();
-    let mut vertices = [fixel::geometry::Vertex::new([fixel::math::Fx::ZERO; 4], [0; 8]);
-        fixel::demo::SPHERE_VERTICES];
+    // SAFETY: single-threaded firmware, the only reference to BUF.
+    let buf = unsafe { &mut *core::ptr::addr_of_mut!(BUF) };
+    let a = bump_scene::BumpAssets::flash();
     let frame = core::hint::black_box(0);
     report("bump", |pause, resume| {
-        bump_scene::bump(
-            &assets,
-            &mut buf.color,
-            &mut buf.depth,
-            &mut vertices,
-            frame,
-            pause,
-            resume,
-        )
+        bump_scene::bump(&a, buf, frame, pause, resume)
     })
 }
 

@@ -43,7 +43,7 @@ fn run() -> bool {
     let frame = core::hint::black_box(3);
     report("water", |pause, resume| {
         water_scene::water(
-            &mut buf,
+            scenes::Target::Bands(&mut buf),
             data::T64,
             &mesh,
             &base::WATER_HEIGHTS,

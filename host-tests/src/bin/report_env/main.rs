@@ -19,6 +19,9 @@
 #[allow(dead_code)]
 mod scenes;
 
+#[path = "../../../../examples/firmware/src/open_frame.rs"]
+mod open_frame;
+
 #[path = "../../../../examples/firmware/src/env.rs"]
 #[allow(dead_code)]
 mod env;

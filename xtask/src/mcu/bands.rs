@@ -1,0 +1,144 @@
+//! The bands-against-whole-frame tables of `cargo xtask mcu`: each banded scene's
+//! instructions per pixel beside the same frame drawn whole, the ratio, the share spent on
+//! geometry, and the firmware's RAM; the bars the one band path is held to; and the
+//! regions of `README.md` and `docs/mcu.md` that `--docs` rewrites.
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::Path;
+
+use super::{MCUS, SCENES, WHOLE_SCENES};
+
+/// A banded technique scene may cost at most this much more than its own whole frame.
+pub(super) const BAR: f64 = 1.3;
+
+/// Scenes held to [`BAR`]: every banded scene with a whole-frame twin. (The classic cube,
+/// floor, teapot and sphere in its slower mode are reported beside them.)
+const HELD: [&str; 11] = [
+    "sphere_sized",
+    "shadow_single",
+    "noise",
+    "noise_flame",
+    "noise_light3d",
+    "env_pixel",
+    "env_vertex",
+    "aa_cube",
+    "transparency",
+    "water",
+    "bump",
+];
+
+/// What one firmware run gave, by (scene, MCU label).
+#[derive(Default)]
+pub(super) struct Figures {
+    /// Instructions per drawn pixel.
+    pub per_px: BTreeMap<(String, &'static str), f64>,
+    /// Share of the banded count spent up to the end of the binning pass.
+    pub geometry: BTreeMap<(String, &'static str), f64>,
+    /// RAM: static data + measured stack, bytes.
+    pub ram: BTreeMap<(String, &'static str), u64>,
+}
+
+/// Every banded scene, in table order: the band firmwares, then the banded ones built in
+/// the whole layout (`sphere_sized`).
+fn banded() -> impl Iterator<Item = &'static str> {
+    SCENES
+        .iter()
+        .chain(WHOLE_SCENES.iter())
+        .copied()
+        .filter(|s| !s.starts_with("whole_"))
+}
+
+/// The full table (every MCU) and the bars missed.
+pub(super) fn table(f: &Figures) -> (String, Vec<String>) {
+    let mut t = String::from(
+        "| scene | target | bands insns/px | geometry | bands - geometry | whole insns/px | \
+         bands / whole | RAM B |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let mut missed = Vec::new();
+    for scene in banded() {
+        for m in &MCUS {
+            let key = (scene.to_string(), m.label);
+            let Some(b) = f.per_px.get(&key) else {
+                continue;
+            };
+            let g = f.geometry.get(&key);
+            let w = f.per_px.get(&(format!("whole_{scene}"), m.label));
+            let ratio = w.map(|w| b / w);
+            if let Some(r) = ratio.filter(|r| *r > BAR && HELD.contains(&scene)) {
+                missed.push(format!(
+                    "{scene} on {}: bands {r:.3}x the whole frame (bar {BAR})",
+                    m.label
+                ));
+            }
+            t.push_str(&format!(
+                "| {scene} | {} | {b:.2} | {} | {} | {} | {} | {} |\n",
+                m.label,
+                g.map_or("-".into(), |g| format!("{:.1} %", 100.0 * g)),
+                g.map_or("-".into(), |g| format!("{:.2}", b * (1.0 - g))),
+                w.map_or("-".into(), |w| format!("{w:.2}")),
+                ratio.map_or("-".into(), |r| format!("{r:.3}")),
+                f.ram.get(&key).map_or("-".into(), |r| r.to_string()),
+            ));
+        }
+    }
+    (t, missed)
+}
+
+/// The README's compact form: one row per scene, the three cores side by side.
+pub(super) fn compact(f: &Figures) -> String {
+    let mut t = String::from(
+        "| scene | instr/px in bands, M0+ / M4F / RV32 | bands / whole frame | geometry (M4F) | RAM (M4F) |\n\
+         |---|---:|---:|---:|---:|\n",
+    );
+    for scene in banded() {
+        let per = |label| f.per_px.get(&(scene.to_string(), label)).copied();
+        let ratio = |label| {
+            let b = per(label)?;
+            let w = f.per_px.get(&(format!("whole_{scene}"), label))?;
+            Some(b / w)
+        };
+        let three = |g: &dyn Fn(&'static str) -> Option<f64>, digits: usize| {
+            ["Cortex-M0+", "Cortex-M4F", "RV32IMC"]
+                .map(|l| g(l).map_or("-".into(), |v| format!("{v:.digits$}")))
+                .join(" / ")
+        };
+        if per("Cortex-M4F").is_none() {
+            continue;
+        }
+        let key = (scene.to_string(), "Cortex-M4F");
+        t.push_str(&format!(
+            "| {scene} | {} | {} | {} | {} |\n",
+            three(&per, 1),
+            three(&ratio, 2),
+            f.geometry
+                .get(&key)
+                .map_or("-".into(), |g| format!("{:.1} %", 100.0 * g)),
+            f.ram
+                .get(&key)
+                .map_or("-".into(), |r| format!("{:.1} KB", *r as f64 / 1024.0)),
+        ));
+    }
+    t
+}
+
+/// Replaces the text between `<!-- generated: NAME -->` and `<!-- end: NAME -->` in `file`
+/// with `body`; an error when the markers are missing.
+pub(crate) fn write_region(file: &Path, name: &str, body: &str) -> Result<(), String> {
+    let text = fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+    let (open, close) = (
+        format!("<!-- generated: {name} -->"),
+        format!("<!-- end: {name} -->"),
+    );
+    let (Some(a), Some(b)) = (text.find(&open), text.find(&close)) else {
+        return Err(format!(
+            "{}: no `{open}` ... `{close}` region to write",
+            file.display()
+        ));
+    };
+    if b < a {
+        return Err(format!("{}: `{close}` before `{open}`", file.display()));
+    }
+    let out = format!("{}{open}\n{body}{}", &text[..a], &text[b..]);
+    fs::write(file, out).map_err(|e| format!("{}: {e}", file.display()))
+}
