@@ -122,6 +122,57 @@ pub(super) fn compact(f: &Figures) -> String {
     t
 }
 
+/// TGX v1.1.4 (gcc 12.2 `-O2`, its own MCU configuration) on the benchmark scenes, in
+/// instructions per drawn pixel, whole frames, as counted by this project under the same
+/// QEMU plugin: (scene, fixel's scene name, Cortex-M4F, Cortex-M0+). TGX is measured once
+/// by hand: it is C++ outside this repository.
+const TGX: [(&str, &str, f64, f64); 4] = [
+    (
+        "cube: lit per face, bilinear from footprints, quadratic N=16",
+        "cube",
+        178.1,
+        2098.0,
+    ),
+    ("floor: nearest, subdivided N=64", "floor", 42.6, 1100.0),
+    (
+        "floor: bilinear from footprints, subdivided N=64",
+        "floor_bilinear",
+        167.7,
+        1997.0,
+    ),
+    (
+        "sphere: lit, bilinear from footprints of a size fixed at compile time, adaptive",
+        "sphere_sized",
+        246.1,
+        3899.0,
+    ),
+];
+
+/// The README's table against TGX: fixel in bands (the whole frame in brackets).
+pub(super) fn tgx(f: &Figures) -> String {
+    let mut t = String::from(
+        "| scene, fixel's mode | Cortex-M4F fixel, bands (whole) | TGX | Cortex-M0+ fixel, bands (whole) | TGX |\n\
+         |---|---:|---:|---:|---:|\n",
+    );
+    for (what, scene, m4, m0) in TGX {
+        let cell = |label| {
+            let b = f.per_px.get(&(scene.to_string(), label));
+            let w = f.per_px.get(&(format!("whole_{scene}"), label));
+            match (b, w) {
+                (Some(b), Some(w)) => format!("{b:.1} ({w:.1})"),
+                (Some(b), None) => format!("{b:.1}"),
+                _ => "-".into(),
+            }
+        };
+        t.push_str(&format!(
+            "| {what} | {} | {m4:.1} | {} | {m0:.0} |\n",
+            cell("Cortex-M4F"),
+            cell("Cortex-M0+"),
+        ));
+    }
+    t
+}
+
 /// Replaces the text between `<!-- generated: NAME -->` and `<!-- end: NAME -->` in `file`
 /// with `body`; an error when the markers are missing.
 pub(crate) fn write_region(file: &Path, name: &str, body: &str) -> Result<(), String> {

@@ -388,6 +388,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             let results = [
                 fs::write(root().join("docs").join("mcu.md"), doc).map_err(|e| e.to_string()),
                 bands::write_region(&root().join("README.md"), "mcu-bands", &compact),
+                bands::write_region(&root().join("README.md"), "tgx", &bands::tgx(&figures)),
             ];
             for r in results {
                 if let Err(e) = r {
