@@ -200,8 +200,8 @@ fn teapot_panel<'t, F: ShadowFilter>(
     let mut map = DepthMap::new(&mut texels, TMAP).unwrap();
     map.clear();
     let depth_draw = DepthOnlyDraw::new(&map, Cull::Back).unwrap();
-    light_pass_mesh(&depth_draw, &pot, &model, space, &mut map);
-    light_pass_mesh(&depth_draw, &floor, &Mat4::IDENTITY, space, &mut map);
+    light_pass_mesh(&depth_draw, &pot, &model, space, &mut map).unwrap();
+    light_pass_mesh(&depth_draw, &floor, &Mat4::IDENTITY, space, &mut map).unwrap();
     let vp = Viewport::new(0, 0, W, H).unwrap();
     let view = map.view();
     let draw = |t: &'t MipTexture<'t>| {

@@ -95,6 +95,9 @@ pub enum Error {
         /// Height the sampler is built for, texels.
         height: u32,
     },
+    /// A shadow map is not the size its light pass was built for (see
+    /// `pipeline::DepthOnlyDraw`); the field is the light pass's side, in texels.
+    ShadowMapSizeMismatch(u32),
     /// A fixed-capacity store is full.
     CapacityExceeded {
         /// Its capacity.
@@ -198,6 +201,10 @@ impl fmt::Display for Error {
             Error::TextureSizeMismatch { width, height } => write!(
                 f,
                 "texture is not the {width}x{height} texels the sampler is built for"
+            ),
+            Error::ShadowMapSizeMismatch(side) => write!(
+                f,
+                "shadow map is not the {side}x{side} texels its light pass is built for"
             ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "fixed capacity of {capacity} exceeded")

@@ -155,7 +155,8 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
     for m in meshes {
         let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
         let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
-        texels_written += light_pass_mesh(&light, &mesh, &m.model, space, &mut map);
+        texels_written +=
+            light_pass_mesh(&light, &mesh, &m.model, space, &mut map).expect("light pass");
     }
     let shader = Shadowed::<_, K, F, M>::new(Flat(0xFFFF), map.view(), s.bias)
         .expect("shader")

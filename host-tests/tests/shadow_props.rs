@@ -153,6 +153,26 @@ fn bad_input_is_refused_with_errors_that_say_what() {
         }
     );
     assert!(ShadowMap::new(&t, 16).is_err());
+    // A light pass built for a 64 x 64 map refuses a 32 x 32 one, and draws nothing into it.
+    let mut big = vec![0u16; 64 * 64];
+    let pass =
+        fixel::pipeline::DepthOnlyDraw::new(&DepthMap::new(&mut big, 64).unwrap(), Cull::Back)
+            .unwrap();
+    let mut small = vec![0xFFFFu16; 32 * 32];
+    let mut small_map = DepthMap::new(&mut small, 32).unwrap();
+    let space = scene::directional(SceneLight::High).unwrap();
+    let cube = fixel::demo::cube();
+    assert_eq!(
+        fixel::scene::light_pass_mesh(
+            &pass,
+            &cube.mesh().unwrap(),
+            &Mat4::IDENTITY,
+            &space,
+            &mut small_map
+        ),
+        Err(Error::ShadowMapSizeMismatch(64))
+    );
+    assert!(small.iter().all(|&t| t == 0xFFFF));
     let (o, up) = (Vec3::ZERO, Vec3::from_num(0, 1, 0));
     let eye = Vec3::from_num(1, 5, 1);
     let dir = |half: f64, near: f64, far: f64| {

@@ -171,8 +171,8 @@ pub fn light_pass_culling<K: LightKind>(
     map.clear();
     let draw = DepthOnlyDraw::new(map, cull)?;
     let (cube, model, floor) = meshes();
-    let mut n = light_pass_mesh(&draw, &cube.mesh()?, &model, space, map);
-    n += light_pass_mesh(&draw, &floor.mesh()?, &Mat4::IDENTITY, space, map);
+    let mut n = light_pass_mesh(&draw, &cube.mesh()?, &model, space, map)?;
+    n += light_pass_mesh(&draw, &floor.mesh()?, &Mat4::IDENTITY, space, map)?;
     Ok(n)
 }
 

@@ -37,10 +37,14 @@ use crate::Error;
 /// let mut map = DepthMap::new(&mut texels, 32)?;
 /// map.clear();
 /// let light = DepthOnlyDraw::new(&map, Cull::Back)?;
-/// let written = light.clip_triangles(&[tri], &mut map);
+/// let written = light.clip_triangles(&[tri], &mut map)?;
 /// assert!(written > 300);
 /// // z = 0 in NDC is the middle of the depth range.
 /// assert_eq!(map.texels()[16 * 32 + 16], 32767);
+/// // A map of another size than the pass was built for is refused, nothing drawn.
+/// let mut small = [0u16; 16 * 16];
+/// let mut small = DepthMap::new(&mut small, 16)?;
+/// assert_eq!(light.clip_triangles(&[tri], &mut small), Err(Error::ShadowMapSizeMismatch(32)));
 /// # Ok::<(), fixel::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
@@ -67,20 +71,38 @@ impl DepthOnlyDraw {
         &self.viewport
     }
 
+    /// Whether `map` is the size this light pass was built for.
+    ///
+    /// # Errors
+    /// [`Error::ShadowMapSizeMismatch`] (with this pass's side) when it is not.
+    pub fn check_map(&self, map: &DepthMap<'_>) -> Result<(), Error> {
+        let side = self.viewport.width();
+        if map.size() == side {
+            Ok(())
+        } else {
+            Err(Error::ShadowMapSizeMismatch(side))
+        }
+    }
+
     /// Clips, projects, culls and draws triangles given in the light's clip space; returns
     /// the texels written (nearer than what was there). Any varyings are ignored.
+    ///
+    /// # Errors
+    /// [`Error::ShadowMapSizeMismatch`] when `map` is not the size this pass was built for
+    /// (nothing is drawn).
     pub fn clip_triangles<const N: usize>(
         &self,
         tris: &[[Vertex<N>; 3]],
         map: &mut DepthMap<'_>,
-    ) -> u32 {
+    ) -> Result<u32, Error> {
+        self.check_map(map)?;
         let mut n = 0u32;
         for tri in tris {
             clip_and_project_varyings(tri, &self.viewport, self.cull, false, &mut |s| {
                 n = n.wrapping_add(self.screen_triangle(s, map));
             });
         }
-        n
+        Ok(n)
     }
 
     /// Draws one screen triangle (already clipped, projected and culled) into `map`;

@@ -17,13 +17,18 @@ use super::{Camera, DirectionalLight, Mesh};
 
 /// Draws `mesh` (placed by `model`) into the shadow map `map` as seen by `light`; returns
 /// the texels written. Triangles with a vertex outside the fixed-point range are skipped.
+///
+/// # Errors
+/// [`Error::ShadowMapSizeMismatch`](crate::Error::ShadowMapSizeMismatch) when `map` is not
+/// the size `draw` was built for (nothing is drawn).
 pub fn light_pass_mesh<K: LightKind>(
     draw: &DepthOnlyDraw,
     mesh: &Mesh<'_>,
     model: &Mat4,
     light: &LightSpace<K>,
     map: &mut DepthMap<'_>,
-) -> u32 {
+) -> Result<u32, crate::Error> {
+    draw.check_map(map)?;
     let m = light.with_model(model);
     let mut n = 0u32;
     for tri in mesh.indices {
@@ -32,10 +37,11 @@ pub fn light_pass_mesh<K: LightKind>(
             Some(Vertex::new([p.x, p.y, p.z, p.w], []))
         };
         if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
-            n = n.wrapping_add(draw.clip_triangles::<0>(&[[a, b, c]], map));
+            // The map's size was checked above.
+            n = n.wrapping_add(draw.clip_triangles::<0>(&[[a, b, c]], map).unwrap_or(0));
         }
     }
-    n
+    Ok(n)
 }
 
 /// Calls `emit` with each triangle of `mesh` for the lit pass: its classic clip-space

@@ -72,7 +72,7 @@
 //! map.clear();
 //! let light_draw = DepthOnlyDraw::new(&map, Cull::Back)?;
 //! for (mesh, model) in &meshes {
-//!     light_pass_mesh(&light_draw, mesh, model, &light, &mut map);
+//!     light_pass_mesh(&light_draw, mesh, model, &light, &mut map)?;
 //! }
 //!
 //! // 2. The lit pass: a Gouraud shader (r, g, b) shadowed: 3 + 3 varyings.
