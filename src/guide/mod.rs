@@ -85,3 +85,65 @@ pub mod accuracy {}
 
 #[doc = include_str!("troubleshooting.md")]
 pub mod troubleshooting {}
+
+#[cfg(test)]
+mod tests {
+    /// Every chapter, as the crate docs include it.
+    const CHAPTERS: [(&str, &str); 16] = [
+        ("mod.rs", include_str!("mod.rs")),
+        ("first_frame.md", include_str!("first_frame.md")),
+        ("bands.md", include_str!("bands.md")),
+        (
+            "projection_and_filter.md",
+            include_str!("projection_and_filter.md"),
+        ),
+        ("mipmaps.md", include_str!("mipmaps.md")),
+        ("environment_maps.md", include_str!("environment_maps.md")),
+        ("shadow_maps.md", include_str!("shadow_maps.md")),
+        ("solid_textures.md", include_str!("solid_textures.md")),
+        (
+            "texture_coordinates.md",
+            include_str!("texture_coordinates.md"),
+        ),
+        ("anti_aliasing.md", include_str!("anti_aliasing.md")),
+        ("transparency.md", include_str!("transparency.md")),
+        ("lighting.md", include_str!("lighting.md")),
+        ("displacement.md", include_str!("displacement.md")),
+        ("performance.md", include_str!("performance.md")),
+        ("accuracy.md", include_str!("accuracy.md")),
+        ("troubleshooting.md", include_str!("troubleshooting.md")),
+    ];
+
+    /// The first place where `text` names a work session, an issue or a seed section by
+    /// number (a word from `WORDS`, any case, followed by a digit).
+    fn history_at(text: &str) -> Option<usize> {
+        const WORDS: [&[u8]; 3] = [b"session ", b"issue ", b"seed 00"];
+        let b = text.as_bytes();
+        (0..b.len()).find(|&i| {
+            WORDS.iter().any(|w| {
+                b.get(i..i + w.len())
+                    .is_some_and(|s| s.eq_ignore_ascii_case(w))
+                    && b.get(i + w.len()).is_some_and(u8::is_ascii_digit)
+            })
+        })
+    }
+
+    #[test]
+    fn history_check_finds_numbered_sessions_issues_and_seed_sections() {
+        assert_eq!(history_at("Measured in Session\x2012."), Some(12));
+        assert_eq!(history_at("see issue\x2060"), Some(4));
+        assert_eq!(history_at("seed\x20000, section 3.4"), Some(0));
+        assert_eq!(history_at("a fixed seed; the issue is"), None);
+    }
+
+    #[test]
+    fn chapters_speak_in_the_present_tense() {
+        for (name, text) in CHAPTERS {
+            assert_eq!(
+                history_at(text),
+                None,
+                "{name} names a session, issue or seed section"
+            );
+        }
+    }
+}
