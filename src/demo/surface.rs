@@ -70,8 +70,8 @@ pub fn camera() -> Result<Camera, Error> {
 pub fn light(i: u32) -> PixelLight {
     let a = Angle((i.wrapping_mul(4096) as u16).wrapping_add(22938));
     // Integer products of raw bits (3.5 = 7 << 15): the RV32IMC build computed this light
-    // wrongly through `Fx::saturating_mul` once inlined into the `bump` firmware (see the
-    // session notes); plain i64 products give every target the host's value.
+    // wrongly through `Fx::saturating_mul` once inlined into the `bump` firmware; plain i64
+    // products give every target the host's value.
     let (s, c) = (i64::from(a.sin().to_bits()), i64::from(a.cos().to_bits()));
     let r = 7i64 << 15;
     let bits = |v: i64| Fx::from_bits(v as i32);

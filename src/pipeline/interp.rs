@@ -3,7 +3,7 @@
 //! * [`Linear`] (affine, `SUBDIVIDED = false`): adds per pixel, nothing else.
 //! * [`ExactInterp`]: steps `s = u q`, `t = v q`, `q` (and colour times `q`) linearly and
 //!   recovers `u = s / q` at every pixel through one table reciprocal and one 32x32->64
-//!   multiply per attribute (the seeds' hyperbolic interpolation).
+//!   multiply per attribute (hyperbolic interpolation, as in Blinn, "Hyperbolic Interpolation", IEEE CG&A 1992).
 //! * [`Linear`] with `SUBDIVIDED = true`: exact at every `N`-th pixel and at the span end, affine in between;
 //!   one reciprocal per `N` pixels. The slope of a short last segment uses a small
 //!   reciprocal table instead of a divide.

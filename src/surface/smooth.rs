@@ -12,7 +12,8 @@
 //!
 //! In bands, the rows at a band's top and bottom see only their own band (clamped): pass
 //! the previous band's last row as `above` to smooth across the seam upward. Measured
-//! against 4 x 4 supersampling in the README and `docs/report/aa.md`.
+//! against 4 x 4 supersampling by `cargo xtask report` (`docs/report/aa.md`); the guide's
+//! anti-aliasing chapter says when to use it.
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;

@@ -109,7 +109,7 @@ use shade_loop::{shade_chunk, shade_depth_inline, shade_linear, shade_linear_inl
 ///
 /// Measured on the whole-frame spheres (instructions per pixel, same checksums):
 /// - Cortex-M4F: spans of up to 3 pixels, where LLVM unrolls the fused loop whole: sized
-///   texture 166.38 -> 162.96 with 4, and later (with this session's other changes) 159.17
+///   texture 166.38 -> 162.96 with 4, and (with the walk's corner copies gone) 159.17
 ///   (4) -> 158.59 (3); footprints 166.66 (4) -> 169.10 (3), plain bilinear 187.16 (4) ->
 ///   182.34 (3). Every span fused cost 171.68 (the 13-register core spills in the loop), 5
 ///   pixels 163.80.

@@ -7,7 +7,7 @@
 //!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges; [`cube_mip`]:
 //!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD
 //!   ([`SeamlessMipCubeMap`]: trilinear and seamless on every level).
-//! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
+//! * [`sphere`]: [`SphereMap`], GL's sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
 //! * [`convolve`]: diffuse (irradiance) and glossy (Phong-lobe) maps baked from a cube map

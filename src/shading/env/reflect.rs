@@ -21,8 +21,8 @@
 //! * [`ReflectPerVertex`]: varyings `rx, ry, rz` (the unit `r` in Q14, from
 //!   [`reflect_unit`] at each vertex, [`EnvVertices::per_vertex`]); interpolates `r`. Cheaper
 //!   (3 varyings, no products per pixel) but wrong inside large triangles: the
-//!   interpolated `r` is not the reflection of the interpolated `n` and `v` (the seeds'
-//!   warning), and the error grows with the angle `r` turns across a triangle.
+//!   interpolated `r` is not the reflection of the interpolated `n` and `v`, and the error
+//!   grows with the angle `r` turns across a triangle.
 //!
 //! # Fixed point of the per-pixel reflection
 //!

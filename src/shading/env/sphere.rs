@@ -5,7 +5,7 @@
 //! m = 2 sqrt(rx² + ry² + (rz + 1)²),   s = rx / m + 1/2,   t = ry / m + 1/2
 //! ```
 //!
-//! for the unit reflection vector `r` in eye space (the seeds' and GL's formulas, so
+//! for the unit reflection vector `r` in eye space (GL's formulas, so
 //! `t = 1` is `+y`: with fixel's `t = 0` at the first row, a sphere-map image is stored with
 //! its `-y` row first, as GL's bottom-up images are).
 //!

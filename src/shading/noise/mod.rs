@@ -6,7 +6,7 @@
 //!   [`noise4`](fn@noise4), [`turbulence4`] and [`Animated`]: the same in 4D, for solid textures that
 //!   change shape over time.
 //! * [`turbulence`](fn@turbulence) and [`BandLimit`]: `Σ |noise(2^k p)| / 2^k`, with the octaves finer than
-//!   a pixel replaced by their mean (the seeds' anti-aliasing of procedural textures).
+//!   a pixel replaced by their mean (the clamping of procedural textures).
 //! * [`Ramp`], [`Marble`], [`Wood`], [`Granite`]: patterns over the noise, and
 //!   [`SolidShader`], the fragment shader that draws any [`Pattern`] on a mesh with the
 //!   object-space point as three varyings and a light intensity as the fourth.
@@ -38,8 +38,9 @@
 //!
 //! One [`noise3`] call: **218 instructions on Cortex-M4F, 292 on Cortex-M0+** (exact QEMU
 //! counts, firmware bin `noise_cost`, loop included). One octave of turbulence adds about
-//! 194 (M4F) and 295 (M0+) instructions per pixel; the README's section "Solid textures
-//! (Perlin noise)" has the per-octave table and the errors. Flash: about 1.9 KB for
+//! 194 (M4F) and 295 (M0+) instructions per pixel; `docs/report/noise.md` (written by
+//! `cargo xtask report --docs`) has the per-octave figures and the errors, and
+//! [the guide's chapter](crate::guide::solid_textures) what to choose. Flash: about 1.9 KB for
 //! band-limited turbulence with the noise inlined, plus the 256-byte permutation and the
 //! 514-byte fade table; nothing for draws that do not use it.
 //!

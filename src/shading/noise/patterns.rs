@@ -11,7 +11,7 @@ use crate::color::rgb888_to_565;
 use crate::math::{isqrt_u32, Angle};
 use crate::Error;
 
-/// A 256-entry RGB565 colour table: the "colour spline" of the seeds, piecewise linear
+/// A 256-entry RGB565 colour table: Perlin's "colour spline" ("An Image Synthesizer"), piecewise linear
 /// between keys. 512 bytes; patterns borrow it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Ramp(pub [u16; 256]);

@@ -2,7 +2,8 @@
 //! `Σ_{k=0}^{n−1} |noise(2^k p)| / 2^k`, and its
 //! band-limited form, where the octaves finer than the pixel are not summed.
 //!
-//! The seeds truncate the sum at the smallest `k` with `1 / 2^(k+1) <` the pixel size: an
+//! The classic clamping of procedural textures (Ebert et al., "Texturing and Modeling: A
+//! Procedural Approach") truncates the sum at the smallest `k` with `1 / 2^(k+1) <` the pixel size: an
 //! octave whose cells are smaller than the pixel's footprint would alias (sparkle, and
 //! crawl in animation). [`BandLimit`] does that from the level of detail the span loop
 //! computes ([`Fragment::lambda`](crate::shading::Fragment::lambda): `log2` of the pixel's
@@ -47,12 +48,12 @@ pub struct BandLimit {
     /// The octaves summed when the pixel is small enough for all of them (`1..=8`).
     pub max_octaves: u8,
     /// Added to `lambda` (Q8.8) before the octave count is taken: positive is blurrier
-    /// and cheaper. 0 is the seeds' rule.
+    /// and cheaper. 0 is the classic truncation rule.
     pub bias: i16,
 }
 
 impl BandLimit {
-    /// The seeds' rule with at most `max_octaves` octaves (clamped to `1..=8`).
+    /// The classic truncation rule with at most `max_octaves` octaves (clamped to `1..=8`).
     pub const fn new(max_octaves: u8) -> BandLimit {
         let m = if max_octaves < 1 {
             1
@@ -69,7 +70,7 @@ impl BandLimit {
 
     /// The weight of octave `k` (Q8, `0..=256`) for a pixel of level of detail `lambda`
     /// (Q8.8, `log2` of the footprint in lattice cells): `clamp(1 − lambda − k, 0, 1)`,
-    /// full for the octaves whose cells are at least as large as the footprint (the seeds'
+    /// full for the octaves whose cells are at least as large as the footprint (the classic
     /// truncation) and fading in over the octave before.
     #[inline(always)]
     pub fn weight(&self, lambda: i32, k: u32) -> i32 {
