@@ -193,3 +193,28 @@ pub(crate) fn write_region(file: &Path, name: &str, body: &str) -> Result<(), St
     let out = format!("{}{open}\n{body}{}", &text[..a], &text[b..]);
     fs::write(file, out).map_err(|e| format!("{}: {e}", file.display()))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::write_region;
+
+    #[test]
+    fn a_region_is_replaced_between_its_markers_and_the_rest_kept() {
+        let dir = std::env::temp_dir().join(format!("fixel-region-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let f = dir.join("doc.md");
+        std::fs::write(&f, "a\n<!-- generated: t -->\nold\n<!-- end: t -->\nb\n").unwrap();
+        write_region(&f, "t", "new 1\nnew 2\n").unwrap();
+        assert_eq!(
+            std::fs::read_to_string(&f).unwrap(),
+            "a\n<!-- generated: t -->\nnew 1\nnew 2\n<!-- end: t -->\nb\n"
+        );
+        // Twice gives the same file.
+        write_region(&f, "t", "new 1\nnew 2\n").unwrap();
+        assert!(std::fs::read_to_string(&f)
+            .unwrap()
+            .contains("new 2\n<!-- end: t -->"));
+        assert!(write_region(&f, "missing", "x").is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
