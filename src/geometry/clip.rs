@@ -223,7 +223,7 @@ pub fn clip_and_project_varyings<const N: usize>(
         v: [0; N],
     };
     // The corners straight into the polygon buffer (as `attrs_and_codes`, without an
-    // array of them to copy in: that copy linked `memcpy` once `outcode` was out of line).
+    // array of them to copy in: that copy links `memcpy` while `outcode` is out of line).
     let mut poly = [empty; MAX_POLY];
     for (d, v) in poly.iter_mut().zip(tri) {
         *d = attr(v);

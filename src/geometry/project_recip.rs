@@ -129,8 +129,8 @@ mod tests {
     use crate::math::{div_floor_i64, div_round_i64};
     use crate::test_rng::Rng;
 
-    /// The plain division form of [`Viewport::project`] (the one fixel used before the
-    /// reciprocal): the reference the reciprocal form must equal.
+    /// The plain division form of [`Viewport::project`] (the one the cores with a divide
+    /// instruction use): the reference the reciprocal form must equal.
     fn project_div(vp: &Viewport, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
         let w = i64::from(w.max(1));
         let (hw, hh, cx, cy) = vp.scales();
