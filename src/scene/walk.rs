@@ -58,7 +58,7 @@ const FAILED: u8 = 3;
 const NO_DEPTH: u8 = 4;
 /// The outcode bit of a [`FAILED`] vertex (the clipper's planes use bits 0 to 6): a
 /// triangle's one test of its corners' outcodes or-ed together then also finds failed
-/// corners, which the common case (all inside, none failed) no longer tests apart.
+/// corners, which the common case (all inside, none failed) then does not test apart.
 const FAILED_CODE: u8 = 0x80;
 
 /// Bits of the attribute offset below the sub-pixel grid.
@@ -548,8 +548,8 @@ fn place(
 }
 
 /// Lights a placed vertex (its colour becomes the light's intensity on all channels).
-/// Inlined on ARMv7-M, where the walk calls it at two places: whole-frame sphere 157.40 ->
-/// 157.06 instructions per pixel on Cortex-M4F, for 56 bytes of flash.
+/// Inlined on ARMv7-M, where the walk calls it at two places: that saves a fraction of an
+/// instruction per pixel of the Cortex-M4F whole-frame sphere for 56 bytes of flash.
 #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
 fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     let Some(l) = ctx.light else {
