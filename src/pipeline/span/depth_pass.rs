@@ -73,7 +73,7 @@ fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
 /// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels). With
 /// `FLOOR`, a chunk nearer than the target's depth floor writes its depths without reading
 /// them; without, every chunk reads them (the short spans of small triangles: there the
-/// test cost more than it saved, see [`super::run_short`]). The chunk lowers `bound.lowest`
+/// test costs more than it saves, see [`super::run_short`]). The chunk lowers `bound.lowest`
 /// to its nearest depth, so later draws may rely on the floor, unless `TRI_BOUND` (the short
 /// path inlined into the span writer, see [`super::span_short`]): then the triangle lowers
 /// it once from its vertices' depths (`raster_shaded`), which saves about 1 % of the

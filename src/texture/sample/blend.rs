@@ -34,7 +34,7 @@ pub(super) fn q8_weights(a: u32, b: u32) -> [u32; 4] {
 /// per multiply. A row's two texels share a word (`c0 | c1 << 16`), its two weights another
 /// in the opposite order (`w1 | w0 << 16`), and the product's upper half is `c0 w0 + c1 w1`
 /// (its lower half, `c0 w1 < 2^14`, never carries into it; `c1 w0` falls off the top). Six
-/// multiplies for three channels where one channel pair per word took eight; the same sums
+/// multiplies for three channels where one channel pair per word takes eight; the same sums
 /// and roundings as the per-texel form kept in the tests, so the same result. Against
 /// that form it saves about 4 % of the cube and the bilinear floor on Cortex-M4F, 9-10 %
 /// on Cortex-M0+ (one mask register serves all three channels), 2 % on RV32IMC, and up to
