@@ -118,7 +118,7 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
     /// integer part needs no clamp, and the blend knows it fits 8 bits. The second loop
     /// pays on Cortex-M4F and RV32IMC (about 2 % and 0.5 % of the benchmark sphere drawn
     /// whole, `whole_sphere_sized` in `cargo xtask mcu`); on ARMv6-M it costs more than it
-    /// saves, so the single loop is kept there ([`CLAMP_FREE_PIECES`]).
+    /// saves, so the single loop is kept there (`CLAMP_FREE_PIECES`).
     #[inline(always)]
     fn piece_in_range(&self, start: &[i32; 3], slope: &[i32; 3], n: u32) -> bool {
         if !CLAMP_FREE_PIECES {
