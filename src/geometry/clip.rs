@@ -99,7 +99,7 @@ fn outcode(pos: &[i32; 4], guard: (i32, i32)) -> u8 {
 }
 
 /// [`outcode`] inlined: the mesh walker prepares each vertex once per band it touches, and
-/// the call cost Cortex-M0+ 4.7 instructions per pixel on the banded sphere.
+/// the call costs Cortex-M0+ about 1 % of the banded sphere.
 #[inline(always)]
 fn outcode_inline(pos: &[i32; 4], guard: (i32, i32)) -> u8 {
     let mut c = 0;
@@ -223,7 +223,7 @@ pub fn clip_and_project_varyings<const N: usize>(
         v: [0; N],
     };
     // The corners straight into the polygon buffer (as `attrs_and_codes`, without an
-    // array of them to copy in: that copy linked `memcpy` once `outcode` was out of line).
+    // array of them to copy in: that copy links `memcpy` while `outcode` is out of line).
     let mut poly = [empty; MAX_POLY];
     for (d, v) in poly.iter_mut().zip(tri) {
         *d = attr(v);
@@ -285,7 +285,7 @@ pub fn clip_and_project_varyings<const N: usize>(
     let mut t = [ScreenVertex::<N>::default(); 3];
     for (k, a) in fin.iter().enumerate() {
         // Through a local copy: `fin` points into either polygon buffer, and a copy straight
-        // from it made LLVM link `memmove` (1.6 KB) for wide vertices.
+        // from it makes LLVM link `memmove` (1.6 KB) for wide vertices.
         let a = *a;
         t[1] = t[2];
         t[2] = project_attr(&a, vp);

@@ -3,10 +3,10 @@
 //! (`x`, `y` and depth) and the two sub-pixel offsets, instead of two 32-bit library
 //! divisions (~120 instructions each), a 64-by-32-bit division with its own reciprocal and
 //! two bit-by-bit offset loops. Cores with a divide instruction keep one division per
-//! quotient: there the reciprocal for depth and the set-up alone measured 4.5 instructions
-//! per pixel faster on the Cortex-M4F whole sphere (1.6 %) and this whole form 6.9 (2.5 %),
-//! but they linked 0.4 and 0.9 KB more into the minimal firmware and 1.0 and 1.5 KB more
-//! into the perspective one.
+//! quotient: there the reciprocal for depth and the set-up alone would save about 1.5 % of
+//! the Cortex-M4F whole sphere and this whole form about 2.5 %, but they link about 0.4
+//! and 0.9 KB more into the minimal firmware and 1.0 and 1.5 KB more into the perspective
+//! one (measure with `cargo xtask mcu` and `cargo xtask size`).
 //!
 //! Every quotient is the exact floor (or the exact rounding, for depth): the screen
 //! vertices are bit-identical on every core and equal to the plain division's (tested
@@ -129,8 +129,8 @@ mod tests {
     use crate::math::{div_floor_i64, div_round_i64};
     use crate::test_rng::Rng;
 
-    /// The plain division form of [`Viewport::project`] (the one fixel used before the
-    /// reciprocal): the reference the reciprocal form must equal.
+    /// The plain division form of [`Viewport::project`] (the one the cores with a divide
+    /// instruction use): the reference the reciprocal form must equal.
     fn project_div(vp: &Viewport, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
         let w = i64::from(w.max(1));
         let (hw, hh, cx, cy) = vp.scales();

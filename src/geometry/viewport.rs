@@ -111,12 +111,12 @@ impl Viewport {
     /// core has a divide instruction, through one reciprocal of `w` where it has not (see
     /// `project_recip`; the same integers).
     ///
-    /// Measured on the cores with a divide instruction, where the 64-bit
-    /// quotients are library divisions: the reciprocal saved the whole-frame sphere 1.0
-    /// instructions per pixel on Cortex-M4F and 1.9 on RV32IMC, but on Cortex-M4F its 1 KB
-    /// table took the minimal open-stage firmware over its 10 KB bar (10,084 -> 11,172 B),
-    /// and on RV32IMC LLVM then inlined the vertex preparation into the mesh walk (+7 KB in
-    /// every whole-frame firmware). They divide.
+    /// The cores with a divide instruction divide, although their 64-bit quotients are
+    /// library divisions: the reciprocal would save the whole-frame sphere about one
+    /// instruction per pixel on Cortex-M4F and two on RV32IMC, but on Cortex-M4F its 1 KB
+    /// table takes the minimal open-stage firmware over its 10 KB bar, and on RV32IMC LLVM
+    /// then inlines the vertex preparation into the mesh walk (about 7 KB more in every
+    /// whole-frame firmware; measure with `cargo xtask size` and `cargo xtask mcu`).
     pub(crate) fn project(&self, x: i32, y: i32, z: i32, w: i32) -> (i32, i32, [i16; 2], i32) {
         if HW_DIVIDE {
             let (sx, sy, sub) = self.project_xy_div(x, y, w);
@@ -160,9 +160,9 @@ impl Viewport {
     /// [`project_xy`](Self::project_xy) by division (two per axis; one instruction each
     /// on cores with a divide instruction).
     ///
-    /// Inlined on ARMv7-M: whole-frame sphere 157.75 -> 157.40 instructions per pixel on
-    /// Cortex-M4F, with less flash. Inlined on RV32IMC it gained 0.89 but took 10 KB more
-    /// flash.
+    /// Inlined on ARMv7-M, where that saves a fraction of an instruction per pixel of the
+    /// Cortex-M4F whole-frame sphere and some flash. Out of line on RV32IMC: inlined there
+    /// it saves about one instruction per pixel but takes 10 KB more flash.
     #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
     pub(crate) fn project_xy_div(&self, x: i32, y: i32, w: i32) -> (i32, i32, [i16; 2]) {
         let w = i64::from(w.max(1));

@@ -11,8 +11,8 @@ use super::Fx;
 
 /// The exact Q32 product of two `Fx` (|p| <= 2^62). On ARMv6-M, which has no 64-bit
 /// product instruction, four 16 x 16-bit products instead of the `__aeabi_lmul` call an
-/// `i64` product compiles to (the vertex transforms' 12 products per vertex were the
-/// largest single cost of the banded environment-mapping scene on Cortex-M0+).
+/// `i64` product compiles to (with that call, the vertex transforms' 12 products per vertex
+/// are the largest single cost of the banded environment-mapping scene on Cortex-M0+).
 #[inline]
 pub(crate) fn prod(a: Fx, b: Fx) -> i64 {
     super::div::mul_wide_signed(a.to_bits(), b.to_bits())

@@ -180,7 +180,7 @@ pub fn div_floor_i64(n: i64, d: i64) -> i64 {
         return 0;
     }
     // Both within `i32` (on-screen projections): one 32-bit division instruction, inline,
-    // on cores that have one (on Cortex-M0+ the unsigned paths below measured faster).
+    // on cores that have one (on Cortex-M0+ the unsigned paths below are faster).
     if let (true, Ok(n32), Ok(d32)) = (HW_DIVIDE, i32::try_from(n), i32::try_from(d)) {
         if n32 != i32::MIN {
             return i64::from(n32.div_euclid(d32));

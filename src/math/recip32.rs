@@ -174,7 +174,7 @@ impl<const SPLIT: bool> RecipForm<SPLIT> {
 
     /// `n / d` rounded towards zero, exactly, for `n < d 2^32` (the quotient fits `u32`);
     /// `None` otherwise. Out of line: the projection's rare path for 64-bit numerators
-    /// (inlined at each of its call sites it cost about 1.5 KB of flash).
+    /// (inlined at each of its call sites it costs about 1.5 KB of flash).
     #[inline(never)]
     pub(crate) fn div_wide(&self, n: u64) -> Option<u32> {
         if (n >> 32) >= u64::from(self.d) {

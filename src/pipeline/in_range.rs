@@ -9,10 +9,10 @@
 //! without the check of its two ends (about 20 instructions per span on Cortex-M4F). The
 //! pixels are the same: `shade_in_range` shades in-range fragments exactly as `shade`.
 //!
-//! A wrapper type rather than a flag: a run-time flag in the span context made the
+//! A wrapper type rather than a flag: a run-time flag in the span context makes the
 //! Cortex-M4F shading loop spill, and a const parameter threaded through the span loop
-//! changed the Cortex-M0+ code (+4.9 instructions per pixel on the sphere) although that
-//! core never takes the path. A shader without a range-checked varying never builds an
+//! changes the Cortex-M0+ code (about 1.5 % more on the sphere) although that core never
+//! takes the path. A shader without a range-checked varying never builds an
 //! `InRange`, so nothing of it is linked.
 
 #[cfg(doc)]

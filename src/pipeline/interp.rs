@@ -238,7 +238,7 @@ pub(super) static INV_SMALL: [u32; 64] = {
 };
 
 /// `diff * inv / 2^16` (floor) for `inv < 2^17`: on ARMv6-M a 32 x 32-bit product instead of
-/// the `__aeabi_lmul` call of an `i64` product; elsewhere the `i64` product (which measured
+/// the `__aeabi_lmul` call of an `i64` product; elsewhere the `i64` product (which is
 /// cheaper on Cortex-M4F than the signed 32-bit form).
 #[inline(always)]
 pub(super) fn scale_q16(diff: i32, inv: u32) -> i32 {
@@ -253,9 +253,9 @@ pub(super) fn scale_q16(diff: i32, inv: u32) -> i32 {
 }
 
 /// [`scale_q16`] for the one-piece spans of [`Linear::only_piece`]: on ARMv6-M two 32-bit
-/// products ([`scale_q16_split`]; measured 21 instructions per pixel fewer on the sphere,
-/// whose spans are all one piece, but 1.6 more on the cube's fill loop, which keeps the wide
-/// form), elsewhere [`scale_q16`].
+/// products ([`scale_q16_split`]; about 6 % fewer instructions per pixel on the sphere,
+/// whose spans are all one piece, but about 1 % more on the cube's fill loop, which keeps
+/// the wide form; measure with `cargo xtask mcu`), elsewhere [`scale_q16`].
 #[inline(always)]
 fn scale_q16_short(diff: i32, inv: u32) -> i32 {
     #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
@@ -415,7 +415,7 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
                 // One pixel: its value is all the span needs (the slope is never stepped
                 // into a pixel), so no second reciprocal. About one span in five of a finely
                 // tessellated mesh. (A return of its own: folded into the slope below as a
-                // branch, the M4F sphere measured 1.4 instructions per pixel more.)
+                // branch, it costs the M4F sphere about one instruction per pixel more.)
                 let mut start = first;
                 let mut slope = V::zero();
                 unshift_piece(&mut start, &mut slope, spec);

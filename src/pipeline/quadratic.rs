@@ -34,8 +34,8 @@ use crate::shading::Varyings;
 /// Quadratic interpolation along one span, a segment of up to `2^log2_n` pixels at a time.
 /// With `SHARED` the segment set-up is one out-of-line function per varying count (for
 /// `Draw::dynamic`, which links a span loop per built-in shader: inlined into each, the
-/// copies outgrew 256 KB of flash); without, it is inlined (measured 3.2 instructions per
-/// pixel fewer on the Cortex-M4F cube with N = 32).
+/// copies outgrow 256 KB of flash); without, it is inlined (about 3 instructions per pixel
+/// fewer on the Cortex-M4F cube with N = 32).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Quadratic<V, const SHARED: bool> {
     /// Values at the next pixel, their forward difference, and its change per pixel.
@@ -72,10 +72,10 @@ fn div_small(x: i32, n: u32, log2: Option<u32>) -> i32 {
 /// plus a loop-invariant multiple of the second difference: 14 such constants, spilled and
 /// reloaded every 8 pixels. Hiding the first difference's new value keeps the loop as
 /// written (13 instructions per 2 pixels instead of 56 per 8, and a shorter segment
-/// set-up). Measured on the cube (quadratic N=16), instructions per pixel, this change
-/// alone (`prof`): M4F 110.37 -> 108.83, RV32 125.16 -> 124.97, M0+ 188.82 -> 189.53. An
-/// empty `asm!` is the only zero-cost barrier (`core::hint::black_box` goes through
-/// memory).
+/// set-up): on the cube (quadratic N = 16) about 1.5 % fewer instructions per pixel on
+/// Cortex-M4F, a little fewer on RV32IMC and a little more on Cortex-M0+ (measure with
+/// `cargo xtask mcu --profile`). An empty `asm!` is the only zero-cost barrier
+/// (`core::hint::black_box` goes through memory).
 #[inline(always)]
 #[allow(unsafe_code, unused_mut)]
 fn opaque(mut x: i32) -> i32 {

@@ -79,7 +79,7 @@ struct Writer<'t, S: Shader, P, D, C, K: RangeProof> {
 /// alone) and drawn, then `$drawn` with the pixels written bound to `$n`; `$none` when the
 /// slicing refuses it. One body, two functions ([`COUNT_IN_LOOP`](crate::raster::COUNT_IN_LOOP)
 /// picks which one the row loop calls): as a shared inlined method, the Cortex-M0+ span
-/// writer allocated its registers worse (whole-frame sphere +4 instructions per pixel).
+/// writer allocates its registers worse (about 1 % more on the whole-frame sphere).
 macro_rules! draw_span {
     ($w:ident, $y:ident, $x0:ident, $x1:ident, |$n:ident| $drawn:expr, $none:expr) => {
         if let Some((out, mut depth)) = $w.rows.span_in_clip($y, $x0, $x1) {
@@ -110,8 +110,8 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof
     for Writer<'_, S, P, D, C, K>
 {
     // Not inlined into the rasterizer's row loop: one copy per draw type (inlined there, each
-    // draw type's `raster_triangle` carried the edge walk and the short path again: +9.8 KB
-    // for `Draw::dynamic` on Cortex-M4F).
+    // draw type's `raster_triangle` carries the edge walk and the short path again: about
+    // 10 KB more for `Draw::dynamic` on Cortex-M4F).
     #[inline(never)]
     fn span(&mut self, y: i32, x0: i32, x1: i32) {
         draw_span!(
@@ -216,8 +216,8 @@ where
         (tri[2].x, tri[2].y),
     ];
     // Meshes of small triangles skip the row loop's clamp for triangles within the clip's
-    // columns (not on ARMv6-M: there the band scenes lost, M0+ sphere in bands 548.46 ->
-    // 549.64).
+    // columns (not on ARMv6-M: there the band scenes lose a little; measure with
+    // `cargo xtask mcu`).
     let unclamped_rows = inline_short_path::<S, P, D>() && !crate::math::ARMV6M;
     // The writer for what is known of the triangle's range (`$proof`: `Unproven`, or
     // `Proven`, whose short spans run `InRange<S>`), built in place.
@@ -246,8 +246,8 @@ where
             // The pixels written, summed by the row loop.
             let pixels = if let Some(_) = S::RANGE_VARYING {
                 // Two writers (`S` and `InRange<S>`): each with its own rasterizer, which
-                // calls it directly (behind one `dyn` sink the rasterizer stayed out of
-                // line, with an indirect call per row: +1.9 per pixel on the Cortex-M4F
+                // calls it directly (behind one `dyn` sink the rasterizer stays out of
+                // line, with an indirect call per row: about 1 % more on the Cortex-M4F
                 // sphere).
                 rasterize_rows(corners, clip, &mut w, unclamped_rows)
             } else {
@@ -337,8 +337,8 @@ fn affine_bounds<V: Varyings>(
     let dy = setup.dy.as_slice().get(k)?.unsigned_abs();
     // In `u32`: `|dx| / 32 + |dy| / 32 + 1` (at least `(|dx| + |dy|) / 32`, below 2^27),
     // each extent below 2^28 (the difference of two `i32`, shifted), so the margin is below
-    // `2^27 + 2^31 + 33` (in `i64` throughout, the Cortex-M4F sphere cost 0.5 instructions
-    // per pixel more). A wider bound only proves fewer triangles, with the same pixels.
+    // `2^27 + 2^31 + 33` (in `i64` throughout, it costs the Cortex-M4F sphere about half an
+    // instruction per pixel more). A wider bound only proves fewer triangles, with the same pixels.
     let extent = |c: [i32; 3]| {
         let (lo, hi) = (c[0].min(c[1]).min(c[2]), c[0].max(c[1]).max(c[2]));
         (hi.wrapping_sub(lo) as u32) >> SUBPIXEL_BITS

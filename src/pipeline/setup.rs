@@ -140,9 +140,9 @@ pub(crate) fn setup<V: Varyings>(
 }
 
 /// [`setup`], inlined: the draws of meshes of small triangles (the ones that inline the
-/// short span path) take it so, where one draw type is all a mesh firmware links. On the
-/// whole-frame sphere: Cortex-M4F 158.59 -> 157.75 instructions per pixel, RV32IMC 190.80
-/// -> 189.68; not on ARMv6-M (315.18 -> 315.40).
+/// short span path) take it so, where one draw type is all a mesh firmware links. That
+/// saves about 0.5 % of the whole-frame sphere on Cortex-M4F and RV32IMC; on ARMv6-M it
+/// saves nothing (measure with `cargo xtask mcu`).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn setup_inline<V: Varyings>(

@@ -44,7 +44,7 @@ fn ceil_from_floor(q: i64, r: i64, d: i64) -> (i64, i64) {
 
 /// `ceil(n / d)` and the non-negative remainder `ceil * d - n`, for `d > 0`. The floor
 /// division goes through `math::div` (exact, 32-bit paths: a 64-bit library division per
-/// edge and band was a visible share of small triangles' cost on Cortex-M).
+/// edge and band would be a visible share of small triangles' cost on Cortex-M).
 #[inline]
 fn ceil_div_rem(n: i64, d: i64) -> (i64, i64) {
     // On screen (the common case) both fit `i32`: one 32-bit division, inline.
@@ -108,7 +108,7 @@ fn start_near_top(x0: i32, dy: i32, t: i32, step: i32, step_rem: i32) -> Option<
 /// [`ceil_div_rem`] when the quotient is small, `|n| < 16 d` (an edge less than 16 pixels
 /// across per row: every edge of a finely tessellated mesh), and `0 < d < 2^26`: four
 /// restoring steps instead of a library division on cores without a divide instruction
-/// (one per edge and band; -4.8 instructions per pixel on the Cortex-M0+ sphere in bands).
+/// (one per edge and band; about 1 % of the Cortex-M0+ sphere in bands).
 /// `None` otherwise. The same quotient and remainder (tested).
 #[inline(always)]
 fn ceil_div_rem_small(n: i32, d: i32) -> Option<(i64, i64)> {
@@ -150,10 +150,11 @@ impl EdgeWalker {
     /// `top.1 < bottom.1`, both inside the guard band).
     ///
     /// Inlined but on ARMv6-M: the rasterizer calls it at two places (the long edge, and the
-    /// short one in its loop over the two halves). Whole-frame sphere 167.06 -> 165.38
-    /// instructions per pixel on Cortex-M4F, 196.78 -> 194.54 on RV32IMC, for about 0.4 KB
-    /// of flash per rasterizer; on Cortex-M0+ inlined it cost 0.5 per pixel more and 0.7 KB
-    /// per rasterizer (2.2 KB in the shadow firmwares), so there it stays out of line.
+    /// short one in its loop over the two halves). That saves about 1 % of the whole-frame
+    /// sphere on Cortex-M4F and RV32IMC for about 0.4 KB of flash per rasterizer (measure
+    /// with `cargo xtask mcu`); on Cortex-M0+ inlined it costs a little more per pixel and
+    /// 0.7 KB per rasterizer (2.2 KB in the shadow firmwares), so there it stays out of
+    /// line.
     #[cfg_attr(
         not(all(target_arch = "arm", not(target_has_atomic = "32"))),
         inline(always)
@@ -173,7 +174,7 @@ impl EdgeWalker {
             mul_wide_signed(x0.wrapping_sub(half), dy)
                 .wrapping_add(mul_wide_signed(yc.wrapping_sub(y0), dx))
         };
-        // With a divide instruction, the two divisions in the order that measured cheapest on
+        // With a divide instruction, the two divisions in the order that measures cheapest on
         // x86 and Cortex-M4F; without, the step first, whose quotient gives the start.
         let ((x, rem), (step, step_rem)) = if HW_DIVIDE {
             let start = ceil_div_rem(n(), den);

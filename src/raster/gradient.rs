@@ -238,8 +238,8 @@ fn sar_high(x: i64, s: u32) -> i32 {
 /// `x >> s` (arithmetic) for `s` in `1..=31`, word by word: five instructions on 32-bit
 /// cores, where LLVM's 64-bit shift by a register tests for shifts past 32 (eleven). With
 /// [`sar_high`], the barycentric planes' shift (`cs`, `1..=62`) of
-/// [`PlaneSetup::plane`]: Cortex-M4F whole-frame sphere 170.04 -> 168.93 instructions per
-/// pixel, Cortex-M0+ 322.91 -> 322.42, RV32IMC 198.92 -> 198.62.
+/// [`PlaneSetup::plane`]: about 0.5 % of the Cortex-M4F whole-frame sphere and a little
+/// less on Cortex-M0+ and RV32IMC (measure with `cargo xtask mcu`).
 #[inline(always)]
 fn sar_below_32(x: i64, s: u32) -> i64 {
     let (hi, lo) = ((x >> 32) as i32, x as u32);
@@ -302,8 +302,8 @@ fn barycentric_derivatives(nums: [i32; 4], area2: i64) -> ([i32; 4], u32) {
 /// The low word of `x >> s` for `s` in `1..=31`, from the two words: three instructions on
 /// 32-bit cores, where LLVM's 64-bit shift by a register tests for shifts past 32. In
 /// [`barycentric_derivatives`] (four per triangle), with the rounding term as a 32-bit
-/// shift and the signs applied by mask: whole-frame sphere, Cortex-M4F 162.19 -> 161.53
-/// instructions per pixel, Cortex-M0+ 317.52 -> 316.22, RV32IMC 193.15 -> 192.86.
+/// shift and the signs applied by mask: about 0.4 % of the whole-frame sphere on
+/// Cortex-M4F and Cortex-M0+, a little less on RV32IMC (measure with `cargo xtask mcu`).
 #[inline(always)]
 fn low_word_shr(x: u64, s: u32) -> u32 {
     let (hi, lo) = ((x >> 32) as u32, x as u32);

@@ -67,11 +67,11 @@ pub trait SpanSink {
 
 /// Whether the row loop sums the sink's counts ([`SpanSink::span_counted`]) or calls
 /// [`SpanSink::span`], leaving a sink to count for itself: on Cortex-M4F the sum in a
-/// register spares the span writer a load and a store per span (whole-frame sphere 167.93
-/// -> 166.97 instructions per pixel); on Cortex-M0+ (eight low registers), RV32IMC and
-/// x86-64 the one more value in the row loop cost more (321.31 -> 326.30, 196.78 ->
-/// 197.63, callgrind 239.4 -> 241.4). A sink that counts implements both: [`rasterize`]
-/// returns 0 where the loop does not sum.
+/// register spares the span writer a load and a store per span (about 0.5 % of the
+/// whole-frame sphere); on Cortex-M0+ (eight low registers), RV32IMC and x86-64 the one
+/// more value in the row loop costs more than it saves (up to about 1.5 %; measure with
+/// `cargo xtask mcu` and `cargo xtask count`). A sink that counts implements both:
+/// [`rasterize`] returns 0 where the loop does not sum.
 pub const COUNT_IN_LOOP: bool = cfg!(all(target_arch = "arm", target_has_atomic = "32"));
 
 /// First pixel row whose centre is at or below `y` (sub-pixel units): `ceil((y - 8) / 16)`.
@@ -90,7 +90,7 @@ pub fn rasterize<S: SpanSink + ?Sized>(v: [(i32, i32); 3], clip: Rect, sink: &mu
 
 /// [`rasterize`], out of line: the run-time draw's (`Draw::dynamic`) one copy for all its
 /// span writers behind `dyn SpanSink`. Inlined into each of its draw types' raster
-/// functions, as the typed draws' rasterizer is, its firmware grows by 9 KB (measured).
+/// functions, as the typed draws' rasterizer is, its firmware grows by about 9 KB.
 #[inline(never)]
 pub(crate) fn rasterize_shared<S: SpanSink + ?Sized>(
     v: [(i32, i32); 3],
@@ -104,9 +104,9 @@ pub(crate) fn rasterize_shared<S: SpanSink + ?Sized>(
 /// ([`within_columns`]) then takes row loops that do not clamp its spans to them (the same
 /// spans). A constant where it is inlined: the draws of meshes of small triangles pass
 /// `true` and link two more copies of the row loop (about 0.3 KB on Cortex-M4F; the minimal
-/// firmwares, which pass `false`, do not). On the whole-frame sphere: Cortex-M4F 162.96 ->
-/// 162.29 instructions per pixel, RV32IMC 193.66 -> 193.15; not on ARMv6-M (see the
-/// caller).
+/// firmwares, which pass `false`, do not). That saves about 0.3 % of the whole-frame
+/// sphere on Cortex-M4F and RV32IMC (measure with `cargo xtask mcu`); not on ARMv6-M (see
+/// the caller).
 #[inline(always)]
 pub(crate) fn rasterize_rows<S: SpanSink + ?Sized>(
     v: [(i32, i32); 3],

@@ -58,7 +58,7 @@ const FAILED: u8 = 3;
 const NO_DEPTH: u8 = 4;
 /// The outcode bit of a [`FAILED`] vertex (the clipper's planes use bits 0 to 6): a
 /// triangle's one test of its corners' outcodes or-ed together then also finds failed
-/// corners, which the common case (all inside, none failed) no longer tests apart.
+/// corners, which the common case (all inside, none failed) then does not test apart.
 const FAILED_CODE: u8 = 0x80;
 
 /// Bits of the attribute offset below the sub-pixel grid.
@@ -480,11 +480,11 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
 }
 
 /// Whether a whole-frame walk skips runs of culled triangles in [`skip_culled`]: on
-/// Cortex-M4F the whole-frame sphere drew for 173.86 -> 172.87 instructions per pixel (the
-/// walk's loop spent 48 per culled triangle, `skip_culled` 27), RV32IMC 200.57 -> 200.67.
-/// Not on ARMv6-M, whose plane test is four 64-bit products in software (about 190
-/// instructions either way): there the calls cost more than the loop saved (322.91 ->
-/// 323.45).
+/// Cortex-M4F that takes about 27 instructions per culled triangle where the walk's loop
+/// takes 48, about 0.6 % of the whole-frame sphere; on RV32IMC it is about even (measure
+/// with `cargo xtask mcu`). Not on ARMv6-M, whose plane test is four 64-bit products in
+/// software (about 190 instructions either way): there the calls cost more than the loop
+/// saves.
 const SKIP_RUNS: bool = !crate::math::ARMV6M;
 
 /// The first of `from..end` whose baked plane (`planes`) the test `f` (largest margin
@@ -548,8 +548,8 @@ fn place(
 }
 
 /// Lights a placed vertex (its colour becomes the light's intensity on all channels).
-/// Inlined on ARMv7-M, where the walk calls it at two places: whole-frame sphere 157.40 ->
-/// 157.06 instructions per pixel on Cortex-M4F, for 56 bytes of flash.
+/// Inlined on ARMv7-M, where the walk calls it at two places: that saves a fraction of an
+/// instruction per pixel of the Cortex-M4F whole-frame sphere for 56 bytes of flash.
 #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
 fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
     let Some(l) = ctx.light else {

@@ -1,5 +1,5 @@
-//! The classic shadings as built-in shaders: what `Shading` selected before the fragment
-//! stage was opened, with the same arithmetic and so the same pixels.
+//! The classic shadings (the modes of `Shading`) as built-in shaders, with the same
+//! arithmetic and so the same pixels.
 //!
 //! | shader | varyings (formats) | colour |
 //! |---|---|---|
@@ -29,9 +29,9 @@ pub fn q8(c: i32) -> u16 {
 }
 
 /// Whether [`ModulateIntensity`] checks a linear piece's intensity once so that its pixels
-/// skip the clamp ([`Shader::piece_in_range`]). Not on ARMv6-M, where the second loop cost
-/// more than it saved (`whole_sphere_sized` on Cortex-M0+: 330.94 -> 336.31 instructions
-/// per pixel with 32-bit checks, 346.01 with a 64-bit product).
+/// skip the clamp ([`Shader::piece_in_range`]). Not on ARMv6-M, where the second loop
+/// costs more than it saves: about 1.5 % more on `whole_sphere_sized` on Cortex-M0+ with
+/// 32-bit checks, about 5 % with a 64-bit product (measure with `cargo xtask mcu`).
 const CLAMP_FREE_PIECES: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
 
 /// The intensities (Q8.16) whose integer part needs no clamp: `0..256 << 16`.
@@ -115,10 +115,10 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
         self.shade_scaled(f, q8(f.varyings[2]))
     }
     /// The intensity (Q8.16) in `0..256` at both ends, so at every pixel between: its
-    /// integer part needs no clamp, and the blend knows it fits 8 bits. On the benchmark
-    /// sphere drawn whole (`whole_sphere_sized`), Cortex-M4F 183.93 -> 180.63 instructions
-    /// per pixel, RV32IMC 205.13 -> 204.22. Not on ARMv6-M, where the second loop cost
-    /// more than it saved (Cortex-M0+ 330.94 -> 336.31).
+    /// integer part needs no clamp, and the blend knows it fits 8 bits. The second loop
+    /// pays on Cortex-M4F and RV32IMC (about 2 % and 0.5 % of the benchmark sphere drawn
+    /// whole, `whole_sphere_sized` in `cargo xtask mcu`); on ARMv6-M it costs more than it
+    /// saves, so the single loop is kept there (`CLAMP_FREE_PIECES`).
     #[inline(always)]
     fn piece_in_range(&self, start: &[i32; 3], slope: &[i32; 3], n: u32) -> bool {
         if !CLAMP_FREE_PIECES {
@@ -129,7 +129,7 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
         INTENSITY_RANGE.contains(&first) && INTENSITY_RANGE.contains(&last)
     }
     /// The intensity: a whole affine triangle in range skips the check of each span (see
-    /// `pipeline::in_range`; Cortex-M4F sphere 180.04 -> 179.13).
+    /// `pipeline::in_range`; about 0.5 % of the Cortex-M4F sphere).
     const RANGE_VARYING: Option<usize> = if CLAMP_FREE_PIECES { Some(2) } else { None };
     #[inline(always)]
     fn values_in_range(&self, lo: i64, hi: i64) -> bool {

@@ -24,12 +24,11 @@ use crate::Error;
 
 /// Whether [`TexBinding::can_draw`] also requires footprints of a sampler that reads them.
 /// The span loops test `can_draw` once per span, so LLVM drops the per-pixel test of
-/// `BilinearFootprint`'s lookup (footprints present) from the loop. Measured per drawn
-/// pixel: Cortex-M4F whole-frame sphere from footprints 233.2 -> 228.5, bilinear floor
-/// 74.2 -> 69.4, cube 108.2 -> 108.4; RV32IMC 263.7 -> 260.4, 86.8 -> 83.7, 123.9 -> 122.9.
-/// Not on ARMv6-M, where the loop without the test allocated its registers worse (sphere
-/// 401.2 -> 404.6), nor on 64-bit hosts (x86-64 callgrind: cube +0.2, floor +0.2, sphere
-/// +1.3).
+/// `BilinearFootprint`'s lookup (footprints present) from the loop: about 2 % of the
+/// whole-frame sphere from footprints and 4-7 % of the bilinear floor on Cortex-M4F and
+/// RV32IMC, the cube about even (measure with `cargo xtask mcu`). Not on ARMv6-M, where
+/// the loop without the test allocates its registers worse and the sphere costs about 1 %
+/// more, nor on 64-bit hosts, where it costs a little on every scene (`cargo xtask count`).
 const HOIST_FOOTPRINT_TEST: bool = cfg!(target_pointer_width = "32")
     && !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
 

@@ -11,8 +11,9 @@
 //! scan of the ranges). With 8-row bands a small triangle is
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
 //! instead of one per band; with [`BandRenderer::with_setup_cache`] the raster set-up of a
-//! triangle crossing into the next band is built once for both (the benchmark sphere on
-//! Cortex-M0+: 646.0 -> 587.1 instructions per pixel, 1.18 times the whole frame).
+//! triangle crossing into the next band is built once for both (on Cortex-M0+ that saves
+//! about 9 % of the benchmark sphere in bands, which then costs about 1.2 times the whole
+//! frame; measure with `cargo xtask mcu`).
 //!
 //! Ladder of storage (same pixels on every rung, tested):
 //!

@@ -18,9 +18,10 @@
 //! ([`TexBinding::can_draw`](crate::shading::TexBinding::can_draw), which the span loop tests
 //! once per span), so the masked index needs no bounds test per pixel either.
 //!
-//! Cost, in instructions per drawn pixel on the benchmark sphere drawn whole (a 256 x 128
-//! texture; `whole_sphere_footprint` against `whole_sphere_sized`): Cortex-M4F
-//! 188.59 -> 180.63, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
+//! Against a run-time size, on the benchmark sphere drawn whole (a 256 x 128 texture;
+//! `whole_sphere_sized` against `whole_sphere_footprint` in `cargo xtask mcu`), the fixed
+//! size saves about 4 % of the instructions per drawn pixel on Cortex-M4F and about 2 % on
+//! Cortex-M0+ and RV32IMC.
 
 use super::footprint::{gather_footprint, BilinearFootprint};
 use super::mip::{footprints_needed, MipTexture, TexSampler};
@@ -32,9 +33,9 @@ use crate::Error;
 /// [`BilinearFootprint`] for a level 0 of `2^LOG2_W x 2^LOG2_H` texels, fixed at compile
 /// time: the same pixels, with the footprint's row shift and masks as instruction
 /// immediates instead of three more values for the span loop to keep (on a 13-register
-/// Cortex-M core it reloaded them from the stack at every pixel), and no bounds test per
-/// pixel. On the benchmark sphere drawn whole: Cortex-M4F 188.59 -> 180.63 instructions per
-/// pixel, Cortex-M0+ 339.09 -> 330.94, RV32IMC 207.76 -> 204.22.
+/// Cortex-M core it reloads them from the stack at every pixel), and no bounds test per
+/// pixel: about 4 % of the benchmark sphere drawn whole on Cortex-M4F, 2 % on Cortex-M0+
+/// and RV32IMC (see the module docs).
 ///
 /// ```
 /// use fixel::shading::TexBinding;
@@ -232,8 +233,8 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
     }
 
     /// On ARMv7E-M with both wraps repeating: the assembly loop of
-    /// `footprint_span_dsp` (the same pixels; Cortex-M4F whole sphere 157.56 -> 144.68
-    /// instructions per pixel). Elsewhere none.
+    /// `footprint_span_dsp` (the same pixels, about 8 % fewer instructions per pixel on
+    /// the Cortex-M4F whole sphere than the Rust loop). Elsewhere none.
     #[inline(always)]
     fn lit_span<WU: WrapMode, WV: WrapMode>(
         self,
@@ -256,8 +257,8 @@ impl<const LOG2_W: u32, const LOG2_H: u32> TexSampler for BilinearFootprintSized
     const LIT_SPAN_DEPTH: bool = cfg!(fixel_dsp);
 
     /// On ARMv7E-M with both wraps repeating: the assembly loop of `footprint_span_dsp`
-    /// with the depth test in it (whole sphere 144.68 -> 138.33 on Cortex-M4F, every
-    /// short span through it). Elsewhere none.
+    /// with the depth test in it (every short span through it: about 4 % of the
+    /// Cortex-M4F whole sphere against a depth pass first). Elsewhere none.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn lit_span_depth<WU: WrapMode, WV: WrapMode>(

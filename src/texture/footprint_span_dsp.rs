@@ -17,16 +17,16 @@
 //! - per channel `(S i + 2^15) >> 16` for the intensity `i = (I >> 16) & 0xFF` in one
 //!   (`smmulr` of `S` and `i << 16`: `(S i 2^16 + 2^31) >> 32`, the same integer).
 //!
-//! LLVM's code for the same loop (the generic span loop and `blend_rows_q8`) took 53
-//! instructions per pixel on Cortex-M4F: with 13 allocatable registers it rematerialized
-//! nine constants and reloaded four values from the stack at every pixel. [`lit_span`]
+//! LLVM's code for the same loop (the generic span loop and `blend_rows_q8`) takes 53
+//! instructions per pixel on Cortex-M4F: with 13 allocatable registers it rematerializes
+//! nine constants and reloads four values from the stack at every pixel. [`lit_span`]
 //! takes 39. It keeps its steps and footprint pointer in the stack frame it pushes and
 //! reloads them with one `ldm` per pixel, and uses every register but `sp` and `pc` (`r6`
 //! and `r7`, which Rust reserves, saved and restored inside the block).
 //!
 //! [`lit_span_depth`] tests and writes the depth in the same loop (46 instructions per
 //! drawn pixel, 18 per hidden one), so the span stage hands it spans of any length
-//! instead of a depth pass, a mask and a second loop (which LLVM could not fuse on this
+//! instead of a depth pass, a mask and a second loop (which LLVM cannot fuse on this
 //! core without spilling).
 //!
 //! [`lit_span_runtime`] and [`lit_span_depth_runtime`] are the same loops for
@@ -34,12 +34,13 @@
 //! the footprint's row and column masked by registers instead of bit-field extracts, and
 //! the row stride reloaded (40 and 48 instructions per pixel).
 //!
-//! Measured on the whole-frame sphere (Cortex-M4F, instructions per pixel, the same
-//! checksum): `whole_sphere_sized` 157.56 -> 144.68 with [`lit_span`] after the depth pass,
-//! -> 138.33 with [`lit_span_depth`] for every short span (the cycle model of `cargo xtask
-//! mcu`, where `ldm` of `n` words costs `1 + n`: 214.0 -> 204.2 -> 201.1);
-//! `whole_sphere_footprint` 168.08 -> 150.55 with [`lit_span_runtime`] -> 147.84 with
-//! [`lit_span_depth_runtime`] (60 instructions per pixel in LLVM's loop there).
+//! On the whole-frame sphere (Cortex-M4F, the same checksum; measure with `cargo xtask
+//! mcu`): against LLVM's loop, [`lit_span`] after the depth pass saves about 8 % of the
+//! instructions per pixel of `whole_sphere_sized`, and [`lit_span_depth`] for every short
+//! span about 4 % more (in the cycle model of `cargo xtask mcu`, where `ldm` of `n` words
+//! costs `1 + n`, about 5 % and 1.5 %). On `whole_sphere_footprint`, where LLVM's loop
+//! takes 60 instructions per pixel, [`lit_span_runtime`] saves about 10 % and
+//! [`lit_span_depth_runtime`] about 2 % more.
 
 use super::sample::REPEAT_SPLIT;
 

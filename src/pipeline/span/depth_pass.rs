@@ -24,9 +24,9 @@ pub(super) fn low_bits(n: usize) -> u32 {
 /// shifted right, two instructions on Cortex-M against six. Any mask for `n = 0`, where
 /// the depth mask it is anded with is empty, and the shading loop has no pixel.
 ///
-/// On the whole-frame sphere: Cortex-M4F 172.87 -> 172.43 instructions per pixel, RV32IMC
-/// 200.67 -> 200.01. ARMv6-M keeps [`low_bits`] (there this form measured 322.91 -> 323.91:
-/// its shifts by a register do not mask the amount, so the wrapping shift costs an `and`).
+/// This saves a fraction of a percent of the whole-frame sphere on Cortex-M4F and RV32IMC
+/// (measure with `cargo xtask mcu`). ARMv6-M keeps [`low_bits`]: its shifts by a register
+/// do not mask the amount, so the wrapping shift costs an `and` and this form costs more.
 #[inline(always)]
 pub(super) fn low_bits_short(n: usize) -> u32 {
     if crate::math::ARMV6M {
@@ -73,14 +73,14 @@ fn depth_chunk_with<const WRITE: bool, const CLAMP: bool>(
 /// Depth-tests chunk `zc` (when `Z`) and returns its visibility mask (`n` pixels). With
 /// `FLOOR`, a chunk nearer than the target's depth floor writes its depths without reading
 /// them; without, every chunk reads them (the short spans of small triangles: there the
-/// test cost more than it saved, see [`super::run_short`]). The chunk lowers `bound.lowest`
+/// test costs more than it saves, see [`super::run_short`]). The chunk lowers `bound.lowest`
 /// to its nearest depth, so later draws may rely on the floor, unless `TRI_BOUND` (the short
 /// path inlined into the span writer, see [`super::span_short`]): then the triangle lowers
-/// it once from its vertices' depths (`raster_shaded`), which saved the Cortex-M4F whole
-/// sphere 200.00 -> 197.40 instructions per pixel (M0+ 356.99 -> 355.43, RV32 219.61 ->
-/// 217.14). Taken for every draw's triangles, that bound cost the cube 105.10 -> 107.25 (a
-/// face's nearest vertex can be far nearer than what a band of it writes); chosen per
-/// triangle at run time (by height), it cost the sphere 197.40 -> 202.85.
+/// it once from its vertices' depths (`raster_shaded`), which saves about 1 % of the
+/// whole-frame footprint sphere on Cortex-M4F and RV32IMC and less on Cortex-M0+ (measure
+/// with `cargo xtask mcu`). The triangle bound is not used for every draw's triangles: it
+/// costs the cube about 2 % (a face's nearest vertex can be far nearer than what a band of
+/// it writes); chosen per triangle at run time (by height), it costs the sphere about 3 %.
 #[inline(always)]
 pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_BOUND: bool>(
     z: i32,
@@ -90,8 +90,8 @@ pub(super) fn chunk_mask<S: Shader, const Z: bool, const FLOOR: bool, const TRI_
     bound: &mut DepthBound,
 ) -> u32 {
     // The inlined short path's spans are never empty and at most a chunk long. (A closure,
-    // not a choice between two function items: that became a function pointer, which cost
-    // the Cortex-M0+ shadow scene 313.60 -> 319.76 instructions per pixel.)
+    // not a choice between two function items: that becomes a function pointer, which costs
+    // the Cortex-M0+ shadow scene about 2 %.)
     let low_bits = |n: usize| {
         if TRI_BOUND {
             low_bits_short(n)
@@ -184,11 +184,10 @@ fn in_depth_range(z0: i32, dz: i32, n: usize) -> bool {
 }
 
 /// Whether depth loops test for a chunk they need not clamp ([`in_depth_range`]): on x86-64
-/// (callgrind: nearest floor 41.4 -> 39.4, cube 145.2 -> 143.0 instructions per pixel) and
-/// RV32 (floor 43.8 -> 39.3, cube 151.8 -> 148.0). Not on Arm. Armv7-M clamps in one `usat`,
-/// and the second loop cost the Cortex-M4F cube 125.9 -> 128.7 (the floor 29.9 -> 31.4). On
-/// Cortex-M0+ the large-span scenes gain (floor 54.0 -> 51.3) but the meshes of small
-/// triangles lose (sphere 706.7 -> 708.8 in bands, 545.0 -> 546.5 whole).
+/// and RV32 the loop without the clamp saves about 5-10 % of the nearest floor and 2 % of
+/// the cube (measure with `cargo xtask count` and `cargo xtask mcu`). Not on Arm: Armv7-M
+/// clamps in one `usat`, and the second loop costs the Cortex-M4F cube and floor about 2-5 %;
+/// on Cortex-M0+ the large-span scenes gain but the meshes of small triangles lose a little.
 const SKIP_CLAMP: bool = !cfg!(target_arch = "arm");
 
 /// The 16-bit depth of `z` (Q14 above the depth), `0..=0xFFFF`: clamped with `CLAMP`, else

@@ -91,10 +91,10 @@ impl<V: Varyings> Scratch<V> {
     }
 }
 
-// Declared here, after the span context and before the loops that use them, where their
-// code stood when it was one file: rustc emits a crate's functions in definition order, and
-// LLVM's choices follow it (declared at the top of `pipeline`, the same code cost the
-// Cortex-M4F whole sphere 0.34 instructions per pixel more).
+// Declared here, after the span context and before the loops that use them: rustc emits a
+// crate's functions in definition order and LLVM's choices follow it. Declared at the top of
+// `pipeline`, the same code costs the Cortex-M4F whole sphere a fraction of an instruction
+// per pixel more (measure with `cargo xtask mcu`).
 mod depth_pass;
 mod shade_loop;
 
@@ -107,21 +107,20 @@ use shade_loop::{shade_chunk, shade_depth_inline, shade_linear, shade_linear_inl
 /// depth, its step and the depth row through the shader's registers, but saves the mask and
 /// the second loop's set-up per span.
 ///
-/// Measured on the whole-frame spheres (instructions per pixel, same checksums):
-/// - Cortex-M4F: spans of up to 3 pixels, where LLVM unrolls the fused loop whole: sized
-///   texture 166.38 -> 162.96 with 4, and (with the walk's corner copies gone) 159.17
-///   (4) -> 158.59 (3); footprints 166.66 (4) -> 169.10 (3), plain bilinear 187.16 (4) ->
-///   182.34 (3). Every span fused cost 171.68 (the 13-register core spills in the loop), 5
-///   pixels 163.80.
-/// - Cortex-M0+, every span: 320.72 -> 317.10, 330.17 -> 324.82, 358.88 -> 352.86.
-/// - RV32IMC, up to 4 pixels: 196.47 -> 193.66, 200.71 -> 199.18, 224.27 -> 224.57
-///   (every span: 191.63 on the sized texture but 234.93 on the plain bilinear one).
-/// - x86-64 (`cargo xtask count`, up to 4 pixels): 236.7 -> 235.1.
+/// The limit per target, on the whole-frame spheres (measure with `cargo xtask mcu`; x86-64
+/// with `cargo xtask count`):
+/// - Cortex-M4F: up to 3 pixels, where LLVM unrolls the fused loop whole. That saves about
+///   1-3 % of the sphere against no fused loop; 4 pixels costs more on the footprint and
+///   plain bilinear spheres, and fusing every span costs more than it saves (the
+///   13-register core spills in the loop).
+/// - Cortex-M0+: every span (about 1-2 % saved on each sphere).
+/// - RV32IMC and x86-64: up to 4 pixels (up to about 1.5 % saved). Fusing every span on
+///   RV32IMC saves more on the sized texture but costs about 5 % more on the plain
+///   bilinear sphere.
 ///
 /// A shader with a fused loop of its own ([`Shader::PIECE_DEPTH_LOOP`]: the ARMv7E-M
 /// assembly loops of `BilinearFootprintSized` and `BilinearFootprint`) takes every short
-/// span, whatever its length: Cortex-M4F sized texture 144.68 -> 138.33, run-time size
-/// 150.55 -> 147.84.
+/// span, whatever its length: about 2-4 % of the Cortex-M4F sphere.
 const FUSED_MAX: usize = if crate::math::ARMV6M {
     CHUNK
 } else if cfg!(target_arch = "arm") {
@@ -481,8 +480,8 @@ fn run_short_any<S: Shader, C: TargetColor, D: DepthStage, const INLINE: bool>(
 /// loop on Cortex-M4F), so only the draws it serves link it: depth-tested (meshes),
 /// without a per-pixel level of detail, and with a projection for meshes of small
 /// triangles (affine or adaptive: one piece per span). Subdivided and quadratic draws
-/// (floors, big faces) measured no gain from it, and a multi-mode report firmware of mip
-/// modes outgrew the 256 KB of flash with every mode inlined.
+/// (floors, big faces) gain nothing from it, and with every mode inlined a multi-mode
+/// report firmware of mip modes outgrows the 256 KB of flash.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn span_short<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor>(
@@ -527,12 +526,12 @@ pub(crate) const fn inline_short_path<S: Shader, P: ProjectionStage, D: DepthSta
 /// projection's draws (`Draw::dynamic`) read their run-time switch (one test fewer per span
 /// for the others). `raster_shaded` checks that a typed draw never turns it off.
 ///
-/// With the short path's known affine flag, on the whole-frame sphere: Cortex-M4F 172.43 ->
-/// 170.04 instructions per pixel, RV32IMC 200.01 -> 198.92. ARMv6-M reads the switch
-/// still: without the read there its span writer allocated registers worse (322.91 ->
-/// 324.43). Only the inlined short path ([`span_short`]) uses it: the out-of-line span loop
-/// ([`span`]) reads the switch, as without it the whole-frame cube cost 100.24 -> 101.55 on
-/// Cortex-M4F (the span loop's registers allocated worse).
+/// With the short path's known affine flag this saves the whole-frame sphere about 1.5 % on
+/// Cortex-M4F and 0.5 % on RV32IMC (measure with `cargo xtask mcu`). ARMv6-M reads the
+/// switch always: without the read its span writer allocates registers worse and costs a
+/// little more. Only the inlined short path ([`span_short`]) uses it: the out-of-line span
+/// loop ([`span`]) reads the switch, as without it the span loop's registers allocate worse
+/// and the whole-frame cube costs about 1 % more on Cortex-M4F.
 #[inline(always)]
 pub(crate) fn depth_enabled<S: Shader, P: ProjectionStage>(ctx: &SpanCtx<'_, S>) -> bool {
     (P::KIND != ProjKind::Dynamic && !crate::math::ARMV6M) || ctx.depth_on
@@ -540,9 +539,9 @@ pub(crate) fn depth_enabled<S: Shader, P: ProjectionStage>(ctx: &SpanCtx<'_, S>)
 
 /// The span's depths when the draw tests depth. On ARMv6-M they are cut to the span's
 /// length first (they are the same pixels: the cut only tells the loops that both slices
-/// are as long), which there keeps a depth step in a register (Cortex-M0+ nearest floor
-/// 47.34 -> 46.47 instructions per pixel); on Cortex-M4F and x86-64 the cut costs (floor
-/// 27.11 -> 27.49, callgrind 39.35 -> 39.71).
+/// are as long), which there keeps a depth step in a register (about 2 % of the Cortex-M0+
+/// nearest floor); on Cortex-M4F and x86-64 the cut costs about 1 % of the floor, so it is
+/// not made there (measure with `cargo xtask mcu` and `cargo xtask count`).
 #[inline(always)]
 fn span_depth<'z, S: Shader, D: DepthStage>(
     ctx: &SpanCtx<'_, S>,

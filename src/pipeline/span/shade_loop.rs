@@ -102,8 +102,8 @@ pub(super) fn shade_chunk<S: Shader, C: TargetColor, D: DepthStage, const ZW: bo
 /// The unmasked loop of [`shade_linear_fn`]: every pixel of `$out`, a fully visible linear
 /// piece whose varyings `$v` change by `$slope` per pixel, shaded by `$colour` (from the
 /// fragment `$f` and the pixel `$o`), then returns the pixels written. A macro, not a
-/// function taking the shading call as a closure: that form moved the Cortex-M0+ whole
-/// sphere by 1.78 instructions per pixel (331.01 -> 332.79), this one by none.
+/// function taking the shading call as a closure: the closure form costs the Cortex-M0+
+/// whole sphere about half a percent, the macro nothing (measure with `cargo xtask mcu`).
 macro_rules! shade_every {
     ($out:ident, $v:ident, $slope:ident, $frag:ident, |$f:ident, $o:ident| $colour:expr) => {
         for (k, $o) in $out.iter_mut().enumerate() {
@@ -119,7 +119,7 @@ macro_rules! shade_every {
 
 /// Defines a linear-piece shading loop (`shade_linear` and its inlined twin): one body,
 /// two inlining decisions. A body that is itself `#[inline(always)]` inside the
-/// out-of-line function measured one instruction per pixel more on Cortex-M4F (LLVM
+/// out-of-line function costs about one instruction per pixel more on Cortex-M4F (LLVM
 /// inlines its callees in another order), so the two are expanded separately.
 macro_rules! shade_linear_fn {
     ($(#[$attr:meta])* $name:ident, $full:ident) => {

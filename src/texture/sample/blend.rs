@@ -10,9 +10,9 @@
 /// `(S i + 2^15) >> 16`, which is the nearest value to `sum w c i / 65536` (tested). One
 /// rounding instead of two (bilinear to RGB565, then modulation), and the weights are not
 /// scaled at all: three multiplies more than [`blend_q8`] in place of nine for filtering
-/// and modulating in turn. (The weights were once scaled by `i` before the sums, each
-/// rounded: 6.5 instructions per pixel more on the Cortex-M4F cube, 6.9 on M0+, and three
-/// roundings where this has one.)
+/// and modulating in turn. (Scaling the weights by `i` before the sums, each rounded,
+/// costs about 5 % more on the Cortex-M4F cube and 4 % on Cortex-M0+, and rounds three
+/// times where this rounds once; measure with `cargo xtask mcu`.)
 #[inline(always)]
 pub(crate) fn blend_q8_scaled(c: [u16; 4], a: u32, b: u32, i: u32) -> u16 {
     debug_assert!(a <= 256 && b <= 256 && i <= 256);
@@ -34,12 +34,11 @@ pub(super) fn q8_weights(a: u32, b: u32) -> [u32; 4] {
 /// per multiply. A row's two texels share a word (`c0 | c1 << 16`), its two weights another
 /// in the opposite order (`w1 | w0 << 16`), and the product's upper half is `c0 w0 + c1 w1`
 /// (its lower half, `c0 w1 < 2^14`, never carries into it; `c1 w0` falls off the top). Six
-/// multiplies for three channels where one channel pair per word took eight; the same sums
-/// and roundings as the per-texel form kept in the tests, so the same result. Measured
-/// against that form (cube / bilinear floor, instructions per pixel): Cortex-M4F 141.95 ->
-/// 137.00 / 91.67 -> 87.71, Cortex-M0+ 254.61 -> 232.53 / 177.32 -> 159.58 (one mask
-/// register serves all three channels), RV32IMC 163.98 -> 161.07 / 115.18 -> 112.28, x86-64
-/// 161.1 -> 161.1 / 118.2 -> 108.2.
+/// multiplies for three channels where one channel pair per word takes eight; the same sums
+/// and roundings as the per-texel form kept in the tests, so the same result. Against
+/// that form it saves about 4 % of the cube and the bilinear floor on Cortex-M4F, 9-10 %
+/// on Cortex-M0+ (one mask register serves all three channels), 2 % on RV32IMC, and up to
+/// 8 % of the floor on x86-64 (measure with `cargo xtask mcu` and `cargo xtask count`).
 #[inline(always)]
 pub(super) fn blend_weights(c: [u16; 4], w: [u32; 4]) -> u16 {
     // Each channel's sum is at most 63 * 256 < 2^14 (weights sum to at most 256), so adding
@@ -99,10 +98,11 @@ pub(super) struct Scale(pub(super) u32);
 
 impl Finish for Scale {
     /// Written with an arithmetic shift and signed operands (`s < 2^30` and `i <= 256`, so
-    /// the value is the same): Cortex-M0+ whole sphere from footprints 358.29 -> 356.99
-    /// instructions per pixel and cube 181.19 -> 179.18, though the plain-bilinear adaptive
-    /// sphere 385.09 -> 388.61 (register allocation); Cortex-M4F unchanged everywhere (LLVM
-    /// does not take the top half in the multiply, `smultb`, either way), RV32 within 2.2.
+    /// the value is the same): on Cortex-M0+ this saves about 0.5-1 % of the footprint
+    /// sphere and the cube, though the plain-bilinear adaptive sphere costs about 1 % more
+    /// (register allocation); Cortex-M4F is the same either way (LLVM does not take the top
+    /// half in the multiply, `smultb`), RV32IMC within about 1 % (measure with
+    /// `cargo xtask mcu`).
     #[cfg(any(test, not(target_pointer_width = "64")))]
     #[inline(always)]
     fn upper_half(self, s: u32) -> u32 {
@@ -131,9 +131,9 @@ pub(super) fn blend_pairs_u32(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> 
 /// w11 | w01 << 16)`, straight from the fractions `a`, `b` (`0..=256`): with
 /// `K = 1 - 2^16` (mod 2^32), the bottom word is `b << 16 + w11 K` and the two words sum to
 /// `256 << 16 + a K` (the same integers as packing the four weights, tested for every `a`,
-/// `b`). The footprint path uses it: Cortex-M4F cube 111.73 -> 110.37 instructions per
-/// pixel, M0+ 192.90 -> 188.83, RV32 128.00 -> 125.17. The four-texel path keeps packing
-/// the four weights: there this form cost (M4F whole sphere 275.1 -> 277.3).
+/// `b`). The footprint path uses it: about 1-2 % of the cube on Cortex-M4F, Cortex-M0+
+/// and RV32IMC. The four-texel path keeps packing the four weights: there this form costs
+/// about 1 % more on the Cortex-M4F sphere (measure with `cargo xtask mcu`).
 #[cfg(any(test, not(target_pointer_width = "64")))]
 #[inline(always)]
 pub(super) fn packed_q8_weights(a: u32, b: u32) -> (u32, u32) {
@@ -170,8 +170,8 @@ pub(super) fn blend_rows_u32(top: u32, bot: u32, (wt, wb): (u32, u32), finish: i
 /// opposite order, and lane 3 of the product is `sum c_k w_k`. Each lane of the product
 /// sums channel-times-weight terms whose weights are distinct, so it is at most
 /// `63 * 256 < 2^14`: no lane carries into the next, and the lanes above lane 3 fall off
-/// the top. One multiply per channel where the 32-bit form takes two and an add: x86-64
-/// (callgrind, instructions per pixel) bilinear floor 109.2 -> 106.3, cube 151.2 -> 145.2.
+/// the top. One multiply per channel where the 32-bit form takes two and an add: on
+/// x86-64 about 3 % of the bilinear floor and 4 % of the cube (`cargo xtask count`).
 #[cfg(any(test, target_pointer_width = "64"))]
 #[inline(always)]
 pub(super) fn blend_pairs_u64(c: [u16; 4], w: [u32; 4], finish: impl Finish) -> u16 {

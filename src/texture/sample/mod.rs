@@ -139,8 +139,9 @@ pub(crate) const REPEAT_SPLIT: i32 = 0x7F80;
 /// `t = u - 1/2 + 1/512`, `i0 = floor(t)`, `a = frac(t)` in Q8 (truncated). Where the
 /// rounded fraction would be 256 this picks the next column with weight 0, which blends
 /// the same texels with the same weights. Wrapping is the low bits, so masks alone index.
-/// (`BilinearFootprint::gather` splits `u`, `v` the same way; sharing one helper with it
-/// cost the plain path 1.2 instructions per pixel on the Cortex-M4F whole sphere.)
+/// (`BilinearFootprint::gather` splits `u`, `v` the same way; one helper shared with it
+/// costs the plain path about one instruction per pixel on the Cortex-M4F whole sphere, so
+/// each keeps its own.)
 #[inline(always)]
 fn gather_repeat(tex: &Texture<'_>, u: i32, v: i32) -> ([u16; 4], u32, u32) {
     let tu = u.wrapping_sub(REPEAT_SPLIT);
