@@ -70,4 +70,27 @@ mod tiles {
                 .unwrap();
         assert_eq!((TILES_WIDTH, TILES_HEIGHT, mips.levels()), (8, 4, 4));
     }
+
+    mod packed {
+        include!("baked/tiles_packed.rs");
+    }
+
+    /// `bake-gltf --packed` decodes, at compile time, to the text bake's arrays.
+    #[test]
+    fn packed_bake_equals_the_text_bake() {
+        assert_eq!(packed::TILES_PACKED_POSITIONS, TILES_POSITIONS);
+        assert_eq!(packed::TILES_PACKED_NORMALS, TILES_NORMALS);
+        assert_eq!(packed::TILES_PACKED_UVS, TILES_UVS);
+        assert_eq!(packed::TILES_PACKED_INDICES, TILES_INDICES);
+        assert_eq!(packed::TILES_PACKED_COLORS, TILES_COLORS);
+        assert_eq!(packed::TILES_PACKED_TEXELS, TILES_TEXELS);
+        assert_eq!(
+            (
+                packed::TILES_PACKED_WIDTH,
+                packed::TILES_PACKED_HEIGHT,
+                packed::TILES_PACKED_LEVELS
+            ),
+            (TILES_WIDTH, TILES_HEIGHT, TILES_LEVELS)
+        );
+    }
 }

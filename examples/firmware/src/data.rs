@@ -168,3 +168,17 @@ pub static SKY_GLOSS16: [Rgb565; 6 * 256] =
 pub mod teapot {
     include!("../../../assets/teapot/teapot_mesh.rs");
 }
+
+/// The glTF sample Fox baked by `cargo xtask bake-gltf` (`assets/gltf/fox.rs`: 1728
+/// vertices, 576 triangles, flat normals, its texture at 128 x 128 with the full chain):
+/// `FOX_POSITIONS`, `FOX_NORMALS`, `FOX_UVS`, `FOX_INDICES`, `FOX_TEXELS`.
+pub mod fox {
+    include!("../../../assets/gltf/fox.rs");
+}
+
+/// The glTF sample CesiumMan baked by `cargo xtask bake-gltf` (`assets/gltf/cesium_man.rs`:
+/// 3273 vertices, 4672 triangles, its texture at 128 x 128, level 0 only so the band
+/// firmware fits 256K of flash).
+pub mod cesium_man {
+    include!("../../../assets/gltf/cesium_man.rs");
+}

@@ -248,6 +248,7 @@ fn committed_fixture_and_its_bake_are_current() {
         levels: Levels::Full,
         max_texture_kib: 256,
         krate: "fixel".into(),
+        packed: false,
     };
     let b = bake(load(&dir.join("tiles.gltf")).unwrap(), &args.opts()).unwrap();
     let want = source(
@@ -264,6 +265,32 @@ fn committed_fixture_and_its_bake_are_current() {
     assert!(
         got == want,
         "host-tests/tests/baked/tiles.rs is stale: run `cargo xtask bake-gltf {}`",
+        args.command_line()
+    );
+    // The same bake, packed (host-tests checks that it decodes to the same arrays).
+    let args = GltfArgs {
+        output: "host-tests/tests/baked/tiles_packed.rs".into(),
+        name: Some("TILES_PACKED".into()),
+        packed: true,
+        ..args
+    };
+    let (bin, src) = packed(
+        &b.mesh,
+        b.colors.as_deref(),
+        b.texture.as_ref(),
+        &args.command_line(),
+        "tiles_packed.bin",
+        &args.opts(),
+    );
+    if bless {
+        std::fs::write(dir.join("tiles_packed.rs"), &src).unwrap();
+        std::fs::write(dir.join("tiles_packed.bin"), &bin).unwrap();
+    }
+    let got = std::fs::read_to_string(dir.join("tiles_packed.rs")).unwrap_or_default();
+    let got_bin = std::fs::read(dir.join("tiles_packed.bin")).unwrap_or_default();
+    assert!(
+        got == src && got_bin == bin,
+        "host-tests/tests/baked/tiles_packed.{{rs,bin}} are stale: run `cargo xtask bake-gltf {}`",
         args.command_line()
     );
 }
@@ -368,4 +395,56 @@ fn sizes_round_to_the_nearest_power_of_two_and_resampling_keeps_the_mean() {
         (f64::from(s) / 9.0).round() as u8
     };
     assert_eq!(r, vec![[mean(0), 7, 200], [mean(3), 7, 200]]);
+}
+
+/// The committed sample-model bakes (`assets/gltf/`) are what `bake-gltf` makes today.
+#[test]
+fn committed_sample_models_are_current() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let bless = std::env::var_os("FIXEL_BLESS").is_some();
+    for (glb, out, name, scale, levels) in [
+        ("Fox.glb", "fox.rs", "FOX", 0.02, Levels::Full),
+        (
+            "CesiumMan.glb",
+            "cesium_man.rs",
+            "CESIUM_MAN",
+            2.0,
+            Levels::Count(1),
+        ),
+    ] {
+        let args = GltfArgs {
+            input: format!("assets/gltf/{glb}"),
+            output: format!("assets/gltf/{out}"),
+            name: Some(name.into()),
+            scale,
+            center: true,
+            texture_size: Some(128),
+            levels,
+            max_texture_kib: 256,
+            krate: "fixel".into(),
+            packed: true,
+        };
+        let b = bake(load(&root.join(&args.input)).unwrap(), &args.opts()).unwrap();
+        let bin_name = out.replace(".rs", ".bin");
+        let (bin, src) = packed(
+            &b.mesh,
+            b.colors.as_deref(),
+            b.texture.as_ref(),
+            &args.command_line(),
+            &bin_name,
+            &args.opts(),
+        );
+        let dir = root.join("assets/gltf");
+        if bless {
+            std::fs::write(dir.join(out), &src).unwrap();
+            std::fs::write(dir.join(&bin_name), &bin).unwrap();
+        }
+        let got = std::fs::read_to_string(dir.join(out)).unwrap_or_default();
+        let got_bin = std::fs::read(dir.join(&bin_name)).unwrap_or_default();
+        assert!(
+            got == src && got_bin == bin,
+            "assets/gltf/{out} is stale: run `cargo xtask bake-gltf {}`",
+            args.command_line()
+        );
+    }
 }

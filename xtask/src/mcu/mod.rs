@@ -66,7 +66,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 20] = [
+const SCENES: [&str; 22] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -96,13 +96,17 @@ const SCENES: [&str; 20] = [
     "transparency",
     // Run-time displacement: a subdivided grid displaced by a moving swell each frame.
     "water",
+    // The glTF sample models baked by `cargo xtask bake-gltf`, static pose, 240x320 in
+    // 240x8 bands (`model_scene.rs`).
+    "fox",
+    "cesium_man",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and the
 /// banded technique scenes; and `bump` (per-pixel lit, bump-mapped sphere), drawn whole
 /// only (its 48-byte prepared vertices, 59 KB, are kept for the frame).
-const WHOLE_SCENES: [&str; 13] = [
+const WHOLE_SCENES: [&str; 15] = [
     "whole_cube",
     "whole_sphere",
     "whole_sphere_adaptive",
@@ -116,6 +120,9 @@ const WHOLE_SCENES: [&str; 13] = [
     "whole_aa_cube",
     "whole_noise_light3d",
     "bump",
+    // The glTF models into one whole 240x320 frame.
+    "whole_fox",
+    "whole_cesium_man",
 ];
 
 /// The whole-frame firmwares' machines: the band firmwares' ones, whose memory suffices

@@ -114,9 +114,8 @@ Real parts add flash wait states (hidden by caches on some) and contention: an e
 /// Expected checksums and pixel counts from the host test (same code, same frames).
 fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
     // The `ci` profile: `cargo xtask ci` has built it already for its test step.
-    let what =
-        "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu -- \
-                --nocapture";
+    let what = "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu \
+                --test model_mcu -- --nocapture";
     eprintln!("xtask: $ {what} (the host's checksums)");
     let out = output(
         Command::new("cargo").current_dir(root()).args([
@@ -130,6 +129,8 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
             "mcu_checksums",
             "--test",
             "shadow_mcu",
+            "--test",
+            "model_mcu",
             "--",
             "--nocapture",
         ]),
