@@ -10,6 +10,7 @@ mod bake_cube;
 mod bake_displaced;
 mod bake_gltf;
 mod bake_obj;
+mod bake_palette;
 mod ci;
 mod cmd;
 mod count;
@@ -180,6 +181,17 @@ enum Command {
     /// (see xtask/src/bake_gltf.rs).
     #[command(name = "bake-gltf", verbatim_doc_comment)]
     BakeGltf(bake_gltf::GltfArgs),
+    /// An RGB565 texture quantised to a 16- or 256-colour palette (4- or 8-bit indices)
+    ///
+    /// Quantises a power-of-two PNG, or fixel's benchmark texture (checker:WxH),
+    /// with its mip chain (the RGB565 chain `bake` makes) to one RGB565 palette of
+    /// 16 or 256 colours (median cut, then k-means; --dither for Floyd-Steinberg)
+    /// and 4- or 8-bit indices in fixel::texture::PaletteMips's layout, as
+    /// `pub static NAME_PALETTE` and `NAME_INDICES`. Prints the flash and the
+    /// error against the RGB565 source (PSNR, largest channel error) per level,
+    /// beside what a palette per level would reach (see xtask/src/bake_palette.rs).
+    #[command(name = "bake-palette", verbatim_doc_comment)]
+    BakePalette(bake_palette::PaletteArgs),
     /// Tessellate Newell's teapot patches (assets/teapot/newell.txt) into assets/teapot/teapot.obj
     ///
     /// Tessellates Newell's teapot patches (assets/teapot/newell.txt: 32 bicubic
@@ -242,6 +254,9 @@ fn main() -> ExitCode {
         Command::Bake(a) => bake_status("bake", "cargo xtask bake", bake::run(&a)),
         Command::BakeObj(a) => bake_status("bake-obj", "bake-obj", bake_obj::run(&a)),
         Command::BakeGltf(a) => bake_status("bake-gltf", "bake-gltf", bake_gltf::run(&a)),
+        Command::BakePalette(a) => {
+            bake_status("bake-palette", "bake-palette", bake_palette::run(&a))
+        }
         Command::BakeDisplaced(a) => {
             bake_status("bake-displaced", "bake-displaced", bake_displaced::run(&a))
         }

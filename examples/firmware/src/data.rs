@@ -182,3 +182,13 @@ pub mod fox {
 pub mod cesium_man {
     include!("../../../assets/gltf/cesium_man.rs");
 }
+
+/// `T(64, 64)` and `T(128, 128)` baked to 8- and 4-bit palette indices by `cargo xtask
+/// bake-palette` (`assets/palette/`): `T64_P8_*`, `T64_P4_*`, `T128_P8_*`, `T128_P4_*`
+/// (`_PALETTE`, `_INDICES`, `_WIDTH`, `_HEIGHT`, `_LEVELS`).
+pub mod palette {
+    include!("../../../assets/palette/t64_p8.rs");
+    include!("../../../assets/palette/t64_p4.rs");
+    include!("../../../assets/palette/t128_p8.rs");
+    include!("../../../assets/palette/t128_p4.rs");
+}

@@ -14,6 +14,7 @@ pub mod data;
 pub mod env;
 pub mod mapping;
 pub mod model_scene;
+pub mod palette_scene;
 pub mod modes;
 pub mod scenes;
 #[cfg(fixel_fw_report)]

@@ -66,7 +66,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 22] = [
+const SCENES: [&str; 28] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -100,6 +100,14 @@ const SCENES: [&str; 22] = [
     // 240x8 bands (`model_scene.rs`).
     "fox",
     "cesium_man",
+    // Palette textures (`cargo xtask bake-palette`, 8- and 4-bit indices) on the floor and
+    // the cube, and their RGB565 twins, through the same open-stage path.
+    "floor_rgb565",
+    "floor_palette8",
+    "floor_palette4",
+    "cube_rgb565",
+    "cube_palette8",
+    "cube_palette4",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout

@@ -115,7 +115,7 @@ Real parts add flash wait states (hidden by caches on some) and contention: an e
 fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
     // The `ci` profile: `cargo xtask ci` has built it already for its test step.
     let what = "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu \
-                --test model_mcu -- --nocapture";
+                --test model_mcu --test palette_mcu -- --nocapture";
     eprintln!("xtask: $ {what} (the host's checksums)");
     let out = output(
         Command::new("cargo").current_dir(root()).args([
@@ -131,6 +131,8 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
             "shadow_mcu",
             "--test",
             "model_mcu",
+            "--test",
+            "palette_mcu",
             "--",
             "--nocapture",
         ]),
