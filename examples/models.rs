@@ -45,7 +45,7 @@ fn picture(
 ) -> Result<(), Error> {
     let mesh = Mesh::new(positions, Some(normals), uvs, indices)?;
     let mut whole = Box::new(scenes::Whole::new());
-    let r = model_scene::render::<0>(
+    let r = model_scene::render::<0, 0>(
         ModelTarget::Whole(&mut whole),
         texture,
         &mesh,

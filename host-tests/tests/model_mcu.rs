@@ -53,7 +53,7 @@ fn check<const R: usize>(
     )
     .unwrap();
     let mut whole = Box::new(scenes::Whole::new());
-    let w = model_scene::render::<0>(
+    let w = model_scene::render::<0, 0>(
         ModelTarget::Whole(&mut whole),
         texture,
         &mesh,

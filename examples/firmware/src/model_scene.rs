@@ -29,10 +29,14 @@ pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 pub const FOX_RANGES: usize = 576;
 /// Band ranges of `cesium_man`: one per triangle (2 B each, 9.1 KiB).
 pub const CESIUM_MAN_RANGES: usize = 4672;
+/// Kept set-ups of `cesium_man` (88 B each): 8, not the sphere's 36, so that its band
+/// ranges, band, vertex cache and stack stay within the 24 KB RAM bar (with 36 the stack
+/// ran below RAM on Cortex-M).
+pub const CESIUM_MAN_SETUPS: usize = 8;
 
 /// Band storage of a model scene: colour and depth band, `R` band ranges (one per
-/// triangle), the prepared-vertex cache and the kept set-ups of the sphere firmware.
-pub struct ModelBuffers<const R: usize> {
+/// triangle), the prepared-vertex cache and `S` kept set-ups.
+pub struct ModelBuffers<const R: usize, const S: usize = SETUPS> {
     /// Colour band.
     pub color: [Rgb565; BAND_PIXELS],
     /// Depth band.
@@ -42,10 +46,10 @@ pub struct ModelBuffers<const R: usize> {
     /// Prepared-vertex cache.
     pub cache: [CachedVertex; CACHE],
     /// Set-ups kept from one band for the next.
-    pub setups: [KeptSetup; SETUPS],
+    pub setups: [KeptSetup; S],
 }
 
-impl<const R: usize> ModelBuffers<R> {
+impl<const R: usize, const S: usize> ModelBuffers<R, S> {
     /// Zeroed buffers.
     pub fn new() -> Self {
         ModelBuffers {
@@ -53,12 +57,12 @@ impl<const R: usize> ModelBuffers<R> {
             depth: [0; BAND_PIXELS],
             ranges: [BandRange::EMPTY; R],
             cache: [CachedVertex::EMPTY; CACHE],
-            setups: [KeptSetup::EMPTY; SETUPS],
+            setups: [KeptSetup::EMPTY; S],
         }
     }
 }
 
-impl<const R: usize> Default for ModelBuffers<R> {
+impl<const R: usize, const S: usize> Default for ModelBuffers<R, S> {
     fn default() -> Self {
         Self::new()
     }
@@ -66,9 +70,9 @@ impl<const R: usize> Default for ModelBuffers<R> {
 
 /// Where a model frame is drawn: in bands, or whole (the 320 x 240 whole-frame storage
 /// holds 240 x 320 as well).
-pub enum ModelTarget<'b, const R: usize> {
+pub enum ModelTarget<'b, const R: usize, const S: usize = SETUPS> {
     /// Band by band.
-    Bands(&'b mut ModelBuffers<R>),
+    Bands(&'b mut ModelBuffers<R, S>),
     /// One whole frame.
     Whole(&'b mut Whole),
 }
@@ -114,8 +118,8 @@ pub fn draw(texture: MipTexture<'_>) -> Result<Draw<'_, Rgb565>, Error> {
 
 /// Renders `mesh` with `model` into `buf` (240 x 320); `pause` and `resume` bracket the
 /// checksum of each band, which is left out of the count.
-pub fn render<const R: usize>(
-    buf: ModelTarget<'_, R>,
+pub fn render<const R: usize, const S: usize>(
+    buf: ModelTarget<'_, R, S>,
     texture: MipTexture<'_>,
     mesh: &Mesh<'_>,
     model: &Mat4,

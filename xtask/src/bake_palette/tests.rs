@@ -95,6 +95,9 @@ fn committed_benchmark_bakes_are_current() {
         let cmd = format!("--bits {bits} --name {name} checker:{side}x{side} {out}");
         let want = source(&q, &cmd, &name, DEFAULT_RGB565);
         let got = std::fs::read_to_string(root.join(&out)).unwrap_or_default();
-        assert!(got == want, "{out} is stale: run `cargo xtask bake-palette {cmd}`");
+        assert!(
+            got == want,
+            "{out} is stale: run `cargo xtask bake-palette {cmd}`"
+        );
     }
 }

@@ -30,7 +30,7 @@ fn run() -> bool {
     };
     report("whole_cesium_man", |pause, resume| {
         model_scene::render(
-            ModelTarget::<0>::Whole(&mut buf),
+            ModelTarget::<0, 0>::Whole(&mut buf),
             texture,
             &mesh,
             &model_scene::cesium_man_model(),

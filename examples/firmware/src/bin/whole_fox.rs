@@ -30,7 +30,7 @@ fn run() -> bool {
     };
     report("whole_fox", |pause, resume| {
         model_scene::render(
-            ModelTarget::<0>::Whole(&mut buf),
+            ModelTarget::<0, 0>::Whole(&mut buf),
             texture,
             &mesh,
             &model_scene::fox_model(),
