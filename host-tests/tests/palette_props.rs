@@ -127,8 +127,16 @@ fn check<I: IndexFormat>(c: &Case, pal: &I::Palette, packed: &[u8], expanded: &[
     }
 }
 
+/// 512 cases, or `PROPTEST_CASES` when set (for long local runs).
+fn cases() -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(512)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
 
     #[test]
     fn index8_equals_expanded_and_the_f64_blend(c in case()) {
