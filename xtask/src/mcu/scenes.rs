@@ -338,7 +338,8 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         qemu_version()
     );
     println!(
-        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band; \
+        "Frame 0 of each scene, 320x240 RGB565 (the glTF models fox and cesium_man: 240x320) in \
+         bands of 8 rows (colour + 16-bit depth band; \
          16 triangle bins for the cube and floor, a 2-byte band range per triangle for the \
          sphere; 24 KB of RAM), one frame per run (QEMU is deterministic: one frame is enough).\n\
          insns/px = instructions executed by the renderer (geometry, binning, band clears, \
