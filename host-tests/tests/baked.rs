@@ -47,3 +47,50 @@ fn baked_chain_equals_generate_mips() {
     assert_eq!((mips.level(4).width(), mips.level(4).height()), (1, 1));
     assert_eq!((mips.level(3).width(), mips.level(3).height()), (2, 1));
 }
+
+/// `cargo xtask bake-gltf` output: `baked/tiles.rs`, baked from the textured fixture
+/// `baked/tiles.gltf` (two nodes, vertex colours, a 6 x 3 image), checked for freshness by
+/// xtask's own test.
+mod tiles {
+    include!("baked/tiles.rs");
+
+    #[test]
+    fn baked_gltf_is_a_mesh_and_a_mip_chain() {
+        let mesh = fixel::scene::Mesh::new(
+            &TILES_POSITIONS,
+            Some(&TILES_NORMALS),
+            &TILES_UVS,
+            &TILES_INDICES,
+        )
+        .unwrap();
+        assert_eq!((mesh.vertices(), mesh.triangles()), (7, 3));
+        assert_eq!(TILES_COLORS.len(), 7);
+        let mips =
+            fixel::texture::MipTexture::new(&TILES_TEXELS, TILES_WIDTH, TILES_HEIGHT, TILES_LEVELS)
+                .unwrap();
+        assert_eq!((TILES_WIDTH, TILES_HEIGHT, mips.levels()), (8, 4, 4));
+    }
+
+    mod packed {
+        include!("baked/tiles_packed.rs");
+    }
+
+    /// `bake-gltf --packed` decodes, at compile time, to the text bake's arrays.
+    #[test]
+    fn packed_bake_equals_the_text_bake() {
+        assert_eq!(packed::TILES_PACKED_POSITIONS, TILES_POSITIONS);
+        assert_eq!(packed::TILES_PACKED_NORMALS, TILES_NORMALS);
+        assert_eq!(packed::TILES_PACKED_UVS, TILES_UVS);
+        assert_eq!(packed::TILES_PACKED_INDICES, TILES_INDICES);
+        assert_eq!(packed::TILES_PACKED_COLORS, TILES_COLORS);
+        assert_eq!(packed::TILES_PACKED_TEXELS, TILES_TEXELS);
+        assert_eq!(
+            (
+                packed::TILES_PACKED_WIDTH,
+                packed::TILES_PACKED_HEIGHT,
+                packed::TILES_PACKED_LEVELS
+            ),
+            (TILES_WIDTH, TILES_HEIGHT, TILES_LEVELS)
+        );
+    }
+}

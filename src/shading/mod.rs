@@ -39,10 +39,12 @@
 
 pub(crate) mod builtin;
 pub mod facet;
+mod palette;
 mod texcoord;
 
 pub use builtin::{q8, Classic, Flat, Gouraud, Modulate, ModulateIntensity, Replace};
 pub use facet::ModulateFacet;
+pub use palette::{PaletteBinding, PaletteModulateIntensity, PaletteReplace};
 pub use texcoord::{check_footprints_bound, TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)

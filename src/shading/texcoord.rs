@@ -194,32 +194,13 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             }
             _ => (self.base.log2_width(), self.base.log2_height()),
         };
-        if let (Some(tu), Some(tv)) = (
-            texel_coords_small(u, log2_w, self.wu.mode()),
-            texel_coords_small(v, log2_h, self.wv.mode()),
-        ) {
-            write_pair(vary, pair, tu, tv);
-            return TexTriangle { shift: 0 };
-        }
-        let mut tu = texel_coords(u, log2_w, self.wu.mode());
-        let mut tv = texel_coords(v, log2_h, self.wv.mode());
-        const LIM: i64 = 1 << 30;
-        for (t, w) in [(&mut tu, self.wu.mode()), (&mut tv, self.wv.mode())] {
-            if !periodic(w) {
-                for x in t.iter_mut() {
-                    *x = (*x).clamp(-LIM, LIM);
-                }
-            }
-        }
-        // The bit length of the largest magnitude is that of all magnitudes or-ed together.
-        let bits = tu
-            .iter()
-            .chain(tv.iter())
-            .fold(0u64, |m, x| m | x.unsigned_abs());
-        let shift = (64 - wide::clz64(bits)).saturating_sub(30);
-        let narrow = |t: [i64; 3]| t.map(|a| wide::sar(a, shift) as i32);
-        write_pair(vary, pair, narrow(tu), narrow(tv));
-        TexTriangle { shift: shift as u8 }
+        texel_triangle(
+            vary,
+            pair,
+            (u, v),
+            (log2_w, log2_h),
+            (self.wu.mode(), self.wv.mode()),
+        )
     }
 
     /// Samples at texel coordinates `u`, `v` (I16F16 texel units, as the span loop hands
@@ -303,6 +284,46 @@ impl<'a, F: TexSampler, WU: WrapMode, WV: WrapMode> TexBinding<'a, F, WU, WV> {
             zrow,
         )
     }
+}
+
+/// The texel-coordinate set-up of [`TexBinding::triangle`] for a level 0 of
+/// `2^log2.0 x 2^log2.1` texels and wraps `wraps`: the vertices' normalized coordinates
+/// `uv` (I16F16 bits) to rebased, rarely shifted, texel units written into varyings `pair`.
+/// Shared with the palette textures' binding.
+#[inline(always)]
+pub(crate) fn texel_triangle<V: Varyings>(
+    vary: &mut [V; 3],
+    pair: (usize, usize),
+    (u, v): ([i32; 3], [i32; 3]),
+    (log2_w, log2_h): (u32, u32),
+    (wu, wv): (Wrap, Wrap),
+) -> TexTriangle {
+    if let (Some(tu), Some(tv)) = (
+        texel_coords_small(u, log2_w, wu),
+        texel_coords_small(v, log2_h, wv),
+    ) {
+        write_pair(vary, pair, tu, tv);
+        return TexTriangle { shift: 0 };
+    }
+    let mut tu = texel_coords(u, log2_w, wu);
+    let mut tv = texel_coords(v, log2_h, wv);
+    const LIM: i64 = 1 << 30;
+    for (t, w) in [(&mut tu, wu), (&mut tv, wv)] {
+        if !periodic(w) {
+            for x in t.iter_mut() {
+                *x = (*x).clamp(-LIM, LIM);
+            }
+        }
+    }
+    // The bit length of the largest magnitude is that of all magnitudes or-ed together.
+    let bits = tu
+        .iter()
+        .chain(tv.iter())
+        .fold(0u64, |m, x| m | x.unsigned_abs());
+    let shift = (64 - wide::clz64(bits)).saturating_sub(30);
+    let narrow = |t: [i64; 3]| t.map(|a| wide::sar(a, shift) as i32);
+    write_pair(vary, pair, narrow(tu), narrow(tv));
+    TexTriangle { shift: shift as u8 }
 }
 
 /// Writes the three vertices' texel coordinates `tu`, `tv` into varyings `pair` (indices

@@ -8,7 +8,9 @@
 //! [`ClampToBorder`]; [`Nearest`], [`Bilinear`], [`BilinearFootprint`],
 //! [`BilinearFootprintSized`]) so the per-pixel path is monomorphised;
 //! [`DynWrap`], [`Filter`] and [`Texture::sample_dyn`] select at run time. All results are
-//! raw RGB565 `u16`. See each submodule for the exact formulas.
+//! raw RGB565 `u16`. See each submodule for the exact formulas. Palette textures
+//! ([`PaletteTexture`], [`PaletteMips`]: 8- or 4-bit indices into an RGB565 palette) sample
+//! through the same filters and wraps.
 
 mod footprint;
 mod footprint_sized;
@@ -16,6 +18,7 @@ mod footprint_sized;
 mod footprint_span_dsp;
 mod height;
 pub(crate) mod mip;
+mod palette;
 pub(crate) mod sample;
 #[allow(clippy::module_inception)]
 mod texture;
@@ -29,6 +32,9 @@ pub use mip::{
     chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,
     LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
     NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear, MAX_LEVELS,
+};
+pub use palette::{
+    palette_chain_bytes, Index4, Index8, IndexFormat, PaletteFilter, PaletteMips, PaletteTexture,
 };
 pub use sample::{Bilinear, BilinearFast, Filter, Nearest, Sampler};
 pub use texture::{Texture, MAX_LOG2_SIZE};

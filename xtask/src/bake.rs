@@ -144,6 +144,23 @@ pub fn source(base: &[[u8; 3]], w: u32, h: u32, input: &str, o: &BakeOpts) -> St
          // {n}_LEVELS)`.\n",
         texels.len()
     );
+    s.push_str(&texel_items(&texels, w, h, levels, input, o));
+    s
+}
+
+/// The items of a baked chain (`texels`: `levels` levels from a `w x h` level 0, as
+/// [`chain`] makes them): `NAME_WIDTH`, `NAME_HEIGHT`, `NAME_LEVELS` and `NAME_TEXELS`,
+/// without a file header (`bake-gltf` writes them after its mesh).
+pub fn texel_items(
+    texels: &[[u8; 3]],
+    w: u32,
+    h: u32,
+    levels: u32,
+    input: &str,
+    o: &BakeOpts,
+) -> String {
+    let n = &o.name;
+    let mut s = String::new();
     let _ = writeln!(s, "/// Width of level 0 of `{n}_TEXELS`, in texels.");
     let _ = writeln!(s, "pub const {n}_WIDTH: u32 = {w};");
     let _ = writeln!(s, "/// Height of level 0 of `{n}_TEXELS`, in texels.");
@@ -160,7 +177,7 @@ pub fn source(base: &[[u8; 3]], w: u32, h: u32, input: &str, o: &BakeOpts) -> St
         t = o.rgb565,
         len = texels.len()
     );
-    for t in &texels {
+    for t in texels {
         let _ = writeln!(s, "    {}::new({}, {}, {}),", o.rgb565, t[0], t[1], t[2]);
     }
     s.push_str("];\n");
@@ -214,7 +231,7 @@ pub enum Levels {
     Count(u32),
 }
 
-fn parse_levels(s: &str) -> Result<Levels, String> {
+pub(crate) fn parse_levels(s: &str) -> Result<Levels, String> {
     match s {
         "full" => Ok(Levels::Full),
         n => match n.parse::<u32>() {
@@ -224,7 +241,7 @@ fn parse_levels(s: &str) -> Result<Levels, String> {
     }
 }
 
-fn parse_name(s: &str) -> Result<String, String> {
+pub(crate) fn parse_name(s: &str) -> Result<String, String> {
     if s.is_empty() || !s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
         Err("use letters, digits and `_`".into())
     } else {

@@ -7,7 +7,7 @@ use std::time::Instant;
 use crate::cmd::{cargo, fmt_dur, root, Cmd};
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 14] = [
+const RENDER_EXAMPLES: [&str; 15] = [
     "showcase",
     "scenes",
     "preview",
@@ -21,6 +21,7 @@ const RENDER_EXAMPLES: [&str; 14] = [
     "transparency",
     "surface_detail",
     "displacement",
+    "models",
     // Last: composes the README's gallery from the pictures above.
     "gallery",
 ];

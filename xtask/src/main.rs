@@ -2,13 +2,15 @@
 //!
 //! Few dependencies so it builds quickly: the command line is parsed with `clap` (derive:
 //! [`Cli`] here, each command's flags next to its code) and every tool is driven through
-//! `std::process::Command`; `png` and `tobj` read the inputs of the bake commands, and
+//! `std::process::Command`; `png`, `tobj` and `gltf` read the inputs of the bake commands, and
 //! `indicatif` shows the progress of the long runs (`cargo xtask mcu`).
 
 mod bake;
 mod bake_cube;
 mod bake_displaced;
+mod bake_gltf;
 mod bake_obj;
+mod bake_palette;
 mod ci;
 mod cmd;
 mod count;
@@ -166,6 +168,30 @@ enum Command {
     /// coordinates with fixel's own mapping (see xtask/src/bake_obj.rs).
     #[command(verbatim_doc_comment)]
     BakeObj(bake_obj::ObjArgs),
+    /// A glTF 2.0 model (.glb/.gltf) as static arrays: its meshes and base-colour texture
+    ///
+    /// A glTF 2.0 model (.glb, or .gltf with its buffers and images) as static
+    /// arrays in fixel's formats: every mesh primitive of the default scene,
+    /// carried by its node's transform and welded into one mesh (positions,
+    /// normals, uvs, u16 triangles, and vertex colours when the model has them),
+    /// and the base-colour texture resized to power-of-two sides with its mip
+    /// chain (RGB565, as `bake`). Skins and animations are not applied (the bind
+    /// pose). Refuses non-triangle primitives, missing attributes, indices out of
+    /// range and textures over --max-texture-kib, naming the part of the file
+    /// (see xtask/src/bake_gltf.rs).
+    #[command(name = "bake-gltf", verbatim_doc_comment)]
+    BakeGltf(bake_gltf::GltfArgs),
+    /// An RGB565 texture quantised to a 16- or 256-colour palette (4- or 8-bit indices)
+    ///
+    /// Quantises a power-of-two PNG, or fixel's benchmark texture (checker:WxH),
+    /// with its mip chain (the RGB565 chain `bake` makes) to one RGB565 palette of
+    /// 16 or 256 colours (median cut, then k-means; --dither for Floyd-Steinberg)
+    /// and 4- or 8-bit indices in fixel::texture::PaletteMips's layout, as
+    /// `pub static NAME_PALETTE` and `NAME_INDICES`. Prints the flash and the
+    /// error against the RGB565 source (PSNR, largest channel error) per level,
+    /// beside what a palette per level would reach (see xtask/src/bake_palette.rs).
+    #[command(name = "bake-palette", verbatim_doc_comment)]
+    BakePalette(bake_palette::PaletteArgs),
     /// Tessellate Newell's teapot patches (assets/teapot/newell.txt) into assets/teapot/teapot.obj
     ///
     /// Tessellates Newell's teapot patches (assets/teapot/newell.txt: 32 bicubic
@@ -227,6 +253,10 @@ fn main() -> ExitCode {
         },
         Command::Bake(a) => bake_status("bake", "cargo xtask bake", bake::run(&a)),
         Command::BakeObj(a) => bake_status("bake-obj", "bake-obj", bake_obj::run(&a)),
+        Command::BakeGltf(a) => bake_status("bake-gltf", "bake-gltf", bake_gltf::run(&a)),
+        Command::BakePalette(a) => {
+            bake_status("bake-palette", "bake-palette", bake_palette::run(&a))
+        }
         Command::BakeDisplaced(a) => {
             bake_status("bake-displaced", "bake-displaced", bake_displaced::run(&a))
         }

@@ -203,3 +203,27 @@ pub static BRICK_DERIVS: [Rgb565; fixel::texture::chain_len(64, 64, 7)] = texels
 
 /// The derivative map's scale (I16F16).
 pub const BRICK_SCALE: Fx = Fx::from_bits(include!(concat!(env!("OUT_DIR"), "/brick_scale.rs")));
+
+/// The glTF sample Fox baked by `cargo xtask bake-gltf` (`assets/gltf/fox.rs`: 1728
+/// vertices, 576 triangles, flat normals, its texture at 128 x 128 with the full chain):
+/// `FOX_POSITIONS`, `FOX_NORMALS`, `FOX_UVS`, `FOX_INDICES`, `FOX_TEXELS`.
+pub mod fox {
+    include!("../../../assets/gltf/fox.rs");
+}
+
+/// The glTF sample CesiumMan baked by `cargo xtask bake-gltf` (`assets/gltf/cesium_man.rs`:
+/// 3273 vertices, 4672 triangles, its texture at 128 x 128, level 0 only so the band
+/// firmware fits 256K of flash).
+pub mod cesium_man {
+    include!("../../../assets/gltf/cesium_man.rs");
+}
+
+/// `T(64, 64)` and `T(128, 128)` baked to 8- and 4-bit palette indices by `cargo xtask
+/// bake-palette` (`assets/palette/`): `T64_P8_*`, `T64_P4_*`, `T128_P8_*`, `T128_P4_*`
+/// (`_PALETTE`, `_INDICES`, `_WIDTH`, `_HEIGHT`, `_LEVELS`).
+pub mod palette {
+    include!("../../../assets/palette/t64_p8.rs");
+    include!("../../../assets/palette/t64_p4.rs");
+    include!("../../../assets/palette/t128_p8.rs");
+    include!("../../../assets/palette/t128_p4.rs");
+}

@@ -13,6 +13,8 @@ pub mod alpha;
 pub mod data;
 pub mod env;
 pub mod mapping;
+pub mod model_scene;
+pub mod palette_scene;
 pub mod modes;
 pub mod open_frame;
 pub mod scenes;

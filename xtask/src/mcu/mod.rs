@@ -67,7 +67,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 21] = [
+const SCENES: [&str; 29] = [
     "cube",
     "sphere",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
@@ -99,13 +99,25 @@ const SCENES: [&str; 21] = [
     "water",
     // Per-pixel lighting of a bump-mapped sphere (mesh and brick maps in flash).
     "bump",
+    // The glTF sample models baked by `cargo xtask bake-gltf`, static pose, 240x320 in
+    // 240x8 bands (`model_scene.rs`).
+    "fox",
+    "cesium_man",
+    // Palette textures (`cargo xtask bake-palette`, 8- and 4-bit indices) on the floor and
+    // the cube, and their RGB565 twins, through the same open-stage path.
+    "floor_rgb565",
+    "floor_palette8",
+    "floor_palette4",
+    "cube_rgb565",
+    "cube_palette8",
+    "cube_palette4",
 ];
 
 /// The same scenes drawn into one whole 320x240 frame (feature `whole`, memory layout
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and with the
 /// banded scenes; and `sphere_sized`, the sphere in bands in its fastest mode, whose
 /// texture footprints (256 KB) need this layout's flash (its RAM is a band firmware's).
-const WHOLE_SCENES: [&str; 19] = [
+const WHOLE_SCENES: [&str; 21] = [
     "whole_cube",
     "sphere_sized",
     "whole_sphere",
@@ -125,6 +137,9 @@ const WHOLE_SCENES: [&str; 19] = [
     "whole_transparency",
     "whole_water",
     "whole_bump",
+    // The glTF models into one whole 240x320 frame.
+    "whole_fox",
+    "whole_cesium_man",
 ];
 
 /// The whole-frame firmwares' machines: the band firmwares' ones, whose memory suffices

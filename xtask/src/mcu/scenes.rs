@@ -115,9 +115,8 @@ Real parts add flash wait states (hidden by caches on some) and contention: an e
 /// Expected checksums and pixel counts from the host test (same code, same frames).
 fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
     // The `ci` profile: `cargo xtask ci` has built it already for its test step.
-    let what =
-        "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu -- \
-                --nocapture";
+    let what = "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu \
+                --test model_mcu --test palette_mcu -- --nocapture";
     eprintln!("xtask: $ {what} (the host's checksums)");
     let out = output(
         Command::new("cargo").current_dir(root()).args([
@@ -131,6 +130,10 @@ fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
             "mcu_checksums",
             "--test",
             "shadow_mcu",
+            "--test",
+            "model_mcu",
+            "--test",
+            "palette_mcu",
             "--",
             "--nocapture",
         ]),
@@ -336,7 +339,8 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
         qemu_version()
     );
     println!(
-        "Frame 0 of each scene, 320x240 RGB565 in bands of 8 rows (colour + 16-bit depth band; \
+        "Frame 0 of each scene, 320x240 RGB565 (the glTF models fox and cesium_man: 240x320) in \
+         bands of 8 rows (colour + 16-bit depth band; \
          16 triangle bins for the cube and floor, a 2-byte band range per triangle for the \
          sphere; 24 KB of RAM), one frame per run (QEMU is deterministic: one frame is enough).\n\
          insns/px = instructions executed by the renderer (geometry, binning, band clears, \
