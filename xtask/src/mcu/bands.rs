@@ -37,6 +37,8 @@ pub(super) struct Figures {
     pub geometry: BTreeMap<(String, &'static str), f64>,
     /// RAM: static data + measured stack, bytes.
     pub ram: BTreeMap<(String, &'static str), u64>,
+    /// The frame's counted instructions and estimated cycles (the static cycle model).
+    pub frame: BTreeMap<(String, &'static str), (u64, f64)>,
 }
 
 /// Every banded scene, in table order: the band firmwares, then the banded ones built in
@@ -168,6 +170,51 @@ pub(super) fn tgx(f: &Figures) -> String {
             "| {what} | {} | {m4:.1} | {} | {m0:.0} |\n",
             cell("Cortex-M4F"),
             cell("Cortex-M0+"),
+        ));
+    }
+    t
+}
+
+/// The glTF sample models against the only published board figures for them (a C++
+/// renderer on ESP32 boards, 240 x 320): (model, fixel scene, peer's figure).
+const MODELS: [(&str, &str, &str); 2] = [
+    (
+        "Fox (576 triangles)",
+        "fox",
+        "192 ms on an ESP32-C6 (RISC-V, 160 MHz, no FPU); 22.2 ms on one ESP32-S3 core, 14.9 ms on two",
+    ),
+    ("CesiumMan (4,672 triangles)", "cesium_man", "not published"),
+];
+
+/// The clock the RV32IMC figures are turned into milliseconds at (an ESP32-C3 / C6 class
+/// core), Hz.
+const RV32_CLOCK: f64 = 160e6;
+
+/// The README's table of the glTF models: exact instructions per frame on RV32IMC, the
+/// cycle model's estimate and the time it gives at 160 MHz, banded and whole, beside the
+/// peer's board figures.
+pub(super) fn models(f: &Figures) -> String {
+    let mut t = String::from(
+        "| model | fixel on RV32IMC, whole frame: instructions, est. cycles, at 160 MHz (model) | in 8-row bands (24 KB of RAM) | peer, measured on boards |\n\
+         |---|---:|---:|---|\n",
+    );
+    for (name, scene, peer) in MODELS {
+        let cell = |s: String| {
+            f.frame
+                .get(&(s, "RV32IMC"))
+                .map_or("-".into(), |(n, c)| {
+                    format!(
+                        "{:.2} M, {:.2} M, **{:.1} ms**",
+                        *n as f64 / 1e6,
+                        c / 1e6,
+                        c / RV32_CLOCK * 1e3
+                    )
+                })
+        };
+        t.push_str(&format!(
+            "| {name} | {} | {} | {peer} |\n",
+            cell(format!("whole_{scene}")),
+            cell(scene.to_string()),
         ));
     }
     t

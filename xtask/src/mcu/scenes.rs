@@ -290,6 +290,7 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
             let key = (scene.to_string(), m.label);
             figures.per_px.insert(key.clone(), r.net as f64 / px);
             figures.ram.insert(key.clone(), ram + r.stack);
+            figures.frame.insert(key.clone(), (r.net, r.est_cycles));
             if let Some(g) = r.geometry {
                 figures.geometry.insert(key, g as f64 / r.net.max(1) as f64);
             }
@@ -393,6 +394,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
                 fs::write(root().join("docs").join("mcu.md"), doc).map_err(|e| e.to_string()),
                 bands::write_region(&root().join("README.md"), "mcu-bands", &compact),
                 bands::write_region(&root().join("README.md"), "tgx", &bands::tgx(&figures)),
+                bands::write_region(
+                    &root().join("README.md"),
+                    "models",
+                    &bands::models(&figures),
+                ),
             ];
             for r in results {
                 if let Err(e) = r {
