@@ -105,6 +105,27 @@ fn main() {
         .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
         .collect();
     fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
+    // A 128 x 128 sphere map baked from the 64-texel sky cube map (bilinear): the
+    // `env_matcap` scene's texture, the environment the per-pixel scenes read.
+    let sky: Vec<Vec<Rgb565>> = (0..6)
+        .map(|f| {
+            let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+            fixel::shading::env::sky::sky_face(f, 64, &mut t).unwrap();
+            t
+        })
+        .collect();
+    let cube = fixel::shading::env::CubeMap::new(
+        core::array::from_fn(|i| fixel::texture::Texture::new(&sky[i], 64, 64).unwrap()),
+        fixel::texture::Bilinear,
+    )
+    .unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 128 * 128];
+    fixel::shading::env::bake_sphere_map(&cube, 128, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-sphere128.bin"), bytes).unwrap();
     let mut t = vec![Rgb565::new(0, 0, 0); 128 * 64];
     fixel::shading::env::sky::sky_latlong(128, 64, &mut t).unwrap();
     let bytes: Vec<u8> = t

@@ -450,3 +450,46 @@ fn mcu_water() {
         "water: bands differ from the whole frame"
     );
 }
+
+// The sphere-map (matcap) frame: `env_matcap`.
+#[path = "../../examples/firmware/src/matcap_scene.rs"]
+mod matcap_scene;
+
+/// The `env_matcap` firmware (`examples/firmware/src/bin/env_matcap.rs`, frame 0): the
+/// sphere through its per-vertex sphere-map coordinates and the 128 x 128 sky sphere map,
+/// in bands; the whole frame of the same walk gives the same picture.
+#[test]
+fn mcu_env_matcap() {
+    let map = host_tests::env_scene::sky_sphere_map(128);
+    let tex = Texture::new(&map, 128, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = matcap_scene::env_matcap(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("env_matcap", &r);
+    let mut whole_buf = Box::new(Whole::new());
+    let w = matcap_scene::env_matcap(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    assert_eq!(
+        (w.checksum, w.stats.pixels),
+        (r.checksum, r.stats.pixels),
+        "env_matcap: bands differ from the whole frame"
+    );
+}

@@ -145,6 +145,13 @@ pub static SKY_SPHERE64: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
     "/sky-sphere64.bin"
 )));
 
+/// [`SKY64`] as a 128 x 128 sphere map (32 KB, `fixel::shading::env::bake_sphere_map`,
+/// bilinear): the `env_matcap` scene's texture.
+pub static SKY_SPHERE128: [Rgb565; 128 * 128] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-sphere128.bin"
+)));
+
 /// The same sky as a 128 x 64 latitude-longitude map (16 KB).
 pub static SKY_LATLONG128X64: [Rgb565; 128 * 64] = texels(include_bytes!(concat!(
     env!("OUT_DIR"),

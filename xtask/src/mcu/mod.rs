@@ -66,9 +66,12 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 20] = [
+const SCENES: [&str; 21] = [
     "cube",
     "sphere",
+    // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
+    // draw, beside the sphere it is compared with.
+    "env_matcap",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
     "teapot",
     "floor",
