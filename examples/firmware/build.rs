@@ -105,6 +105,28 @@ fn main() {
         .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
         .collect();
     fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
+    // The marble baked for the benchmark sphere's texture coordinates (256 x 128,
+    // band-limited turbulence of at most 6 octaves): the `noise_baked` scene's texture.
+    {
+        use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+        let ramps = Ramps::new().unwrap();
+        let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+        let surface = presets::baked_sphere_surface();
+        bake(
+            &ramps.marble(),
+            &BandLimit::new(6),
+            &surface,
+            256,
+            128,
+            &mut t,
+        )
+        .unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join("marble256x128.bin"), bytes).unwrap();
+    }
     // A 128 x 128 sphere map baked from the 64-texel sky cube map (bilinear): the
     // `env_matcap` scene's texture, the environment the per-pixel scenes read.
     let sky: Vec<Vec<Rgb565>> = (0..6)

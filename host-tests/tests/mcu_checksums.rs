@@ -493,3 +493,45 @@ fn mcu_env_matcap() {
         "env_matcap: bands differ from the whole frame"
     );
 }
+
+/// The `noise_baked` firmware (`examples/firmware/src/bin/noise_baked.rs`, frame 0): the
+/// sphere scene with the marble baked here at run time into the sphere's texture (the
+/// firmware's is baked by its `build.rs` with the same function: equal checksums show the
+/// two bakes equal).
+#[test]
+fn mcu_noise_baked() {
+    use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+    let ramps = Ramps::new().unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    let surface = presets::baked_sphere_surface();
+    bake(
+        &ramps.marble(),
+        &BandLimit::new(6),
+        &surface,
+        256,
+        128,
+        &mut t,
+    )
+    .unwrap();
+    let tex = Texture::new(&t, 256, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = scenes::sphere(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("noise_baked", &r);
+    assert_eq!(
+        whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true),
+        (r.checksum, r.stats.pixels),
+        "noise_baked: bands differ from the whole frame"
+    );
+}

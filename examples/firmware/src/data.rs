@@ -64,6 +64,13 @@ texture!(T8_TEXELS, T8, 8, 8, "t8x8.bin");
 texture!(T64_TEXELS, T64, 64, 64, "t64x64.bin");
 texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
+texture!(
+    MARBLE256X128_TEXELS,
+    MARBLE256X128,
+    256,
+    128,
+    "marble256x128.bin"
+);
 footprints!(T64_FOOTPRINTS, T64_FP, T64_TEXELS, 64, 64, "t64x64.bin");
 footprints!(
     T256X128_FOOTPRINTS,

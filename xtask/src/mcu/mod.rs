@@ -66,12 +66,14 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 21] = [
+const SCENES: [&str; 22] = [
     "cube",
     "sphere",
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
     // draw, beside the sphere it is compared with.
     "env_matcap",
+    // The marble baked into the sphere's texture (at build time): the same draw as `sphere`.
+    "noise_baked",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
     "teapot",
     "floor",
