@@ -535,3 +535,66 @@ fn mcu_noise_baked() {
         "noise_baked: bands differ from the whole frame"
     );
 }
+
+/// The `bump_fast` firmware (`examples/firmware/src/bin/bump_fast.rs`, frame 0): the
+/// sphere, unlit, with the brick lighting resolved here at run time into its texture (the
+/// firmware's is resolved by its `build.rs` with the same function).
+#[test]
+fn mcu_bump_fast() {
+    use fixel::demo::surface;
+    use fixel::shading::bump::{resolve_sphere, HeightDifferences};
+    use fixel::shading::lighting::{Material, Specular};
+    use fixel::texture::{chain_len, HeightMap};
+    let (n, levels) = (64, 7);
+    let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    let mut heights = vec![0u8; chain_len(n, n, levels)];
+    let mut derivs = vec![Rgb565::new(0, 0, 0); chain_len(n, n, levels)];
+    surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs).unwrap();
+    let tile = Texture::new(&colours, n, n).unwrap();
+    let map = HeightMap::new(&heights, n, n, levels).unwrap();
+    let normals = HeightDifferences::new(map, Fx::from_bits(surface::RESOLVE_STRENGTH)).unwrap();
+    let material = Material {
+        specular: 0,
+        ..surface::material(Specular::None)
+    };
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    resolve_sphere(
+        &tile,
+        &normals,
+        &material,
+        surface::resolve_light(),
+        256,
+        128,
+        &mut t,
+    )
+    .unwrap();
+    let tex = Texture::new(&t, 256, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = scenes::render::<
+        scenes::FloorBilinear,
+        { scenes::RANGES },
+        { scenes::CACHE },
+        0,
+        { scenes::SETUPS },
+    >(
+        Target::Bands(&mut *buf),
+        MipTexture::single(tex),
+        &mesh,
+        &demo::sphere_model(0),
+        20,
+        false,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("bump_fast", &r);
+    assert_eq!(
+        whole::<scenes::FloorBilinear>(tex, &mesh, &demo::sphere_model(0), 20, false),
+        (r.checksum, r.stats.pixels),
+        "bump_fast: bands differ from the whole frame"
+    );
+}

@@ -71,6 +71,13 @@ texture!(
     128,
     "marble256x128.bin"
 );
+texture!(
+    BRICKS_LIT256X128_TEXELS,
+    BRICKS_LIT256X128,
+    256,
+    128,
+    "bricks-lit256x128.bin"
+);
 footprints!(T64_FOOTPRINTS, T64_FP, T64_TEXELS, 64, 64, "t64x64.bin");
 footprints!(
     T256X128_FOOTPRINTS,

@@ -66,7 +66,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 22] = [
+const SCENES: [&str; 23] = [
     "cube",
     "sphere",
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
@@ -74,6 +74,9 @@ const SCENES: [&str; 22] = [
     "env_matcap",
     // The marble baked into the sphere's texture (at build time): the same draw as `sphere`.
     "noise_baked",
+    // The brick sphere's bump lighting resolved into its texture (light fixed in object
+    // space): the same draw as `sphere`, unlit.
+    "bump_fast",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
     "teapot",
     "floor",
