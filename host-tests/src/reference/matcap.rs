@@ -45,6 +45,7 @@ pub fn sphere_map_uv(model_view: &Mat4, p: Vec3, n: Vec3) -> [f64; 2] {
 /// The reference frame (`width x height`, depth-tested, back faces culled) of the mesh
 /// (`positions`, `normals`, `indices`) with clip positions from `mvp` (fixel's bits) and
 /// `(s, t)` from [`sphere_map_uv`] under `model_view`, sampling `map` bilinearly.
+#[allow(clippy::too_many_arguments)]
 pub fn render_matcap(
     positions: &[Vec3],
     normals: &[Vec3],

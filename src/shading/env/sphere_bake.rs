@@ -79,6 +79,7 @@ mod tests {
 
     #[test]
     fn sizes_are_checked() {
+        #[derive(Clone, Copy, Debug)]
         struct Grey;
         impl EnvLookup for Grey {
             fn lookup(&self, _: [i32; 3]) -> u16 {

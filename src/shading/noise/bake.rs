@@ -56,7 +56,7 @@ impl BakeSurface for SphereSurface {
         let (sp, cp) = sin_cos(Angle(s as u16));
         let r = i64::from(self.radius.to_bits());
         let q = |a: Fx, b: Fx| {
-            ((i64::from(a.to_bits()) * i64::from(b.to_bits()) >> 16) * r >> 16) as i32
+            ((((i64::from(a.to_bits()) * i64::from(b.to_bits())) >> 16) * r) >> 16) as i32
         };
         let y = ((i64::from(ct.to_bits()) * r) >> 16) as i32;
         [q(st, cp), y, q(st, sp).wrapping_neg()]
