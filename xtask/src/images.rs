@@ -7,7 +7,7 @@ use std::time::Instant;
 use crate::cmd::{cargo, fmt_dur, root, Cmd};
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 13] = [
+const RENDER_EXAMPLES: [&str; 14] = [
     "showcase",
     "scenes",
     "preview",
@@ -21,6 +21,8 @@ const RENDER_EXAMPLES: [&str; 13] = [
     "transparency",
     "surface_detail",
     "displacement",
+    // The real-time modes beside the accurate ones.
+    "realtime",
 ];
 
 pub(crate) fn bless() -> ExitCode {
