@@ -218,7 +218,10 @@ proptest! {
         let f = |v: Vec3| [v.x, v.y, v.z].map(|c| c.to_num::<f64>());
         let r = reflect(f(nq), f(pq).map(|c| -c));
         let rl = (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt();
-        prop_assume!(rl > 0.0 && r[2] / rl > -(5f64.to_radians().cos()));
+        // Near the rim (s, t swing around it) nothing is checked but the range.
+        if !(rl > 0.0 && r[2] / rl > -(5f64.to_radians().cos())) {
+            return Ok(());
+        }
         let (ws, wt) = sphere_st(r);
         let [s, t] = SphereMapUvs::at(nq, pq);
         prop_assert!((s.to_num::<f64>() - ws).abs() <= 1.0 / 1024.0, "{} {}", s, ws);
