@@ -142,6 +142,88 @@ fn main() {
         .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
         .collect();
     fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
+    // The marble baked for the benchmark sphere's texture coordinates (256 x 128,
+    // band-limited turbulence of at most 6 octaves): the `noise_baked` scene's texture.
+    {
+        use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+        let ramps = Ramps::new().unwrap();
+        let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+        let surface = presets::baked_sphere_surface();
+        bake(
+            &ramps.marble(),
+            &BandLimit::new(6),
+            &surface,
+            256,
+            128,
+            &mut t,
+        )
+        .unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join("marble256x128.bin"), bytes).unwrap();
+    }
+    // The brick sphere's bump-mapped lighting resolved into a 256 x 128 texture for the
+    // light fixed in object space (`demo::surface::resolve_light`, Lambert + ambient):
+    // the `bump_fast` scene's texture.
+    {
+        use fixel::texture::{chain_len, HeightMap, Texture};
+        let (n, levels) = (64, 7);
+        let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
+        let mut heights = vec![0u8; chain_len(n, n, levels)];
+        let mut derivs = vec![Rgb565::new(0, 0, 0); chain_len(n, n, levels)];
+        fixel::demo::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
+            .unwrap();
+        let tile = Texture::new(&colours, n, n).unwrap();
+        let map = HeightMap::new(&heights, n, n, levels).unwrap();
+        let normals = fixel::shading::bump::HeightDifferences::new(
+            map,
+            fixel::math::Fx::from_bits(fixel::demo::surface::RESOLVE_STRENGTH),
+        )
+        .unwrap();
+        let material = fixel::shading::lighting::Material {
+            specular: 0,
+            ..fixel::demo::surface::material(fixel::shading::lighting::Specular::None)
+        };
+        let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+        fixel::shading::bump::resolve_sphere(
+            &tile,
+            &normals,
+            &material,
+            fixel::demo::surface::resolve_light(),
+            256,
+            128,
+            &mut t,
+        )
+        .unwrap();
+        let bytes: Vec<u8> = t
+            .iter()
+            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+            .collect();
+        fs::write(out.join("bricks-lit256x128.bin"), bytes).unwrap();
+    }
+    // A 128 x 128 sphere map baked from the 64-texel sky cube map (bilinear): the
+    // `env_matcap` scene's texture, the environment the per-pixel scenes read.
+    let sky: Vec<Vec<Rgb565>> = (0..6)
+        .map(|f| {
+            let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+            fixel::shading::env::sky::sky_face(f, 64, &mut t).unwrap();
+            t
+        })
+        .collect();
+    let cube = fixel::shading::env::CubeMap::new(
+        core::array::from_fn(|i| fixel::texture::Texture::new(&sky[i], 64, 64).unwrap()),
+        fixel::texture::Bilinear,
+    )
+    .unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 128 * 128];
+    fixel::shading::env::bake_sphere_map(&cube, 128, &mut t).unwrap();
+    let bytes: Vec<u8> = t
+        .iter()
+        .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+        .collect();
+    fs::write(out.join("sky-sphere128.bin"), bytes).unwrap();
     let mut t = vec![Rgb565::new(0, 0, 0); 128 * 64];
     fixel::shading::env::sky::sky_latlong(128, 64, &mut t).unwrap();
     let bytes: Vec<u8> = t

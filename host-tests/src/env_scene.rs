@@ -211,3 +211,13 @@ pub fn is_plain_blend(got: u16, faces: &[usize]) -> bool {
         (g[k] - m).abs() <= 0.67
     })
 }
+
+/// The 64-texel sky cube map baked into an `n x n` sphere map (bilinear lookups,
+/// `fixel::shading::env::bake_sphere_map`): the `env_matcap` scene's texture for `n = 128`.
+pub fn sky_sphere_map(n: u32) -> Vec<Rgb565> {
+    let f = faces(64);
+    let c = cube(&f, 64, fixel::texture::Bilinear);
+    let mut t = vec![Rgb565::new(0, 0, 0); (n * n) as usize];
+    fixel::shading::env::bake_sphere_map(&c, n, &mut t).expect("sphere map");
+    t
+}

@@ -516,3 +516,151 @@ fn mcu_water() {
         "water: bands differ from the whole frame"
     );
 }
+
+// The sphere-map (matcap) frame: `env_matcap`.
+#[path = "../../examples/firmware/src/matcap_scene.rs"]
+mod matcap_scene;
+
+/// The `env_matcap` firmware (`examples/firmware/src/bin/env_matcap.rs`, frame 0): the
+/// sphere through its per-vertex sphere-map coordinates and the 128 x 128 sky sphere map,
+/// in bands; the whole frame of the same walk gives the same picture.
+#[test]
+fn mcu_env_matcap() {
+    let map = host_tests::env_scene::sky_sphere_map(128);
+    let tex = Texture::new(&map, 128, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = matcap_scene::env_matcap(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("env_matcap", &r);
+    let mut whole_buf = Box::new(Whole::new());
+    let w = matcap_scene::env_matcap(
+        WholeTarget::Whole(&mut whole_buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    assert_eq!(
+        (w.checksum, w.stats.pixels),
+        (r.checksum, r.stats.pixels),
+        "env_matcap: bands differ from the whole frame"
+    );
+}
+
+/// The `noise_baked` firmware (`examples/firmware/src/bin/noise_baked.rs`, frame 0): the
+/// sphere scene with the marble baked here at run time into the sphere's texture (the
+/// firmware's is baked by its `build.rs` with the same function: equal checksums show the
+/// two bakes equal).
+#[test]
+fn mcu_noise_baked() {
+    use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+    let ramps = Ramps::new().unwrap();
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    let surface = presets::baked_sphere_surface();
+    bake(
+        &ramps.marble(),
+        &BandLimit::new(6),
+        &surface,
+        256,
+        128,
+        &mut t,
+    )
+    .unwrap();
+    let tex = Texture::new(&t, 256, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = scenes::sphere(
+        Target::Bands(&mut *buf),
+        tex,
+        &mesh,
+        0,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("noise_baked", &r);
+    assert_eq!(
+        whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true),
+        (r.checksum, r.stats.pixels),
+        "noise_baked: bands differ from the whole frame"
+    );
+}
+
+/// The `bump_fast` firmware (`examples/firmware/src/bin/bump_fast.rs`, frame 0): the
+/// sphere, unlit, with the brick lighting resolved here at run time into its texture (the
+/// firmware's is resolved by its `build.rs` with the same function).
+#[test]
+fn mcu_bump_fast() {
+    use fixel::demo::surface;
+    use fixel::shading::bump::{resolve_sphere, HeightDifferences};
+    use fixel::shading::lighting::{Material, Specular};
+    use fixel::texture::{chain_len, HeightMap};
+    let (n, levels) = (64, 7);
+    let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    let mut heights = vec![0u8; chain_len(n, n, levels)];
+    let mut derivs = vec![Rgb565::new(0, 0, 0); chain_len(n, n, levels)];
+    surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs).unwrap();
+    let tile = Texture::new(&colours, n, n).unwrap();
+    let map = HeightMap::new(&heights, n, n, levels).unwrap();
+    let normals = HeightDifferences::new(map, Fx::from_bits(surface::RESOLVE_STRENGTH)).unwrap();
+    let material = Material {
+        specular: 0,
+        ..surface::material(Specular::None)
+    };
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    resolve_sphere(
+        &tile,
+        &normals,
+        &material,
+        surface::resolve_light(),
+        256,
+        128,
+        &mut t,
+    )
+    .unwrap();
+    let tex = Texture::new(&t, 256, 128).unwrap();
+    let sphere = demo::sphere();
+    let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
+    let mesh = sphere.mesh().unwrap().with_face_planes(&planes).unwrap();
+    let mut buf = Box::new(SphereBuffers::with_storage());
+    let (mut nop1, mut nop2) = (|| {}, || {});
+    let r = scenes::render::<
+        scenes::FloorBilinear,
+        { scenes::RANGES },
+        { scenes::CACHE },
+        0,
+        { scenes::SETUPS },
+    >(
+        Target::Bands(&mut *buf),
+        MipTexture::single(tex),
+        &mesh,
+        &demo::sphere_model(0),
+        20,
+        false,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    print("bump_fast", &r);
+    assert_eq!(
+        whole::<scenes::FloorBilinear>(tex, &mesh, &demo::sphere_model(0), 20, false),
+        (r.checksum, r.stats.pixels),
+        "bump_fast: bands differ from the whole frame"
+    );
+}

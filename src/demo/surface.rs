@@ -82,6 +82,19 @@ pub fn light(i: u32) -> PixelLight {
     ))
 }
 
+/// The direction towards the light (object space, unit length within 2^-16) for which the
+/// brick sphere's lighting is resolved into its texture
+/// ([`resolve_sphere`](crate::shading::bump::resolve_sphere), the `bump_fast` scene): up,
+/// left and towards the viewer of the benchmark sphere's frame 0, about `(−0.48, 0.64,
+/// 0.6)`.
+pub fn resolve_light() -> Vec3 {
+    Vec3::from_bits(-31_457, 41_943, 39_322)
+}
+
+/// The bump strength σ of the resolved brick sphere (I16F16 bits: 0.02 texel widths per
+/// height step, the `bump` scene's).
+pub const RESOLVE_STRENGTH: i32 = 1311;
+
 /// Builds the `n x n` brick maps of the scenes into caller storage: `colours` (`n * n`),
 /// `heights` (the full mip chain, [`chain_len`](crate::texture::chain_len)`(n, n,
 /// levels)`) and its derivative map `derivs` (the same chain length); returns the

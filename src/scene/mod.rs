@@ -40,9 +40,11 @@ mod face_cull;
 mod face_planes;
 mod light;
 mod lit_mesh;
+mod matcap;
 mod mesh;
 mod open_sink;
 mod tangent;
+mod vertex_uv;
 mod walk;
 
 pub use camera::Camera;
@@ -50,12 +52,14 @@ pub use face_cull::FacingTest;
 pub use face_planes::{face_planes, write_face_planes, FacePlane};
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
+pub use matcap::SphereMapUvs;
 pub(crate) use mesh::{check_indices, check_vertices};
 pub use mesh::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
 };
 pub use open_sink::triangles_to_sink;
 pub use tangent::{tangents, Tangent};
+pub use vertex_uv::{MeshUvs, VertexUv};
 pub use walk::{
     draw_mesh_walked, mesh_to_sink, walk_mesh, CachedVertex, MeshTransform, TriangleOut,
 };

@@ -37,7 +37,7 @@
 use crate::color::TargetColor;
 use crate::geometry::clip::{complete_depth, keeps_xy, prepare, prepare_without_depth};
 use crate::geometry::{Cull, ScreenTriangle, ScreenVertex, COLOR_ONE};
-use crate::math::Mat4;
+use crate::math::{Fx, Mat4};
 use crate::pipeline::{Draw, Shading};
 use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
 use crate::surface::{MeshSink, RenderTarget};
@@ -45,6 +45,7 @@ use crate::surface::{MeshSink, RenderTarget};
 use super::face_cull::{camera_centre, Eye, FaceCull, FacingTest};
 use super::face_planes::FacePlane;
 use super::mesh::{vertex, vertex_intensity};
+use super::vertex_uv::{MeshUvs, VertexUv};
 use super::{Camera, DirectionalLight, Mesh};
 
 const EMPTY: u8 = 0;
@@ -199,13 +200,35 @@ pub trait TriangleOut {
 /// instructions on Cortex-M0+) and the camera's centre in model space (exact 3x3 minors of
 /// the latter, for the model-space back-face test). Build it once per mesh and frame and hand it to every band
 /// pass of [`mesh_to_sink`], rather than multiplying the matrices again in each band.
+///
+/// `G` is where each vertex's texture coordinates come from ([`VertexUv`]): the mesh's own
+/// by default, or a generator given with [`MeshTransform::with_uvs`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MeshTransform {
+pub struct MeshTransform<G = MeshUvs> {
     model_view: Mat4,
     mvp: Mat4,
     /// The camera's centre in homogeneous model coordinates, for the model-space cull test
     /// (see `face_cull`): exact, once per frame.
     eye: Eye,
+    uvs: G,
+}
+
+impl<G: VertexUv> MeshTransform<G> {
+    /// The same transform with texture coordinates from `uvs`, computed as each vertex is
+    /// prepared (once per vertex while it stays in the cache).
+    pub fn with_uvs<H: VertexUv>(self, uvs: H) -> MeshTransform<H> {
+        MeshTransform {
+            model_view: self.model_view,
+            mvp: self.mvp,
+            eye: self.eye,
+            uvs,
+        }
+    }
+
+    /// The model-view matrix (`camera.view * model`).
+    pub fn model_view(&self) -> &Mat4 {
+        &self.model_view
+    }
 }
 
 impl MeshTransform {
@@ -217,6 +240,7 @@ impl MeshTransform {
             eye: camera_centre(&mvp),
             mvp,
             model_view,
+            uvs: MeshUvs,
         }
     }
 
@@ -243,10 +267,10 @@ struct Ctx<'m, 'l> {
 /// under a rotation never do). Returns the id after the last triangle
 /// (`first_id + mesh.triangles()`).
 #[allow(clippy::too_many_arguments)]
-pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
+pub fn walk_mesh<C: TargetColor, O: TriangleOut, G: VertexUv>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
-    transform: &MeshTransform,
+    transform: &MeshTransform<G>,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     first_id: usize,
@@ -256,6 +280,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
         model_view,
         mvp,
         ref eye,
+        uvs,
     } = *transform;
     let coloured = matches!(
         draw.mode().shading,
@@ -364,6 +389,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
                 if let Some(c) = cache.get_mut(slots[k]) {
                     if c.key != keys[k] || c.state == EMPTY {
                         place(&ctx, vp, i, c, full);
+                        generate_uv(&uvs, &ctx, i, c);
                         c.key = keys[k];
                     }
                     cut[k] = (c.x, c.y, c.outcode);
@@ -380,7 +406,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
                 continue;
             }
             if !inside {
-                to_clip(draw, &ctx, idx, lit, id, codes, out);
+                to_clip(draw, &ctx, &uvs, idx, lit, id, codes, out);
                 continue;
             }
             // Corners in three distinct slots (always, with a slot per vertex), placed with
@@ -420,12 +446,14 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
                 Some(c) if c.key == key && c.state != EMPTY => *c,
                 Some(c) if known => {
                     place(&ctx, vp, i, c, full);
+                    generate_uv(&uvs, &ctx, i, c);
                     c.key = key;
                     *c
                 }
                 _ => {
                     let mut c = CachedVertex::EMPTY;
                     place(&ctx, vp, i, &mut c, full);
+                    generate_uv(&uvs, &ctx, i, &mut c);
                     c.key = key;
                     c
                 }
@@ -434,7 +462,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut>(
         if known {
             let codes = [v[0].outcode, v[1].outcode, v[2].outcode];
             if codes[0] | codes[1] | codes[2] != 0 {
-                to_clip(draw, &ctx, idx, lit, id, codes, out);
+                to_clip(draw, &ctx, &uvs, idx, lit, id, codes, out);
                 continue;
             }
         }
@@ -504,10 +532,12 @@ fn skip_culled(f: &FaceCull, margin: u64, planes: &[FacePlane], from: usize, end
 /// A triangle with a corner outside the view volume or guard band (`codes`, its corners'
 /// outcodes): clipped, unless a corner failed (overflowed) or all three are outside one
 /// plane.
+#[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn to_clip<C: TargetColor>(
+fn to_clip<C: TargetColor, G: VertexUv>(
     draw: &Draw<'_, C>,
     ctx: &Ctx<'_, '_>,
+    uvs: &G,
     idx: &[u16; 3],
     lit: bool,
     id: usize,
@@ -516,7 +546,7 @@ fn to_clip<C: TargetColor>(
 ) {
     let any = codes[0] | codes[1] | codes[2];
     if any & FAILED_CODE == 0 && codes[0] & codes[1] & codes[2] == 0 {
-        clipped(draw, ctx, idx, lit, id, out);
+        clipped(draw, ctx, uvs, idx, lit, id, out);
     }
 }
 
@@ -540,6 +570,24 @@ fn place(
             c.set_screen(&screen);
             c.state = if depth { PLACED } else { NO_DEPTH };
         }
+        None => {
+            c.state = FAILED;
+            c.outcode = FAILED_CODE;
+        }
+    }
+}
+
+/// Replaces the texture coordinates of placed vertex `i` with those of the walk's source
+/// (nothing at all for the mesh's own, [`VertexUv::GENERATES`] false); a vertex whose
+/// source fails is marked failed, as an overflowing position is.
+#[inline(always)]
+fn generate_uv<G: VertexUv>(uvs: &G, ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
+    if !G::GENERATES || c.state == FAILED {
+        return;
+    }
+    let was = [Fx::from_bits(c.uv[0]), Fx::from_bits(c.uv[1])];
+    match uvs.uv(ctx.mesh, i, &ctx.model_view, was) {
+        Some(uv) => c.uv = [uv[0].to_bits(), uv[1].to_bits()],
         None => {
             c.state = FAILED;
             c.outcode = FAILED_CODE;
@@ -572,16 +620,24 @@ fn light_vertex(ctx: &Ctx<'_, '_>, i: usize, c: &mut CachedVertex) {
 /// frame, where on Cortex-M0+ every store beyond 1 KB of the stack pointer costs four
 /// instructions instead of one.
 #[inline(never)]
-fn clipped<C: TargetColor>(
+fn clipped<C: TargetColor, G: VertexUv>(
     draw: &Draw<'_, C>,
     ctx: &Ctx<'_, '_>,
+    uvs: &G,
     idx: &[u16; 3],
     lit: bool,
     id: usize,
     out: &mut impl TriangleOut,
 ) {
     let light = if lit { ctx.light } else { None };
-    let v = |k: usize| vertex(ctx.mesh, idx[k], &ctx.model_view, &ctx.mvp, light);
+    let v = |k: usize| {
+        let mut v = vertex(ctx.mesh, idx[k], &ctx.model_view, &ctx.mvp, light)?;
+        if G::GENERATES {
+            let i = usize::from(idx[k]);
+            v.uv = uvs.uv(ctx.mesh, i, &ctx.model_view, v.uv)?;
+        }
+        Some(v)
+    };
     if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
         draw.project(&[a, b, c], &mut |s| out.triangle(id, s));
     }
@@ -593,11 +649,11 @@ fn clipped<C: TargetColor>(
 /// `draws[draw_index]` of the renderer; `transform` is built once per frame, outside the
 /// band closure. Returns the next free triangle id.
 #[allow(clippy::too_many_arguments)]
-pub fn mesh_to_sink<C: TargetColor>(
+pub fn mesh_to_sink<C: TargetColor, G: VertexUv>(
     draw: &Draw<'_, C>,
     draw_index: u8,
     mesh: &Mesh<'_>,
-    transform: &MeshTransform,
+    transform: &MeshTransform<G>,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     first_id: usize,
@@ -640,10 +696,10 @@ pub fn mesh_to_sink<C: TargetColor>(
 /// Draws `mesh` into `target` through the vertex cache (`cache`: one entry per vertex for
 /// a single pass per vertex; any length works); returns the pixels written. Same pixels as
 /// [`draw_mesh`](super::draw_mesh), and the same [`Error::NoDepthBuffer`](crate::Error).
-pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>>(
+pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>, G: VertexUv>(
     draw: &Draw<'_, C>,
     mesh: &Mesh<'_>,
-    transform: &MeshTransform,
+    transform: &MeshTransform<G>,
     light: Option<&DirectionalLight>,
     cache: &mut [CachedVertex],
     target: &mut T,

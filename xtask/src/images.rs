@@ -7,7 +7,7 @@ use std::time::Instant;
 use crate::cmd::{cargo, fmt_dur, root, Cmd};
 
 /// Examples run by `cargo xtask render`.
-const RENDER_EXAMPLES: [&str; 15] = [
+const RENDER_EXAMPLES: [&str; 16] = [
     "showcase",
     "scenes",
     "preview",
@@ -22,6 +22,8 @@ const RENDER_EXAMPLES: [&str; 15] = [
     "surface_detail",
     "displacement",
     "models",
+    // The real-time modes beside the accurate ones.
+    "realtime",
     // Last: composes the README's gallery from the pictures above.
     "gallery",
 ];

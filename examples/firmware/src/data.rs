@@ -64,6 +64,20 @@ texture!(T8_TEXELS, T8, 8, 8, "t8x8.bin");
 texture!(T64_TEXELS, T64, 64, 64, "t64x64.bin");
 texture!(T128_TEXELS, T128, 128, 128, "t128x128.bin");
 texture!(T256X128_TEXELS, T256X128, 256, 128, "t256x128.bin");
+texture!(
+    MARBLE256X128_TEXELS,
+    MARBLE256X128,
+    256,
+    128,
+    "marble256x128.bin"
+);
+texture!(
+    BRICKS_LIT256X128_TEXELS,
+    BRICKS_LIT256X128,
+    256,
+    128,
+    "bricks-lit256x128.bin"
+);
 footprints!(T64_FOOTPRINTS, T64_FP, T64_TEXELS, 64, 64, "t64x64.bin");
 footprints!(
     T256X128_FOOTPRINTS,
@@ -143,6 +157,13 @@ pub static SKY64_MIPS: [[Rgb565; 5461]; 6] = [
 pub static SKY_SPHERE64: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
     env!("OUT_DIR"),
     "/sky-sphere64.bin"
+)));
+
+/// [`SKY64`] as a 128 x 128 sphere map (32 KB, `fixel::shading::env::bake_sphere_map`,
+/// bilinear): the `env_matcap` scene's texture.
+pub static SKY_SPHERE128: [Rgb565; 128 * 128] = texels(include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sky-sphere128.bin"
 )));
 
 /// The same sky as a 128 x 64 latitude-longitude map (16 KB).

@@ -13,6 +13,7 @@ pub mod alpha;
 pub mod data;
 pub mod env;
 pub mod mapping;
+pub mod matcap_scene;
 pub mod model_scene;
 pub mod palette_scene;
 pub mod modes;

@@ -14,7 +14,7 @@ use fixel::pipeline::{
 };
 use fixel::prelude::*;
 use fixel::scene::{
-    draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform,
+    draw_mesh_walked, mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform, VertexUv,
 };
 use fixel::surface::BandRange;
 use fixel::surface::{BandStats, Binned};
@@ -283,6 +283,20 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
     resume: &mut dyn FnMut(),
 ) -> Result<FrameResult, Error> {
     let transform = MeshTransform::new(model, &demo::camera(far));
+    render_walk(buf, draw, mesh, &transform, lit, pause, resume)
+}
+
+/// Like [`render_draw`] with a ready transform (which may carry a texture-coordinate
+/// generator, `MeshTransform::with_uvs`).
+pub fn render_walk<G: VertexUv, const R: usize, const V: usize, const B: usize, const S: usize>(
+    buf: Target<'_, R, V, B, S>,
+    draw: &Draw<'_, Rgb565>,
+    mesh: &Mesh<'_>,
+    transform: &MeshTransform<G>,
+    lit: bool,
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
     let light = DirectionalLight::default();
     let light = if lit { Some(&light) } else { None };
     let mut sum = Fnv1a::default();
@@ -291,7 +305,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
         Target::Whole(w) => {
             let mut frame = Frame::new(&mut w.color, W, H)?.with_depth(&mut w.depth)?;
             frame.clear(Rgb565::new(0, 0, 0));
-            let pixels = draw_mesh_walked(draw, mesh, &transform, light, &mut w.cache, &mut frame)?;
+            let pixels = draw_mesh_walked(draw, mesh, transform, light, &mut w.cache, &mut frame)?;
             pause();
             sum.pixels(frame.pixels());
             resume();
@@ -315,7 +329,7 @@ pub fn render_draw<const R: usize, const V: usize, const B: usize, const S: usiz
         &mut buf.ranges,
         Rgb565::new(0, 0, 0),
         |sink| {
-            mesh_to_sink(draw, 0, mesh, &transform, light, cache, 0, sink);
+            mesh_to_sink(draw, 0, mesh, transform, light, cache, 0, sink);
             if sink.fresh() {
                 geometry_done();
             }

@@ -247,6 +247,7 @@ fn shade_fragment(
     img.depth[idx] = z;
 }
 pub mod lighting;
+pub mod matcap;
 pub mod noise;
 pub mod quad;
 pub mod shadow;

@@ -6,6 +6,8 @@
 //! * normal sources ([`TangentNormals`]): [`DerivativeMap`] (precomputed `∂h/∂i, ∂h/∂j`,
 //!   one fetch), [`HeightDifferences`] (four height fetches per pixel), [`NormalMap`]
 //!   (RGB565 tangent-space normals, any filter);
+//! * [`resolve_sphere`]: the lighting of a bump-mapped sphere resolved into its texture
+//!   for a light fixed in object space (the real-time form: then a plain textured draw);
 //! * bakers: [`derivative_map`] and [`normal_map`] from a
 //!   [`HeightMap`](crate::texture::HeightMap), per mip level.
 //!
@@ -38,8 +40,10 @@
 
 mod bake;
 mod normals;
+mod resolve;
 mod shader;
 
 pub use bake::{derivative_map, normal_map};
 pub use normals::{DerivativeMap, HeightDifferences, NormalMap, TangentNormals, TexelFetch};
+pub use resolve::resolve_sphere;
 pub use shader::{BumpVaryings, Bumped};

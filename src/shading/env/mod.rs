@@ -58,6 +58,7 @@ pub mod cube_mip;
 pub mod latlong;
 pub mod reflect;
 pub mod seamless;
+pub mod sphere_bake;
 
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
@@ -66,5 +67,6 @@ pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};
 pub use sphere::SphereMap;
+pub use sphere_bake::{bake_sphere_map, sphere_texel_direction};
 pub mod sky;
 pub mod sphere;

@@ -87,6 +87,7 @@
 //! assert!((0..65_536).contains(&t));
 //! ```
 
+mod bake;
 mod compose;
 mod flame;
 mod lightmap3d;
@@ -98,6 +99,7 @@ mod select;
 mod solid;
 mod turbulence;
 
+pub use bake::{bake, bake_mips, BakeSurface, SphereSurface};
 pub use compose::SolidTimesTexture;
 pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,

@@ -121,5 +121,14 @@ pub fn wood_cube_model() -> crate::math::Mat4 {
 /// as a grid).
 pub const SHOWCASE_SCALE: crate::math::Fx = crate::math::Fx::from_bits(117_965);
 
+/// The benchmark sphere ([`crate::demo::sphere`], radius 1.5) as a baking surface at
+/// [`SHOWCASE_SCALE`] (radius 1.5 x 1.8 = 2.7 lattice cells): the solid textures baked for
+/// the sphere's own texture coordinates ([`bake`](super::bake)).
+pub fn baked_sphere_surface() -> super::SphereSurface {
+    super::SphereSurface {
+        radius: crate::math::Fx::from_bits(((SHOWCASE_SCALE.to_bits() as i64 * 3) >> 1) as i32),
+    }
+}
+
 /// Lattice cells per model unit of the showcase's granite floor (about 0.81, odd bits).
 pub const FLOOR_SCALE: crate::math::Fx = crate::math::Fx::from_bits(53_001);

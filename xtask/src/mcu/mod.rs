@@ -67,9 +67,17 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 29] = [
+const SCENES: [&str; 32] = [
     "cube",
     "sphere",
+    // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
+    // draw, beside the sphere it is compared with.
+    "env_matcap",
+    // The marble baked into the sphere's texture (at build time): the same draw as `sphere`.
+    "noise_baked",
+    // The brick sphere's bump lighting resolved into its texture (light fixed in object
+    // space): the same draw as `sphere`, unlit.
+    "bump_fast",
     // The Utah teapot baked from OBJ into flash (`cargo xtask bake-obj`).
     "teapot",
     "floor",

@@ -189,6 +189,33 @@ fn mip_mode<M: fixel::shading::env::EnvLookupLod>(
     })
 }
 
+/// The real-time mode: the sphere through per-vertex sphere-map coordinates and the
+/// 128 x 128 sky sphere map, a plain textured draw (the `env_matcap` scene).
+#[cfg(fixel_fw_report)]
+#[inline(never)]
+fn matcap() -> bool {
+    use fixel_firmware::{matcap_scene, scenes};
+    let mut buf = scenes::SphereBuffers::with_storage();
+    let (Ok(mesh), Ok(map)) = (
+        core::hint::black_box(&data::SPHERE)
+            .mesh()
+            .and_then(|m| m.with_face_planes(&data::SPHERE_FACES)),
+        Texture::new(core::hint::black_box(&data::SKY_SPHERE128), 128, 128),
+    ) else {
+        return false;
+    };
+    mode("matcap-vertex-bilinear", |pause, resume| {
+        matcap_scene::env_matcap(
+            scenes::Target::Bands(&mut buf),
+            map,
+            &mesh,
+            0,
+            pause,
+            resume,
+        )
+    })
+}
+
 fn run() -> bool {
     let mut buf = EnvBuffers::new();
     let f = core::hint::black_box(&data::SKY64);
@@ -237,6 +264,7 @@ fn run() -> bool {
             LodGranularity::Span,
             true,
         );
+        ok &= matcap();
     }
     ok
 }

@@ -26,6 +26,10 @@ mod open_frame;
 #[allow(dead_code)]
 mod env;
 
+#[path = "../../../../examples/firmware/src/matcap_scene.rs"]
+mod matcap_scene;
+
+mod matcap;
 mod measure;
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
@@ -469,6 +473,22 @@ fn main() {
             mcu_cell(name, &want, "Cortex-M0+"),
             mcu_cell(name, &want, "Cortex-M4F"),
             fmt_err(&e)
+        );
+    }
+
+    // The real-time mode: sphere-map coordinates per vertex, then a plain textured draw.
+    {
+        let name = "matcap-vertex-bilinear";
+        let row = matcap::matcap_row(runs);
+        let e = cmp(&row.image, &ref_pixel(&sphere, &rf, RefFilter::Bilinear));
+        point(name, row.ns, &row.want, &e);
+        md += &format!(
+            "| {name} (128 x 128 sphere map, uv per vertex, plain textured draw) | {:.1} | {} | {} | {} | {} |\n",
+            row.ns,
+            mcu_cell(name, &row.want, "Cortex-M0+"),
+            mcu_cell(name, &row.want, "Cortex-M4F"),
+            fmt_err(&e),
+            fmt_err(&cmp(&row.image, &row.own))
         );
     }
 

@@ -1,0 +1,261 @@
+//! The real-time modes beside the accurate ones they stand in for, on the benchmark
+//! sphere (frame 0, 320 x 240 each half):
+//!
+//! ```text
+//! cargo run --release --example realtime
+//! ```
+//!
+//! Writes to `target/pictures/`:
+//! * `realtime_env.png`: left, the per-pixel reflection in the 64-texel sky cube map
+//!   (`ReflectPerPixel`); right, sphere-map coordinates per vertex and that cube map baked
+//!   into a 128 x 128 sphere map (`bake_sphere_map`), a plain textured draw (`SphereMapUvs`, the `env_matcap` scene);
+//! * `realtime_noise.png`: left, the marble solid texture per pixel (`SolidShader`,
+//!   band-limited to 6 octaves); right, the same marble baked into a 256 x 128 texture for
+//!   the sphere's own coordinates (`noise::bake`) and drawn as the textured sphere is (the
+//!   `noise_baked` scene);
+//! * `realtime_bump.png`: left, the brick sphere bump-mapped per pixel (`Bumped`, height
+//!   differences, a directional light); right, the same lighting resolved into a 256 x 128
+//!   texture for that light fixed in object space (`bump::resolve_sphere`) and drawn unlit
+//!   (the `bump_fast` scene).
+
+mod common;
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use fixel::demo;
+use fixel::geometry::{Cull, Vertex, Viewport};
+use fixel::math::Vec3;
+use fixel::pipeline::{
+    DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Replace, ShadedDraw, SubdividedBy,
+};
+use fixel::scene::{draw_mesh_walked, CachedVertex, DirectionalLight, MeshTransform, SphereMapUvs};
+use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
+use fixel::shading::noise::{bake, presets, BandLimit, Ramps, SolidMesh, SolidShader};
+use fixel::surface::Frame;
+use fixel::texture::{Bilinear, ClampToEdge, Repeat, Texture};
+
+const W: u32 = 320;
+const H: u32 = 240;
+
+type Matcap = Pipeline<SubdividedBy<6>, Bilinear, ClampToEdge, ClampToEdge, Replace, DepthLess>;
+type Lit = Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
+
+/// A fresh frame's buffers.
+fn buffers() -> (Vec<Rgb565>, Vec<u16>) {
+    let n = (W * H) as usize;
+    (vec![Rgb565::new(0, 0, 0); n], vec![0u16; n])
+}
+
+/// Two frames side by side.
+fn pair(a: &[Rgb565], b: &[Rgb565]) -> Vec<Rgb565> {
+    let w = W as usize;
+    a.chunks(w)
+        .zip(b.chunks(w))
+        .flat_map(|(l, r)| l.iter().chain(r).copied())
+        .collect()
+}
+
+/// The benchmark sphere drawn with a classic draw through the mesh walker.
+fn walked<G: fixel::scene::VertexUv>(
+    draw: &Draw<'_, Rgb565>,
+    t: MeshTransform<G>,
+    lit: bool,
+) -> Vec<Rgb565> {
+    let s = demo::sphere();
+    let mesh = s.mesh().expect("mesh");
+    let (mut c, mut z) = buffers();
+    let mut f = Frame::new(&mut c, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    let mut cache = vec![CachedVertex::EMPTY; s.positions.len()];
+    let light = DirectionalLight::default();
+    draw_mesh_walked(draw, &mesh, &t, lit.then_some(&light), &mut cache, &mut f).expect("drawn");
+    c
+}
+
+fn env(out: &std::path::Path) {
+    let vp = Viewport::new(0, 0, W, H).expect("viewport");
+    let faces: Vec<Vec<Rgb565>> = (0..6)
+        .map(|k| {
+            let mut t = vec![Rgb565::new(0, 0, 0); 64 * 64];
+            sky::sky_face(k, 64, &mut t).expect("face");
+            t
+        })
+        .collect();
+    let cube = CubeMap::new(
+        core::array::from_fn(|i| Texture::new(&faces[i], 64, 64).expect("face")),
+        Bilinear,
+    )
+    .expect("cube");
+    let s = demo::sphere();
+    let cam = demo::camera(20);
+    let model = demo::sphere_model(0);
+    let setup = EnvVertices::new(&model, &cam.projection.mul(&cam.view), Vec3::ZERO);
+    let tris: Vec<[Vertex<6>; 3]> = s
+        .indices
+        .iter()
+        .map(|t| {
+            t.map(|i| {
+                let i = usize::from(i);
+                setup
+                    .per_pixel(s.positions[i], s.normals[i])
+                    .expect("vertex")
+            })
+        })
+        .collect();
+    let (mut c, mut z) = buffers();
+    let mut f = Frame::new(&mut c, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)
+        .expect("draw")
+        .clip_triangles(&tris, &mut f)
+        .expect("drawn");
+    let mut map = vec![Rgb565::new(0, 0, 0); 128 * 128];
+    fixel::shading::env::bake_sphere_map(&cube, 128, &mut map).expect("sphere map");
+    let tex = Texture::new(&map, 128, 128).expect("texture");
+    let draw = Draw::new::<Matcap>(Some(tex), vp, Cull::Back).expect("draw");
+    let fast = walked(
+        &draw,
+        MeshTransform::new(&model, &cam).with_uvs(SphereMapUvs),
+        false,
+    );
+    common::write_png(&out.join("realtime_env.png"), 2 * W, H, &pair(&c, &fast));
+}
+
+fn noise(out: &std::path::Path) {
+    let vp = Viewport::new(0, 0, W, H).expect("viewport");
+    let ramps = Ramps::new().expect("ramps");
+    let s = demo::sphere();
+    let cam = demo::camera(20);
+    let model = demo::sphere_model(0);
+    let mesh = SolidMesh::new(
+        &s.positions,
+        Some(&s.normals),
+        &s.indices,
+        presets::SHOWCASE_SCALE,
+    )
+    .expect("mesh");
+    let mut tris = Vec::new();
+    mesh.triangles(&model, &cam, Some(&DirectionalLight::default()), |t| {
+        tris.push(*t)
+    });
+    let (mut c, mut z) = buffers();
+    let mut f = Frame::new(&mut c, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    ShadedDraw::<_, Exact, DepthLess>::new(
+        SolidShader::new(ramps.marble(), BandLimit::new(6)),
+        vp,
+        Cull::Back,
+    )
+    .expect("draw")
+    .clip_triangles(&tris, &mut f)
+    .expect("drawn");
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    bake(
+        &ramps.marble(),
+        &BandLimit::new(6),
+        &presets::baked_sphere_surface(),
+        256,
+        128,
+        &mut t,
+    )
+    .expect("bake");
+    let tex = Texture::new(&t, 256, 128).expect("texture");
+    let draw = Draw::new::<Lit>(Some(tex), vp, Cull::Back).expect("draw");
+    let fast = walked(&draw, MeshTransform::new(&model, &cam), true);
+    common::write_png(&out.join("realtime_noise.png"), 2 * W, H, &pair(&c, &fast));
+}
+
+fn bump(out: &std::path::Path) {
+    use fixel::demo::surface;
+    use fixel::math::Fx;
+    use fixel::scene::{LitMesh, PixelLight};
+    use fixel::shading::bump::{resolve_sphere, Bumped, HeightDifferences};
+    use fixel::shading::lighting::{Material, Specular};
+    use fixel::shading::TexBinding;
+    use fixel::texture::{chain_len, HeightMap, Lod, MipTexture};
+    let vp = Viewport::new(0, 0, W, H).expect("viewport");
+    let (n, levels) = (64, 7);
+    let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    let mut heights = vec![0u8; chain_len(n, n, levels)];
+    let mut derivs = vec![Rgb565::new(0, 0, 0); chain_len(n, n, levels)];
+    surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs).expect("bricks");
+    let material = Material {
+        specular: 0,
+        ..surface::material(Specular::None)
+    };
+    let hm = HeightMap::new(&heights, n, n, levels).expect("heights");
+    let normals =
+        HeightDifferences::new(hm, Fx::from_bits(surface::RESOLVE_STRENGTH)).expect("normals");
+    // Per pixel.
+    let (sphere, tangents) = surface::sphere().expect("sphere");
+    let mesh = LitMesh::new(
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.uvs,
+        Some(&tangents),
+        &sphere.indices,
+    )
+    .expect("mesh");
+    let chain = MipTexture::single(Texture::new(&colours, n, n).expect("tile"));
+    let tex = TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).expect("binding");
+    let shader = Bumped::new(tex, normals, (n, n), material).expect("shader");
+    let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
+    let mut vertices = vec![Vertex::new([Fx::ZERO; 4], [0; 8]); sphere.positions.len()];
+    let light = PixelLight::directional(surface::resolve_light()).expect("light");
+    mesh.bump_vertices(
+        &demo::sphere_model(0),
+        &demo::camera(20),
+        &light,
+        &mut vertices,
+    )
+    .expect("vertices");
+    let (mut c, mut z) = buffers();
+    let mut f = Frame::new(&mut c, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    mesh.draw_indexed(&draw, &vertices, &mut f).expect("drawn");
+    // Resolved once, then a plain unlit textured draw.
+    let tile = Texture::new(&colours, n, n).expect("tile");
+    let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+    resolve_sphere(
+        &tile,
+        &normals,
+        &material,
+        surface::resolve_light(),
+        256,
+        128,
+        &mut t,
+    )
+    .expect("resolve");
+    let tex = Texture::new(&t, 256, 128).expect("texture");
+    type Unlit = Pipeline<SubdividedBy<6>, Bilinear, Repeat, Repeat, Replace, DepthLess>;
+    let draw = Draw::new::<Unlit>(Some(tex), vp, Cull::Back).expect("draw");
+    let cam = demo::camera(20);
+    let fast = walked(
+        &draw,
+        MeshTransform::new(&demo::sphere_model(0), &cam),
+        false,
+    );
+    common::write_png(&out.join("realtime_bump.png"), 2 * W, H, &pair(&c, &fast));
+}
+
+fn main() {
+    let out = common::out_dir();
+    env(&out);
+    noise(&out);
+    bump(&out);
+    println!(
+        "wrote realtime_env.png, realtime_noise.png, realtime_bump.png to {}",
+        out.display()
+    );
+}
