@@ -200,21 +200,60 @@ pub(super) fn models(f: &Figures) -> String {
     );
     for (name, scene, peer) in MODELS {
         let cell = |s: String| {
-            f.frame
-                .get(&(s, "RV32IMC"))
-                .map_or("-".into(), |(n, c)| {
-                    format!(
-                        "{:.2} M, {:.2} M, **{:.1} ms**",
-                        *n as f64 / 1e6,
-                        c / 1e6,
-                        c / RV32_CLOCK * 1e3
-                    )
-                })
+            f.frame.get(&(s, "RV32IMC")).map_or("-".into(), |(n, c)| {
+                format!(
+                    "{:.2} M, {:.2} M, **{:.1} ms**",
+                    *n as f64 / 1e6,
+                    c / 1e6,
+                    c / RV32_CLOCK * 1e3
+                )
+            })
         };
         t.push_str(&format!(
             "| {name} | {} | {} | {peer} |\n",
             cell(format!("whole_{scene}")),
             cell(scene.to_string()),
+        ));
+    }
+    t
+}
+
+/// The real-time modes, each a plain textured draw of the sphere after its work moved out
+/// of the pixel loop, against the plain lit textured `sphere` (the same bands).
+const REALTIME: [(&str, &str); 3] = [
+    (
+        "environment map: sphere-map coordinates per vertex",
+        "env_matcap",
+    ),
+    ("solid noise: marble baked into the texture", "noise_baked"),
+    ("bump map: lighting resolved into the texture", "bump_fast"),
+];
+
+/// The README's table of the real-time modes: instructions per pixel on each core and the
+/// ratio to the plain textured sphere.
+pub(super) fn realtime(f: &Figures) -> String {
+    let mut t = String::from(
+        "| mode | instr/px, M0+ / M4F / RV32 | x the plain textured sphere, M0+ / M4F / RV32 |\n\
+         |---|---:|---:|\n",
+    );
+    let cores = ["Cortex-M0+", "Cortex-M4F", "RV32IMC"];
+    let per = |s: &str, l: &'static str| f.per_px.get(&(s.to_string(), l)).copied();
+    let row = |s: &str, g: &dyn Fn(&'static str) -> Option<f64>, d: usize| {
+        let _ = s;
+        cores
+            .map(|l| g(l).map_or("-".into(), |v| format!("{v:.d$}")))
+            .join(" / ")
+    };
+    t.push_str(&format!(
+        "| plain: lit, bilinear, the sphere's own texture | {} | 1 |\n",
+        row("sphere", &|l| per("sphere", l), 1)
+    ));
+    for (what, scene) in REALTIME {
+        let ratio = |l: &'static str| Some(per(scene, l)? / per("sphere", l)?);
+        t.push_str(&format!(
+            "| {what} (`{scene}`) | {} | {} |\n",
+            row(scene, &|l| per(scene, l), 1),
+            row(scene, &ratio, 2),
         ));
     }
     t

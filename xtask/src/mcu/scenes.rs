@@ -399,6 +399,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
                     "models",
                     &bands::models(&figures),
                 ),
+                bands::write_region(
+                    &root().join("README.md"),
+                    "realtime",
+                    &bands::realtime(&figures),
+                ),
             ];
             for r in results {
                 if let Err(e) = r {
