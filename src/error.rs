@@ -140,6 +140,21 @@ pub enum Error {
         /// Its height.
         height: u32,
     },
+    /// A band renderer that sends a band while drawing the next needs at least two band
+    /// buffers (`BandRenderer::with_buffers`).
+    TooFewBandBuffers {
+        /// How many were given.
+        given: usize,
+    },
+    /// The band buffers of `BandRenderer::with_buffers` are not all of one length.
+    BandBuffersDiffer {
+        /// The first buffer whose length differs from buffer 0's.
+        index: usize,
+        /// Its length, pixels.
+        len: usize,
+        /// Buffer 0's length, pixels.
+        first: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -229,6 +244,14 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "cube-map face {face} is {width}x{height}: faces must be square and the size of face 0"
+            ),
+            Error::TooFewBandBuffers { given } => write!(
+                f,
+                "{given} band buffer(s) given: sending one band while drawing the next needs at least two"
+            ),
+            Error::BandBuffersDiffer { index, len, first } => write!(
+                f,
+                "band buffer {index} holds {len} pixels, buffer 0 {first}: the band buffers must all be of one length"
             ),
         }
     }

@@ -18,6 +18,7 @@ mod band_draw;
 pub(crate) mod depth_map;
 mod fill;
 pub(crate) mod frame;
+mod overlap;
 pub(crate) mod resample;
 mod setup_queue;
 pub(crate) mod smooth;
@@ -27,6 +28,7 @@ pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, Tria
 pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
 pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
+pub use overlap::{BandSender, Blocking, Dma};
 pub use resample::{resolve_box, Accumulator};
 pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
