@@ -230,7 +230,6 @@ proptest! {
             .with_depth(&mut dbuf).unwrap().with_setup_cache(&mut setups);
         let s_one = one.render_spans(&draws, &mut bins, &mut ranges, clear, &mut geometry_spans, collect(&mut one_spans)).unwrap();
         let b_one = one.render(&draws, &mut bins, clear, geometry_bins, collect(&mut one_bins)).unwrap();
-        drop(one);
 
         // The ring, through the checking DMA.
         let mut store = vec![vec![Rgb565::default(); n]; ring];

@@ -496,45 +496,67 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
         sender: &mut S,
     ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
-        let mut sink = TriangleSink::binning(bins, draws);
-        geometry(&mut sink);
-        let (bins, len, overflow) = sink.into_bins()?;
+        let (bins, len, overflow) = Self::bin(draws, bins, &mut geometry)?;
         let mut stats = BandStats {
             rewalked: overflow,
             triangles: len as u32,
             ..BandStats::default()
         };
+        let bins: &[Binned] = &bins[..len];
         self.each_band(&mut stats, clear, sender, |band, _| {
-            if overflow {
-                let mut s = TriangleSink {
-                    mode: SinkMode::Immediate {
-                        draws,
-                        band,
-                        pixels: 0,
-                    },
-                };
-                geometry(&mut s);
-                match s.mode {
-                    SinkMode::Immediate { pixels, .. } => pixels,
-                    SinkMode::Bin { .. } => 0,
-                }
-            } else {
-                let (r0, r1) = band.row_range();
-                let mut pixels = 0;
-                for b in bins[..len].iter() {
-                    if !b.meets(r0, r1) {
-                        continue;
-                    }
-                    if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels =
-                            u32::saturating_add(pixels, d.draw_piece(b.tri.as_ref(), band, None));
-                    }
-                }
-                pixels
-            }
+            Self::draw_binned(draws, bins, overflow, &mut geometry, band)
         })
         .map_err(BandError::Flush)?;
         Ok(stats)
+    }
+
+    /// The binning pass of [`render`](Self::render): the geometry's screen triangles into
+    /// `bins`; `(bins, triangles binned, overflowed)`, or the first bad push.
+    pub(super) fn bin<'s>(
+        draws: &'s [&'s dyn BandDraw<C>],
+        bins: &'s mut [Binned],
+        geometry: &mut impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+    ) -> Result<(&'s mut [Binned], usize, bool), Error> {
+        let mut sink = TriangleSink::binning(bins, draws);
+        geometry(&mut sink);
+        sink.into_bins()
+    }
+
+    /// One band of [`render`](Self::render): the binned triangles that meet it or, when
+    /// the bins overflowed, the whole geometry again; the pixels written.
+    pub(super) fn draw_binned(
+        draws: &[&dyn BandDraw<C>],
+        bins: &[Binned],
+        overflow: bool,
+        geometry: &mut impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+        band: &mut Frame<'_, C>,
+    ) -> u32 {
+        if overflow {
+            let mut s = TriangleSink {
+                mode: SinkMode::Immediate {
+                    draws,
+                    band,
+                    pixels: 0,
+                },
+            };
+            geometry(&mut s);
+            match s.mode {
+                SinkMode::Immediate { pixels, .. } => pixels,
+                SinkMode::Bin { .. } => 0,
+            }
+        } else {
+            let (r0, r1) = band.row_range();
+            let mut pixels = 0;
+            for b in bins.iter() {
+                if !b.meets(r0, r1) {
+                    continue;
+                }
+                if let Some(d) = draws.get(usize::from(b.draw)) {
+                    pixels = u32::saturating_add(pixels, d.draw_piece(b.tri.as_ref(), band, None));
+                }
+            }
+            pixels
+        }
     }
 }
 

@@ -23,8 +23,10 @@
 //!   `SpiDevice`, feature `embedded-hal`);
 //! * [`Dma`]: a pair of closures, `start` (point a DMA channel at the band's pixels and
 //!   start it) and `wait` (until the oldest transfer has finished);
-//! * `BandRenderer::render_async` (feature `embedded-hal-async`): an `async` frame that
-//!   awaits the previous band's transfer only when it needs that buffer back.
+//! * [`AsyncBandSender`](super::AsyncBandSender) and
+//!   [`BandRenderer::render_async`]: an `async` frame that awaits the previous band's
+//!   transfer only when it needs that buffer back ([`SpiSender`](super::SpiSender) over an
+//!   `embedded-hal-async` 1.0 `SpiDevice`, feature `embedded-hal-async`).
 //!
 //! ```
 //! use fixel::prelude::*;
@@ -65,7 +67,6 @@
 //! let stats = bands.render_to(&draws, &mut bins, Rgb565::default(), |sink| {
 //!     draw.project(&tri, &mut |s| sink.push(0, s));
 //! }, &mut dma)?;
-//! drop(dma);
 //! assert_eq!((stats.bands, started, waited), (4, 32 * 32, 4));
 //! # Ok::<(), fixel::Error>(())
 //! ```
