@@ -13,7 +13,8 @@
 //! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 //! * [`overlap`]: a ring of band buffers and a [`BandSender`] (a DMA channel, say): band `k`
 //!   is sent while band `k + 1` is drawn; [`overlap_async`]: the same as an `async` frame;
-//!   [`spi_send`]: senders over `embedded-hal` 1.0 SPI devices.
+//!   `spi_send`: senders over `embedded-hal` 1.0 SPI devices (features `embedded-hal`,
+//!   `embedded-hal-async`).
 
 pub(crate) mod accum_bands;
 pub(crate) mod band;
@@ -27,6 +28,7 @@ pub(crate) mod resample;
 mod setup_queue;
 pub(crate) mod smooth;
 pub(crate) mod spans;
+#[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
 pub mod spi_send;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
@@ -38,6 +40,7 @@ pub use overlap_async::AsyncBandSender;
 pub use resample::{resolve_box, Accumulator};
 pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
+#[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
 pub use spi_send::SpiSender;
 
 use crate::color::TargetColor;

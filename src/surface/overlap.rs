@@ -19,13 +19,13 @@
 //! Senders:
 //! * [`Blocking`]: a closure that sends the band before it returns (the plain
 //!   [`BandRenderer::render`] flush; also [`DrawTargetFlush`] for any embedded-graphics
-//!   `DrawTarget`, and [`SpiSender`](super::SpiSender) for an `embedded-hal` 1.0
+//!   `DrawTarget`, and `SpiSender` for an `embedded-hal` 1.0
 //!   `SpiDevice`, feature `embedded-hal`);
 //! * [`Dma`]: a pair of closures, `start` (point a DMA channel at the band's pixels and
 //!   start it) and `wait` (until the oldest transfer has finished);
 //! * [`AsyncBandSender`](super::AsyncBandSender) and
 //!   [`BandRenderer::render_async`]: an `async` frame that awaits the previous band's
-//!   transfer only when it needs that buffer back ([`SpiSender`](super::SpiSender) over an
+//!   transfer only when it needs that buffer back (`SpiSender` over an
 //!   `embedded-hal-async` 1.0 `SpiDevice`, feature `embedded-hal-async`).
 //!
 //! ```

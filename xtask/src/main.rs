@@ -12,6 +12,7 @@ mod bake_obj;
 mod ci;
 mod cmd;
 mod count;
+mod fps;
 mod fuzz;
 mod images;
 mod light3d;
@@ -121,6 +122,16 @@ enum Command {
     /// Installs missing tools as `mcu` does.
     #[command(verbatim_doc_comment)]
     Size(mcu::SizeArgs),
+    /// Frames per second on real boards, modelled from the firmware's per-band counts
+    ///
+    /// Counts the cube, sphere and teapot firmwares band by band under QEMU (exact
+    /// instructions of the binning pass and of each band, cycles from the static
+    /// model), then models the frame time and fps on an RP2040, RP2350, STM32F4 and
+    /// ESP32-C3 driving an ST7789 over SPI: one core serial, one core overlapped
+    /// (two band buffers, DMA), two cores overlapped; with the share of the link time
+    /// hidden and the assumptions. --docs writes docs/fps.md.
+    #[command(verbatim_doc_comment)]
+    Fps(fps::FpsArgs),
     /// Speed against error for every benchmark scene and mode
     ///
     /// Builds and runs the report firmwares under QEMU (exact instructions per pixel
@@ -217,6 +228,7 @@ fn main() -> ExitCode {
         Command::Fuzz(a) => fuzz::fuzz(&a),
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
+        Command::Fps(a) => fps::fps(&a),
         Command::Report(a) => report::report(&a),
         Command::BakeLight3d(a) => match light3d::run(&a) {
             Ok(()) => ExitCode::SUCCESS,

@@ -10,6 +10,7 @@
 //! microcontroller part of `cargo xtask report`; `tools`, `firmware` and `qemu` build and
 //! run.
 
+mod bands;
 mod firmware;
 mod qemu;
 mod report;
@@ -24,6 +25,7 @@ use clap::Args;
 
 use crate::cmd::root;
 
+pub use bands::{band_counts, BandCounts};
 pub use report::report_mcu;
 pub use scenes::mcu;
 pub use size::size;
