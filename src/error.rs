@@ -155,6 +155,22 @@ pub enum Error {
         /// Buffer 0's length, pixels.
         first: usize,
     },
+    /// A share of a frame's bands names no core of its cores (`BandShare::new`: `core`
+    /// must be below `cores`, `cores` from 1 to 255).
+    BadBandShare {
+        /// The core asked for.
+        core: u32,
+        /// The cores sharing the frame.
+        cores: u32,
+    },
+    /// A frame has fewer bands than the cores it is split between: some core would draw
+    /// nothing (use fewer cores or lower bands).
+    TooFewBands {
+        /// Bands in the frame.
+        bands: u32,
+        /// Cores sharing it.
+        cores: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -252,6 +268,14 @@ impl fmt::Display for Error {
             Error::BandBuffersDiffer { index, len, first } => write!(
                 f,
                 "band buffer {index} holds {len} pixels, buffer 0 {first}: the band buffers must all be of one length"
+            ),
+            Error::BadBandShare { core, cores } => write!(
+                f,
+                "band share of core {core} of {cores} cores: the core must be below the cores, the cores from 1 to 255"
+            ),
+            Error::TooFewBands { bands, cores } => write!(
+                f,
+                "a frame of {bands} band(s) cannot be split between {cores} cores: each core needs a band"
             ),
         }
     }

@@ -13,6 +13,7 @@
 //! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
 //! * [`overlap`]: a ring of band buffers and a [`BandSender`] (a DMA channel, say): band `k`
 //!   is sent while band `k + 1` is drawn; [`overlap_async`]: the same as an `async` frame;
+//!   [`share`]: one frame's bands drawn by two cores from bins built once;
 //!   `spi_send`: senders over `embedded-hal` 1.0 SPI devices (features `embedded-hal`,
 //!   `embedded-hal-async`).
 
@@ -26,6 +27,7 @@ pub mod overlap;
 pub mod overlap_async;
 pub(crate) mod resample;
 mod setup_queue;
+pub mod share;
 pub(crate) mod smooth;
 pub(crate) mod spans;
 #[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
@@ -38,6 +40,7 @@ pub use frame::{Frame, DEPTH_CLEAR};
 pub use overlap::{BandSender, Blocking, Dma};
 pub use overlap_async::AsyncBandSender;
 pub use resample::{resolve_box, Accumulator};
+pub use share::{BandShare, BinnedFrame};
 pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
 #[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]

@@ -74,6 +74,7 @@
 use embedded_graphics_core::draw_target::DrawTarget;
 
 use super::band::{BandRenderer, BandStats, DrawTargetFlush};
+use super::share::BandShare;
 use super::Frame;
 use crate::color::TargetColor;
 use crate::Error;
@@ -223,15 +224,41 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         stats: &mut BandStats,
         clear: C,
         sender: &mut S,
+        draw_band: impl FnMut(&mut Frame<'_, C>, u32) -> u32,
+    ) -> Result<(), S::Error> {
+        self.each_band_of(BandShare::ALL, stats, clear, sender, draw_band)
+    }
+
+    /// [`each_band`](Self::each_band) for the bands of `share` only (the others are
+    /// neither cleared, drawn nor sent).
+    pub(super) fn each_band_of<S: BandSender<C>>(
+        &mut self,
+        share: BandShare,
+        stats: &mut BandStats,
+        clear: C,
+        sender: &mut S,
         mut draw_band: impl FnMut(&mut Frame<'_, C>, u32) -> u32,
     ) -> Result<(), S::Error> {
         let need = self.width as usize * self.rows as usize;
         let slots = self.color.count();
         let (mut busy, mut slot) = (0, 0);
+        let (core, cores) = (share.core(), share.cores());
+        let mut turn = 0;
         let mut result = Ok(());
         let mut y0 = 0;
         let mut index = 0;
         while y0 < self.height {
+            let rows = self.rows.min(self.height - y0);
+            let mine = turn == core;
+            turn += 1;
+            if turn == cores {
+                turn = 0;
+            }
+            if !mine {
+                index += 1;
+                y0 += rows;
+                continue;
+            }
             if busy == slots {
                 busy -= 1;
                 if let Err(e) = sender.wait() {
@@ -239,7 +266,6 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                     break;
                 }
             }
-            let rows = self.rows.min(self.height - y0);
             let n = self.width as usize * rows as usize;
             let Some(color) = self.color.get(slot).and_then(|c| c.get_mut(..n.min(need))) else {
                 break;
