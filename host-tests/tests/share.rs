@@ -4,6 +4,7 @@
 //! * the bands of all the shares, put in row order, are the bands of the one-core
 //!   `render`, bit for bit, over random turns of the cube and the sphere, frame and band
 //!   sizes, core counts and band rings;
+//! * the binning pass split in two parts (`BinnedFrame::join`) gives the same frame;
 //! * each core draws exactly the bands `k` with `k mod cores = core`, top to bottom;
 //! * bad splits are refused: a core past the cores, no cores, fewer bands than cores, bins
 //!   too small for the frame.
@@ -40,6 +41,7 @@ proptest! {
         rows in 1u32..12,
         cores in 1u32..5,
         ring in 1usize..4,
+        split in prop_oneof![Just(None), (0.0f64..1.0).prop_map(Some)],
     ) {
         let rows = rows.min(h);
         prop_assume!(h.div_ceil(rows) >= cores);
@@ -65,7 +67,31 @@ proptest! {
             .render(&draws, &mut bins, raw(0x0821), geometry, |b| { keep(&mut want, b); Ok::<(), ()>(()) })
             .unwrap();
 
-        let frame = BinnedFrame::new(&draws, &mut bins, geometry).unwrap();
+        let frame = match split {
+            None => BinnedFrame::new(&draws, &mut bins, geometry).unwrap(),
+            Some(at) => {
+                // The binning pass in two parts (as two cores would run it), joined.
+                let (pos, nrm, uv, idx): (&[_], &[_], &[_], &[_]) = if sphere {
+                    (&ball.positions, &ball.normals, &ball.uvs, &ball.indices)
+                } else {
+                    (&cube.positions, &cube.normals, &cube.uvs, &cube.indices)
+                };
+                let k = (idx.len() as f64 * at) as usize;
+                let (draw, light, model) = (&draw, &light, &model);
+                let part = |range: std::ops::Range<usize>| {
+                    let m = fixel::scene::Mesh::new(pos, Some(nrm), uv, &idx[range]).unwrap();
+                    move |sink: &mut TriangleSink<'_, '_, '_, Rgb565>| {
+                        mesh_triangles(&m, model, &demo::camera(20), Some(light), |t| {
+                            draw.project(t, &mut |s| sink.push(0, s))
+                        })
+                    }
+                };
+                let (first, later) = bins.split_at_mut(1200);
+                let a = BinnedFrame::new(&draws, first, part(0..k)).unwrap();
+                let b = BinnedFrame::new(&draws, later, part(k..idx.len())).unwrap();
+                a.join(b).unwrap()
+            }
+        };
         prop_assert_eq!(frame.triangles() as u32, one.triangles);
         let mut got: Vec<Sent> = Vec::new();
         let mut pixels = 0;

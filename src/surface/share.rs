@@ -18,6 +18,10 @@
 //!   bands carry about the same work (the benchmark scenes: 50.3 to 53.0 % for the busier
 //!   core, `cargo xtask fps`).
 //!
+//! The binning pass may be split too: each core bins part of the meshes into bins of its
+//! own, and [`BinnedFrame::join`] makes one frame of the two (the first part's triangles
+//! first in each band, as one pass would have binned them).
+//!
 //! The cores hand finished bands to the link in band order; that hand-off is the caller's
 //! (on an RP2040, core 1 passes each finished band through the SIO FIFO, which needs no
 //! atomics, to the core that drives the DMA). The pixels of every band are those of the
@@ -103,13 +107,15 @@ impl BandShare {
 pub struct BinnedFrame<'f, 'd, C: TargetColor> {
     draws: &'f [&'d dyn BandDraw<C>],
     bins: &'f [Binned],
+    /// The triangles binned after `bins` ([`BinnedFrame::join`]).
+    later: &'f [Binned],
 }
 
 impl<C: TargetColor> core::fmt::Debug for BinnedFrame<'_, '_, C> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("BinnedFrame")
             .field("draws", &self.draws.len())
-            .field("triangles", &self.bins.len())
+            .field("triangles", &self.triangles())
             .finish()
     }
 }
@@ -136,12 +142,32 @@ impl<'f, 'd, C: TargetColor> BinnedFrame<'f, 'd, C> {
         Ok(BinnedFrame {
             draws,
             bins: bins.get(..len).unwrap_or(&[]),
+            later: &[],
+        })
+    }
+
+    /// This frame's triangles followed by `later`'s, drawn in that order in each band:
+    /// the binning pass split between cores (each core bins part of the meshes, in the
+    /// order of the whole pass, into its own bins). Refused when `later` has other draws
+    /// or either frame is already a join ([`Error::BadMode`]).
+    pub fn join(self, later: BinnedFrame<'f, 'd, C>) -> Result<Self, Error> {
+        if !core::ptr::eq(self.draws, later.draws) {
+            return Err(Error::BadMode(
+                "binned frames joined must share their draws",
+            ));
+        }
+        if !self.later.is_empty() || !later.later.is_empty() {
+            return Err(Error::BadMode("a binned frame joins two parts at most"));
+        }
+        Ok(BinnedFrame {
+            later: later.bins,
+            ..self
         })
     }
 
     /// Screen triangles binned.
     pub fn triangles(&self) -> usize {
-        self.bins.len()
+        self.bins.len() + self.later.len()
     }
 }
 
@@ -169,13 +195,20 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             }));
         }
         let mut stats = BandStats {
-            triangles: frame.bins.len() as u32,
+            triangles: frame.triangles() as u32,
             ..BandStats::default()
         };
-        let (draws, bins) = (frame.draws, frame.bins);
+        let (draws, bins, later) = (frame.draws, frame.bins, frame.later);
         let mut no_geometry = |_: &mut TriangleSink<'_, '_, '_, C>| {};
         self.each_band_of(share, &mut stats, clear, sender, |band, _| {
-            Self::draw_binned(draws, bins, false, &mut no_geometry, band)
+            let first = Self::draw_binned(draws, bins, false, &mut no_geometry, band);
+            first.saturating_add(Self::draw_binned(
+                draws,
+                later,
+                false,
+                &mut no_geometry,
+                band,
+            ))
         })
         .map_err(BandError::Flush)?;
         Ok(stats)
