@@ -132,6 +132,19 @@ enum Command {
     /// hidden and the assumptions. --docs writes docs/fps.md.
     #[command(verbatim_doc_comment)]
     Fps(fps::FpsArgs),
+    /// One frame on two cores under QEMU (RISC-V virt -smp 2): per-hart exact counts
+    ///
+    /// Builds the cores_cube, cores_sphere and cores_teapot firmwares (RV32IMC) and
+    /// runs each on two harts with a per-vCPU instruction-counting plugin: frame 0
+    /// on one hart, then binned half on each hart and drawn in interleaved bands.
+    /// Prints each hart's instructions and the balance; fails unless both
+    /// checksums equal the host's and the busier hart does at most 55 %.
+    #[command(verbatim_doc_comment)]
+    Cores {
+        /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
+        #[arg(long)]
+        no_install: bool,
+    },
     /// Speed against error for every benchmark scene and mode
     ///
     /// Builds and runs the report firmwares under QEMU (exact instructions per pixel
@@ -229,6 +242,7 @@ fn main() -> ExitCode {
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
         Command::Fps(a) => fps::fps(&a),
+        Command::Cores { no_install } => mcu::cores(!no_install),
         Command::Report(a) => report::report(&a),
         Command::BakeLight3d(a) => match light3d::run(&a) {
             Ok(()) => ExitCode::SUCCESS,

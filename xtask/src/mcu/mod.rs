@@ -11,6 +11,7 @@
 //! run.
 
 mod bands;
+mod cores;
 mod firmware;
 mod qemu;
 mod report;
@@ -26,6 +27,7 @@ use clap::Args;
 use crate::cmd::root;
 
 pub use bands::{band_counts, BandCounts};
+pub use cores::cores;
 pub use report::report_mcu;
 pub use scenes::mcu;
 pub use size::size;
