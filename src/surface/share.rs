@@ -15,8 +15,8 @@
 //!   at about the same time and each needs two band buffers; split into halves, core 1's
 //!   finished bands would wait for all of core 0's, with half a frame of buffers;
 //! * balance: the work per band changes slowly down the screen, so the even and the odd
-//!   bands carry about the same work (the benchmark scenes: 50.3 to 53.0 % for the busier
-//!   core, `cargo xtask fps`).
+//!   bands carry about the same work (the benchmark cube, sphere and teapot on two RISC-V
+//!   harts, `cargo xtask cores`: the busier one does 50.0 to 50.9 % of the instructions).
 //!
 //! The binning pass may be split too: each core bins part of the meshes into bins of its
 //! own, and [`BinnedFrame::join`] makes one frame of the two (the first part's triangles

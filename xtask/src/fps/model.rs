@@ -6,9 +6,9 @@
 //! * **overlapped**, one core: band `k` is sent by DMA while band `k + 1` is drawn into the
 //!   second of two band buffers; a band waits for its buffer only while that buffer's
 //!   previous band is still on the wire;
-//! * **two cores**, overlapped: the binning pass on core 0, then the bands interleaved
-//!   (core 0 the even ones, core 1 the odd ones), each core with two band buffers, the
-//!   bands sent in order on the one link.
+//! * **two cores**, overlapped: the binning pass split between the cores (each bins half
+//!   of the triangles), then the bands interleaved (core 0 the even ones, core 1 the odd
+//!   ones), each core with two band buffers, the bands sent in order on the one link.
 //!
 //! One frame on its own: the next frame's binning pass does not overlap the last band's
 //! transfer (which it could: a conservative figure). Everything else (wait states, bus
@@ -148,8 +148,9 @@ pub fn frame_times(chip: &Chip, work: &Work) -> FrameTimes {
         let even: f64 = draw.iter().step_by(2).sum();
         let odd: f64 = draw.iter().skip(1).step_by(2).sum();
         let share = even.max(odd) / (even + odd).max(f64::MIN_POSITIVE);
-        let two = pipeline(geometry, &draw, &send, 2, 2, false);
-        let exposed = two - pipeline(geometry, &draw, &instant, 2, 2, false);
+        let start = geometry / 2.0;
+        let two = pipeline(start, &draw, &send, 2, 2, false);
+        let exposed = two - pipeline(start, &draw, &instant, 2, 2, false);
         (Some(two), Some(share), exposed)
     } else {
         (None, None, overlapped - render)
@@ -197,8 +198,8 @@ mod tests {
         let t = frame_times(&chip(2), &w);
         assert_eq!(t.serial, 1.0 + 4.0 * 3.0);
         assert_eq!(t.overlapped, 1.0 + 4.0 * 2.0 + 1.0);
-        // The last two bands wait for the link.
-        assert_eq!(t.two_cores, Some(7.0));
+        // Half the binning pass each, then the last two bands wait for the link.
+        assert_eq!(t.two_cores, Some(6.5));
         assert_eq!(t.balance, Some(0.5));
         assert!((t.hidden - 0.5).abs() < 1e-12);
         assert!((frame_times(&chip(1), &w).hidden - 0.75).abs() < 1e-12);
