@@ -143,6 +143,37 @@ pub enum Error {
         /// Its height.
         height: u32,
     },
+    /// A band renderer that sends a band while drawing the next needs at least two band
+    /// buffers (`BandRenderer::with_buffers`).
+    TooFewBandBuffers {
+        /// How many were given.
+        given: usize,
+    },
+    /// The band buffers of `BandRenderer::with_buffers` are not all of one length.
+    BandBuffersDiffer {
+        /// The first buffer whose length differs from buffer 0's.
+        index: usize,
+        /// Its length, pixels.
+        len: usize,
+        /// Buffer 0's length, pixels.
+        first: usize,
+    },
+    /// A share of a frame's bands names no core of its cores (`BandShare::new`: `core`
+    /// must be below `cores`, `cores` from 1 to 255).
+    BadBandShare {
+        /// The core asked for.
+        core: u32,
+        /// The cores sharing the frame.
+        cores: u32,
+    },
+    /// A frame has fewer bands than the cores it is split between: some core would draw
+    /// nothing (use fewer cores or lower bands).
+    TooFewBands {
+        /// Bands in the frame.
+        bands: u32,
+        /// Cores sharing it.
+        cores: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -236,6 +267,22 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "cube-map face {face} is {width}x{height}: faces must be square and the size of face 0"
+            ),
+            Error::TooFewBandBuffers { given } => write!(
+                f,
+                "{given} band buffer(s) given: sending one band while drawing the next needs at least two"
+            ),
+            Error::BandBuffersDiffer { index, len, first } => write!(
+                f,
+                "band buffer {index} holds {len} pixels, buffer 0 {first}: the band buffers must all be of one length"
+            ),
+            Error::BadBandShare { core, cores } => write!(
+                f,
+                "band share of core {core} of {cores} cores: the core must be below the cores, the cores from 1 to 255"
+            ),
+            Error::TooFewBands { bands, cores } => write!(
+                f,
+                "a frame of {bands} band(s) cannot be split between {cores} cores: each core needs a band"
             ),
         }
     }

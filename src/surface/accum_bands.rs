@@ -14,6 +14,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 
 use super::band::{BandError, BandStats, Binned, TriangleSink};
 use super::band_draw::{each_variant, AnyTriangle, BandDraw, Binnable};
+use super::overlap::{BandSender, Blocking};
 use super::{Accumulator, BandRenderer, Frame, RenderTarget};
 use crate::geometry::ScreenTriangle;
 use crate::math::Fx;
@@ -62,9 +63,28 @@ impl BandRenderer<'_, Rgb565> {
         clear: Rgb565,
         offsets: &[[Fx; 2]],
         sums: &mut [[u16; 3]],
-        mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, Rgb565>),
-        mut flush: impl FnMut(&Frame<'_, Rgb565>) -> Result<(), E>,
+        geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, Rgb565>),
+        flush: impl FnMut(&Frame<'_, Rgb565>) -> Result<(), E>,
     ) -> Result<BandStats, BandError<E>> {
+        let mut sender = Blocking(flush);
+        self.render_accumulated_to(draws, bins, clear, offsets, sums, geometry, &mut sender)
+    }
+
+    /// [`render_accumulated`](Self::render_accumulated) through a [`BandSender`], as
+    /// [`render_to`](Self::render_to) is [`render`](Self::render) through one: the same
+    /// averaged bands, the next drawn while the last is sent when the renderer has a ring
+    /// of buffers.
+    #[allow(clippy::too_many_arguments)]
+    pub fn render_accumulated_to<S: BandSender<Rgb565>>(
+        &mut self,
+        draws: &[&dyn BandDraw<Rgb565>],
+        bins: &mut [Binned],
+        clear: Rgb565,
+        offsets: &[[Fx; 2]],
+        sums: &mut [[u16; 3]],
+        mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, Rgb565>),
+        sender: &mut S,
+    ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
         let need = self.width as usize * self.rows as usize;
         if offsets.is_empty() || offsets.len() > Accumulator::MAX_FRAMES as usize {
@@ -94,7 +114,7 @@ impl BandRenderer<'_, Rgb565> {
             ..BandStats::default()
         };
         let mut failed = None;
-        self.each_band(&mut stats, clear, &mut flush, |band, _| {
+        self.each_band(&mut stats, clear, sender, |band, _| {
             let (r0, r1) = band.row_range();
             let n = band.pixels().len();
             let Ok(mut acc) = Accumulator::new(&mut sums[..n]) else {

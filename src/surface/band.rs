@@ -25,6 +25,7 @@ use embedded_graphics_core::geometry::{Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
 use super::band_draw::{AnyTriangle, BandDraw, Binnable};
+use super::overlap::{check_ring, BandBuffers, BandSender, Blocking};
 use super::{Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
@@ -307,10 +308,30 @@ impl<'s, 'd, C: TargetColor> TriangleSink<'s, '_, 'd, C> {
     }
 }
 
+/// Checks a frame of `width` x `height` in bands of `rows` through buffers of `len`
+/// pixels; the band height (at most the frame's).
+fn check_band(len: usize, width: u32, rows: u32, height: u32) -> Result<u32, Error> {
+    if width == 0 || width > 4096 || height == 0 || height > 4096 {
+        return Err(Error::BadSize(if width == 0 || width > 4096 {
+            width
+        } else {
+            height
+        }));
+    }
+    let capacity = len / width as usize;
+    if rows == 0 || rows as usize > capacity {
+        return Err(Error::BandTooTall {
+            rows: rows.min(u32::from(u16::MAX)) as u16,
+            capacity: capacity.min(usize::from(u16::MAX)) as u16,
+        });
+    }
+    Ok(rows.min(height))
+}
+
 /// Draws frames band by band through a small buffer.
 #[derive(Debug)]
 pub struct BandRenderer<'b, C> {
-    pub(super) color: &'b mut [C],
+    pub(super) color: BandBuffers<'b, C>,
     pub(super) depth: Option<&'b mut [u16]>,
     pub(super) width: u32,
     pub(super) rows: u32,
@@ -332,25 +353,52 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     /// assert!(BandRenderer::new(&mut buf, 320, 17, 240).is_err()); // band taller than buffer
     /// ```
     pub fn new(color: &'b mut [C], width: u32, rows: u32, height: u32) -> Result<Self, Error> {
-        if width == 0 || width > 4096 || height == 0 || height > 4096 {
-            return Err(Error::BadSize(if width == 0 || width > 4096 {
-                width
-            } else {
-                height
-            }));
-        }
-        let capacity = color.len() / width as usize;
-        if rows == 0 || rows as usize > capacity {
-            return Err(Error::BandTooTall {
-                rows: rows.min(u32::from(u16::MAX)) as u16,
-                capacity: capacity.min(usize::from(u16::MAX)) as u16,
-            });
-        }
+        let rows = check_band(color.len(), width, rows, height)?;
         Ok(BandRenderer {
-            color,
+            color: BandBuffers::One(color),
             depth: None,
             width,
-            rows: rows.min(height),
+            rows,
+            height,
+            setups: &mut [],
+        })
+    }
+
+    /// Bands of `rows` rows of a `width` x `height` frame drawn in turn into the buffers of
+    /// `buffers` (band `k` into buffer `k mod n`), each at least `width * rows` long: with a
+    /// sender that returns before the band is sent ([`render_to`](Self::render_to) and
+    /// [`Dma`](super::Dma)), band `k` is sent while band `k + 1` is drawn. The pixels
+    /// are those of [`new`](Self::new) (tested).
+    ///
+    /// Refused: fewer than two buffers ([`Error::TooFewBandBuffers`]), buffers of different
+    /// lengths ([`Error::BandBuffersDiffer`]), and what [`new`](Self::new) refuses.
+    ///
+    /// ```
+    /// use fixel::surface::BandRenderer;
+    /// use fixel::{Error, Rgb565};
+    /// let (mut a, mut b) = ([Rgb565::default(); 320 * 8], [Rgb565::default(); 320 * 8]);
+    /// let mut two = [&mut a[..], &mut b[..]];
+    /// assert!(BandRenderer::with_buffers(&mut two, 320, 8, 240).is_ok());
+    /// let mut one = [&mut a[..]];
+    /// let e = BandRenderer::with_buffers(&mut one, 320, 8, 240).unwrap_err();
+    /// assert_eq!(e, Error::TooFewBandBuffers { given: 1 });
+    /// let mut odd = [&mut a[..], &mut b[..320 * 4]];
+    /// let e = BandRenderer::with_buffers(&mut odd, 320, 4, 240).unwrap_err();
+    /// assert_eq!(e, Error::BandBuffersDiffer { index: 1, len: 320 * 4, first: 320 * 8 });
+    /// ```
+    pub fn with_buffers(
+        buffers: &'b mut [&'b mut [C]],
+        width: u32,
+        rows: u32,
+        height: u32,
+    ) -> Result<Self, Error> {
+        check_ring(buffers)?;
+        let rows = check_band(buffers[0].len(), width, rows, height)?;
+        Ok(BandRenderer {
+            color: BandBuffers::Ring(buffers),
+            depth: None,
+            width,
+            rows,
             height,
             setups: &mut [],
         })
@@ -427,85 +475,88 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
         draws: &[&dyn BandDraw<C>],
         bins: &mut [Binned],
         clear: C,
-        mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
-        mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+        geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+        flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
     ) -> Result<BandStats, BandError<E>> {
+        self.render_to(draws, bins, clear, geometry, &mut Blocking(flush))
+    }
+
+    /// [`render`](Self::render) through a [`BandSender`]: each band is started on `sender`
+    /// once drawn; with a ring of buffers ([`with_buffers`](Self::with_buffers)) and a
+    /// sender that returns before the band is sent (a DMA channel, [`Dma`](super::Dma)),
+    /// the next band is drawn meanwhile. The same bands in the same order with the same
+    /// pixels as `render`; the first error of the sender stops the frame
+    /// ([`BandError::Flush`]) once the transfers started have been waited for.
+    pub fn render_to<S: BandSender<C>>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        bins: &mut [Binned],
+        clear: C,
+        mut geometry: impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+        sender: &mut S,
+    ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
-        let mut sink = TriangleSink::binning(bins, draws);
-        geometry(&mut sink);
-        let (bins, len, overflow) = sink.into_bins()?;
+        let (bins, len, overflow) = Self::bin(draws, bins, &mut geometry)?;
         let mut stats = BandStats {
             rewalked: overflow,
             triangles: len as u32,
             ..BandStats::default()
         };
-        self.each_band(&mut stats, clear, &mut flush, |band, _| {
-            if overflow {
-                let mut s = TriangleSink {
-                    mode: SinkMode::Immediate {
-                        draws,
-                        band,
-                        pixels: 0,
-                    },
-                };
-                geometry(&mut s);
-                match s.mode {
-                    SinkMode::Immediate { pixels, .. } => pixels,
-                    SinkMode::Bin { .. } => 0,
-                }
-            } else {
-                let (r0, r1) = band.row_range();
-                let mut pixels = 0;
-                for b in bins[..len].iter() {
-                    if !b.meets(r0, r1) {
-                        continue;
-                    }
-                    if let Some(d) = draws.get(usize::from(b.draw)) {
-                        pixels =
-                            u32::saturating_add(pixels, d.draw_piece(b.tri.as_ref(), band, None));
-                    }
-                }
-                pixels
-            }
+        let bins: &[Binned] = &bins[..len];
+        self.each_band(&mut stats, clear, sender, |band, _| {
+            Self::draw_binned(draws, bins, overflow, &mut geometry, band)
         })
         .map_err(BandError::Flush)?;
         Ok(stats)
     }
 
-    /// Runs `draw_band` on each band in turn (band index from 0, frame rows `y0..`), after
-    /// clearing it to `clear`, then flushes it; counts bands and pixels in `stats`.
-    pub(super) fn each_band<E>(
-        &mut self,
-        stats: &mut BandStats,
-        clear: C,
-        flush: &mut impl FnMut(&Frame<'_, C>) -> Result<(), E>,
-        mut draw_band: impl FnMut(&mut Frame<'_, C>, u32) -> u32,
-    ) -> Result<(), E> {
-        let need = self.width as usize * self.rows as usize;
-        let mut y0 = 0;
-        let mut index = 0;
-        while y0 < self.height {
-            let rows = self.rows.min(self.height - y0);
-            let n = self.width as usize * rows as usize;
-            let color = &mut self.color[..n.min(need)];
-            let Ok(mut band) = Frame::new(color, self.width, rows) else {
-                break;
+    /// The binning pass of [`render`](Self::render): the geometry's screen triangles into
+    /// `bins`; `(bins, triangles binned, overflowed)`, or the first bad push.
+    pub(super) fn bin<'s>(
+        draws: &'s [&'s dyn BandDraw<C>],
+        bins: &'s mut [Binned],
+        geometry: &mut impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+    ) -> Result<(&'s mut [Binned], usize, bool), Error> {
+        let mut sink = TriangleSink::binning(bins, draws);
+        geometry(&mut sink);
+        sink.into_bins()
+    }
+
+    /// One band of [`render`](Self::render): the binned triangles that meet it or, when
+    /// the bins overflowed, the whole geometry again; the pixels written.
+    pub(super) fn draw_binned(
+        draws: &[&dyn BandDraw<C>],
+        bins: &[Binned],
+        overflow: bool,
+        geometry: &mut impl FnMut(&mut TriangleSink<'_, '_, '_, C>),
+        band: &mut Frame<'_, C>,
+    ) -> u32 {
+        if overflow {
+            let mut s = TriangleSink {
+                mode: SinkMode::Immediate {
+                    draws,
+                    band,
+                    pixels: 0,
+                },
             };
-            if let Some(d) = self.depth.as_deref_mut() {
-                match band.with_depth_as_is(&mut d[..n.min(need)]) {
-                    Ok(b) => band = b,
-                    Err(_) => break,
+            geometry(&mut s);
+            match s.mode {
+                SinkMode::Immediate { pixels, .. } => pixels,
+                SinkMode::Bin { .. } => 0,
+            }
+        } else {
+            let (r0, r1) = band.row_range();
+            let mut pixels = 0;
+            for b in bins.iter() {
+                if !b.meets(r0, r1) {
+                    continue;
+                }
+                if let Some(d) = draws.get(usize::from(b.draw)) {
+                    pixels = u32::saturating_add(pixels, d.draw_piece(b.tri.as_ref(), band, None));
                 }
             }
-            let mut band = band.at_row(y0);
-            band.clear(clear);
-            stats.pixels = stats.pixels.saturating_add(draw_band(&mut band, index));
-            flush(&band)?;
-            stats.bands += 1;
-            index += 1;
-            y0 += rows;
+            pixels
         }
-        Ok(())
     }
 }
 

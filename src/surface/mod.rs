@@ -11,6 +11,11 @@
 //! * [`BandRenderer::render`]: draws a frame as horizontal bands through a small buffer and flushes each to
 //!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
 //! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
+//! * [`overlap`]: a ring of band buffers and a [`BandSender`] (a DMA channel, say): band `k`
+//!   is sent while band `k + 1` is drawn; [`overlap_async`]: the same as an `async` frame;
+//!   [`share`]: one frame's bands drawn by two cores from bins built once;
+//!   `spi_send`: senders over `embedded-hal` 1.0 SPI devices (features `embedded-hal`,
+//!   `embedded-hal-async`).
 
 pub(crate) mod accum_bands;
 pub(crate) mod band;
@@ -18,18 +23,28 @@ mod band_draw;
 pub(crate) mod depth_map;
 mod fill;
 pub(crate) mod frame;
+pub mod overlap;
+pub mod overlap_async;
 pub(crate) mod resample;
 mod setup_queue;
+pub mod share;
 pub(crate) mod smooth;
 pub(crate) mod spans;
+#[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
+pub mod spi_send;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
 pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
 pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
+pub use overlap::{BandSender, Blocking, Dma};
+pub use overlap_async::AsyncBandSender;
 pub use resample::{resolve_box, Accumulator};
+pub use share::{BandShare, BinnedFrame};
 pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
+#[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
+pub use spi_send::SpiSender;
 
 use crate::color::TargetColor;
 

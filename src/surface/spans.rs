@@ -45,6 +45,7 @@
 
 use super::band::{rows_of, BandError, BandStats, Binned, PushCheck};
 use super::band_draw::{BandDraw, Binnable};
+use super::overlap::{BandSender, Blocking};
 use super::setup_queue::{self, QueueState, SetupQueue};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
@@ -442,9 +443,24 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         bins: &mut [Binned],
         ranges: &mut [BandRange],
         clear: C,
-        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
-        mut flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
+        geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+        flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
     ) -> Result<BandStats, BandError<E>> {
+        self.render_spans_to(draws, bins, ranges, clear, geometry, &mut Blocking(flush))
+    }
+
+    /// [`render_spans`](Self::render_spans) through a [`BandSender`], as
+    /// [`render_to`](Self::render_to) is [`render`](Self::render) through one: the same
+    /// bands, the next drawn while the last is sent when the renderer has a ring of buffers.
+    pub fn render_spans_to<S: BandSender<C>>(
+        &mut self,
+        draws: &[&dyn BandDraw<C>],
+        bins: &mut [Binned],
+        ranges: &mut [BandRange],
+        clear: C,
+        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+        sender: &mut S,
+    ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
         ranges.fill(BandRange::EMPTY);
         let rows = self.rows.max(1);
@@ -499,7 +515,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         let setups = core::mem::take(&mut self.setups);
         setup_queue::clear(setups);
         let mut queue = QueueState::default();
-        let result = self.each_band(&mut stats, clear, &mut flush, |band, index| {
+        let result = self.each_band(&mut stats, clear, sender, |band, index| {
             if bins_full {
                 let mut s = MeshSink {
                     pass: Pass::Band {

@@ -152,7 +152,7 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
             cargo(&[&lint[..], &deny[..]].concat())
                 .in_dir("examples/firmware")
                 .run()?;
-            let whole = ["--features", "whole", "--target-dir", "target/whole"];
+            let whole = ["--features", "whole,smp", "--target-dir", "target/whole"];
             cargo(&[&lint[..], &whole[..], &deny[..]].concat())
                 .in_dir("examples/firmware")
                 .env("FIXEL_FW_MEMORY", "whole")
@@ -169,6 +169,19 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
                 Ok(())
             } else {
                 Err("cargo xtask mcu failed (see above)".to_string())
+            }
+        })
+    });
+
+    // One frame on two cores (RISC-V virt -smp 2): per-hart counts, checksums, balance.
+    steps.push(if no_cross {
+        skipped("cores (QEMU, two harts)", "--no-cross")
+    } else {
+        step("cores (QEMU, two harts)", || {
+            if mcu::cores(true) == ExitCode::SUCCESS {
+                Ok(())
+            } else {
+                Err("cargo xtask cores failed (see above)".to_string())
             }
         })
     });

@@ -14,6 +14,7 @@ mod bake_palette;
 mod ci;
 mod cmd;
 mod count;
+mod fps;
 mod fuzz;
 mod images;
 mod light3d;
@@ -123,6 +124,29 @@ enum Command {
     /// Installs missing tools as `mcu` does.
     #[command(verbatim_doc_comment)]
     Size(mcu::SizeArgs),
+    /// Frames per second on real boards, modelled from the firmware's per-band counts
+    ///
+    /// Counts the cube, sphere and teapot firmwares band by band under QEMU (exact
+    /// instructions of the binning pass and of each band, cycles from the static
+    /// model), then models the frame time and fps on an RP2040, RP2350, STM32F4 and
+    /// ESP32-C3 driving an ST7789 over SPI: one core serial, one core overlapped
+    /// (two band buffers, DMA), two cores overlapped; with the share of the link time
+    /// hidden and the assumptions. --docs writes docs/fps.md.
+    #[command(verbatim_doc_comment)]
+    Fps(fps::FpsArgs),
+    /// One frame on two cores under QEMU (RISC-V virt -smp 2): per-hart exact counts
+    ///
+    /// Builds the cores_cube, cores_sphere and cores_teapot firmwares (RV32IMC) and
+    /// runs each on two harts with a per-vCPU instruction-counting plugin: frame 0
+    /// on one hart, then binned half on each hart and drawn in interleaved bands.
+    /// Prints each hart's instructions and the balance; fails unless both
+    /// checksums equal the host's and the busier hart does at most 55 %.
+    #[command(verbatim_doc_comment)]
+    Cores {
+        /// Do not install missing tools (rust targets, llvm-tools, apt-get packages)
+        #[arg(long)]
+        no_install: bool,
+    },
     /// Speed against error for every benchmark scene and mode
     ///
     /// Builds and runs the report firmwares under QEMU (exact instructions per pixel
@@ -243,6 +267,8 @@ fn main() -> ExitCode {
         Command::Fuzz(a) => fuzz::fuzz(&a),
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
+        Command::Fps(a) => fps::fps(&a),
+        Command::Cores { no_install } => mcu::cores(!no_install),
         Command::Report(a) => report::report(&a),
         Command::BakeLight3d(a) => match light3d::run(&a) {
             Ok(()) => ExitCode::SUCCESS,

@@ -22,6 +22,10 @@ pub mod scenes;
 #[cfg(fixel_fw_report)]
 pub mod shadow_modes;
 pub mod size;
+#[cfg(feature = "smp")]
+pub mod cores;
+#[cfg(feature = "smp")]
+pub mod smp;
 #[cfg(fixel_fw_report)]
 pub mod surface;
 
@@ -199,7 +203,7 @@ core::arch::global_asm!(
     .global _start
 _start:
     csrr t0, mhartid
-    bnez t0, 9f
+    bnez t0, 8f
     la sp, _stack_start
     la t0, _sbss
     la t1, _ebss
@@ -217,10 +221,29 @@ _start:
     addi t1, t1, 4
     j 3b
 4:  call main
+8:  j {other}
 9:  wfi
     j 9b
-"#
+"#,
+    other = sym other_hart,
 );
+
+/// Where a hart other than 0 goes at reset: parked, unless the firmware runs on two
+/// cores (feature `smp`: [`smp`]).
+#[cfg(target_arch = "riscv32")]
+#[no_mangle]
+extern "C" fn other_hart() -> ! {
+    #[cfg(feature = "smp")]
+    // SAFETY: the stack below hart 0's (see `smp::hart1`).
+    unsafe {
+        core::arch::asm!("la sp, _stack_start", "li t1, 0x40000", "sub sp, sp, t1", "j {h}", h = sym smp::hart1, options(noreturn));
+    }
+    #[cfg(not(feature = "smp"))]
+    loop {
+        // SAFETY: waits for an interrupt, which never comes: the hart is parked.
+        unsafe { core::arch::asm!("wfi") };
+    }
+}
 
 /// The body of the whole-frame sphere firmwares (`whole_sphere`, `whole_sphere_adaptive`,
 /// `whole_sphere_footprint`): frame 0 of scene `sphere` drawn with stages `M` and `texture`

@@ -10,7 +10,9 @@
 //! microcontroller part of `cargo xtask report`; `tools`, `firmware` and `qemu` build and
 //! run.
 
+mod band_counts;
 mod bands;
+mod cores;
 mod firmware;
 mod qemu;
 mod report;
@@ -25,6 +27,8 @@ use clap::Args;
 
 use crate::cmd::root;
 
+pub use band_counts::{band_counts, BandCounts};
+pub use cores::cores;
 pub use report::report_mcu;
 pub use scenes::mcu;
 pub use size::size;

@@ -113,7 +113,7 @@ est. cycles = static model over the exact per-PC histogram of the counted region
 Real parts add flash wait states (hidden by caches on some) and contention: an estimate.";
 
 /// Expected checksums and pixel counts from the host test (same code, same frames).
-fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
+pub(super) fn host_expected() -> Result<BTreeMap<String, (String, u64)>, String> {
     // The `ci` profile: `cargo xtask ci` has built it already for its test step.
     let what = "cargo test -q --profile ci -p host-tests --test mcu_checksums --test shadow_mcu \
                 --test model_mcu --test palette_mcu -- --nocapture";

@@ -159,8 +159,14 @@ pub(super) fn ensure_tools(install: bool) -> Result<PathBuf, String> {
 
 /// Builds the icount plugin when missing or older than its source.
 pub(super) fn build_plugin() -> Result<PathBuf, String> {
-    let src = root().join("xtask/mcu/icount.c");
-    let so = out_dir().join("libicount.so");
+    build_plugin_named("icount")
+}
+
+/// Builds the plugin `xtask/mcu/NAME.c` into `target/mcu/libNAME.so` when missing or older
+/// than its source.
+pub(super) fn build_plugin_named(name: &str) -> Result<PathBuf, String> {
+    let src = root().join(format!("xtask/mcu/{name}.c"));
+    let so = out_dir().join(format!("lib{name}.so"));
     let stale = match (fs::metadata(&src), fs::metadata(&so)) {
         (Ok(s), Ok(o)) => s.modified().ok() > o.modified().ok(),
         _ => true,
@@ -179,7 +185,7 @@ pub(super) fn build_plugin() -> Result<PathBuf, String> {
                 ])
                 .arg(&so)
                 .arg(&src),
-            "gcc -O2 -shared -fPIC -o target/mcu/libicount.so xtask/mcu/icount.c",
+            &format!("gcc -O2 -shared -fPIC -o target/mcu/lib{name}.so xtask/mcu/{name}.c"),
         )?;
     }
     Ok(so)
