@@ -163,6 +163,34 @@ pub fn table(counts: &[BandCounts]) -> String {
     t
 }
 
+/// The README's form: the cube on each part, serial against the best overlapped way.
+pub fn compact(counts: &[BandCounts]) -> String {
+    let mut t = String::from(
+        "| part | serial, 1 core (today's loop) | overlapped, 1 core | overlapped, 2 cores | best / serial |\n\
+         |---|---:|---:|---:|---:|\n",
+    );
+    for chip in &CHIPS {
+        let Some(c) = counts
+            .iter()
+            .find(|c| c.scene == "cube" && c.target == chip.counts_from)
+        else {
+            continue;
+        };
+        let f = frame_times(chip, &work(c));
+        let _ = writeln!(
+            t,
+            "| {} ({}) | {} | {} | {} | {:.2}x |",
+            chip.name,
+            chip.core,
+            ms_fps(f.serial),
+            ms_fps(f.overlapped),
+            f.two_cores.map_or("- (one core)".into(), ms_fps),
+            f.serial / f.best(),
+        );
+    }
+    t
+}
+
 /// The measured input, per scene and instruction set (Markdown).
 fn counts_table(counts: &[BandCounts]) -> String {
     let mut t = String::from(
@@ -212,6 +240,12 @@ pub fn fps(flags: &FpsArgs) -> ExitCode {
             return ExitCode::FAILURE;
         }
         println!("fps: wrote {}", path.display());
+        let readme = root().join("README.md");
+        if let Err(e) = crate::mcu::write_region(&readme, "fps", &compact(&counts)) {
+            eprintln!("xtask: fps: {e}");
+            return ExitCode::FAILURE;
+        }
+        println!("fps: wrote the fps region of {}", readme.display());
     }
     ExitCode::SUCCESS
 }

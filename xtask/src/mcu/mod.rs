@@ -28,6 +28,7 @@ use clap::Args;
 use crate::cmd::root;
 
 pub use band_counts::{band_counts, BandCounts};
+pub(crate) use bands::write_region;
 pub use cores::cores;
 pub use report::report_mcu;
 pub use scenes::mcu;
