@@ -7,6 +7,9 @@
 //!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges; [`cube_mip`]:
 //!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD
 //!   ([`SeamlessMipCubeMap`]: trilinear and seamless on every level).
+//! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
+//!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
+//!   detail per pixel, both times a vertex colour.
 //! * [`sphere`]: [`SphereMap`], the seeds' sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
@@ -55,6 +58,7 @@ pub mod angles;
 pub mod convolve;
 pub mod cube;
 pub mod cube_mip;
+pub mod direction;
 pub mod latlong;
 pub mod reflect;
 pub mod seamless;
@@ -62,6 +66,7 @@ pub mod seamless;
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
+pub use direction::{Direction, DirectionMip, WHITE};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};

@@ -33,7 +33,7 @@ use crate::Error;
 mod lod;
 mod sampler;
 
-pub use lod::{lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
+pub use lod::{direction_lambda, lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
 pub(crate) use sampler::footprints_needed;
 pub use sampler::{
     lerp565, DynMip, LinearMipmapNearest, Mipmapped, NearestMipmapLinear, NearestMipmapNearest,

@@ -1,0 +1,134 @@
+//! A cube map indexed by an interpolated direction (GL's `texture(samplerCube, dir)` with
+//! `dir` a varying): sky boxes, and per-vertex reflections with mipmaps. The texel is
+//! multiplied by an interpolated vertex colour (GL's `texel * colour`; give white for the
+//! texel alone).
+//!
+//! * [`Direction`]: any [`EnvLookup`] (no level of detail).
+//! * [`DirectionMip`]: a mipmapped cube map ([`EnvLookupLod`]) with GL's cube-map level of
+//!   detail computed by the span loop at every pixel (or span, or triangle, as
+//!   [`Lod::granularity`] says) from the screen derivatives of the direction on the face
+//!   the pixel's direction selects ([`Shader::LOD_DIRECTION`],
+//!   [`direction_lambda`](crate::texture::direction_lambda)). Exact for a
+//!   perspective-correct direction whatever angle a triangle spans: a full-screen sky of
+//!   two triangles gets the same levels as one of many. Its cost over level 0: per pixel,
+//!   two 3-component cross terms and three `log2` lookups.
+//!
+//! # Formats
+//!
+//! Varyings: `dx, dy, dz` (the direction, any common scale: the triangle hook rescales the
+//! three vertices' directions together to 24 significant bits, as
+//! [`ReflectPerVertex`](super::ReflectPerVertex) does), then `r, g, b` in Q8.16 (`256 << 16`
+//! is 1.0, clamped to `0..=1.0` per pixel, as [`Modulate`](crate::shading::Modulate)).
+//!
+//! # Example
+//!
+//! ```
+//! use fixel::prelude::*;
+//! use fixel::math::fx;
+//! use fixel::pipeline::{DepthLess, Exact};
+//! use fixel::shading::env::{DirectionMip, MipCubeMap, WHITE};
+//! use fixel::texture::{chain_len, generate_mips, Lod, MipTexture, Trilinear};
+//!
+//! let mut chains = [[Rgb565::new(0, 0, 0); 85]; 6];
+//! for (i, c) in chains.iter_mut().enumerate() {
+//!     c[..64].fill(Rgb565::new(5 * i as u8, 40, 10));
+//!     generate_mips(c, 8, 8, 4)?;
+//! }
+//! let faces = [0, 1, 2, 3, 4, 5].map(|i| MipTexture::new(&chains[i], 8, 8, 4).unwrap());
+//! let map = MipCubeMap::new(&faces, Trilinear::default())?;
+//! let sky = DirectionMip { map, lod: Lod::default() };
+//!
+//! // A full-screen quad at the far side of the view, its direction the view ray.
+//! let one = 1 << 16;
+//! let v = |x: i32, y: i32| {
+//!     Vertex::new([x, y, 0, one].map(fixel::math::Fx::from_bits), {
+//!         let [r, g, b] = WHITE;
+//!         [x, -y, -one, r, g, b]
+//!     })
+//! };
+//! let quad = [[v(-one, -one), v(one, -one), v(one, one)], [v(-one, -one), v(one, one), v(-one, one)]];
+//! let draw = ShadedDraw::<_, Exact, DepthLess>::new(sky, Viewport::new(0, 0, 32, 32)?, Cull::None)?;
+//! let (mut color, mut depth) = ([Rgb565::default(); 32 * 32], [0u16; 32 * 32]);
+//! let mut frame = Frame::new(&mut color, 32, 32)?.with_depth(&mut depth)?;
+//! assert_eq!(draw.clip_triangles(&quad, &mut frame)?, 32 * 32);
+//! # Ok::<(), fixel::Error>(())
+//! ```
+
+use super::cube::EnvLookup;
+use super::cube_mip::EnvLookupLod;
+use super::reflect::{fit_group, VARYING_BITS};
+use crate::color::modulate_rgb;
+use crate::shading::{q8, Fragment, Shader};
+use crate::texture::{Lod, LodGranularity};
+
+/// The vertex colour that leaves the texel as it is: `r, g, b` = 1.0 in Q8.16.
+pub const WHITE: [i32; 3] = [256 << 16; 3];
+
+/// A cube map (any [`EnvLookup`]) read in an interpolated direction, times the vertex
+/// colour. Varyings: `dx, dy, dz, r, g, b` (see the module docs).
+#[derive(Clone, Copy, Debug)]
+pub struct Direction<M>(pub M);
+
+impl<M: EnvLookup> Shader for Direction<M> {
+    type Varyings = [i32; 6];
+    type Triangle = ();
+
+    #[inline]
+    fn triangle(&self, v: &mut [[i32; 6]; 3]) {
+        fit_group::<6, VARYING_BITS>(v, 0);
+    }
+
+    #[inline(always)]
+    fn shade(&self, f: &Fragment<[i32; 6], ()>) -> Option<u16> {
+        let [x, y, z, r, g, b] = f.varyings;
+        Some(modulate_rgb(self.0.lookup([x, y, z]), q8(r), q8(g), q8(b)))
+    }
+}
+
+/// A mipmapped cube map read in an interpolated direction with GL's cube-map level of
+/// detail, times the vertex colour. Varyings: `dx, dy, dz, r, g, b` (see the module docs).
+#[derive(Clone, Copy, Debug)]
+pub struct DirectionMip<M> {
+    /// The mipmapped cube map ([`MipCubeMap`](super::MipCubeMap) or its
+    /// [`seamless`](super::MipCubeMap::seamless) form).
+    pub map: M,
+    /// Bias, clamps (Q8.8) and where `lambda` is computed.
+    pub lod: Lod,
+}
+
+impl<M: EnvLookupLod> DirectionMip<M> {
+    /// The level of detail (Q8.8, after bias and clamps) for the span loop's `lambda` of
+    /// the direction (half-face units): the face size's `log2 - 1` levels added.
+    #[inline(always)]
+    pub fn lambda(&self, direction_lambda: i32) -> i32 {
+        let l = self.map.log2_size() as i32 - 1;
+        direction_lambda
+            .saturating_add(l * 256)
+            .saturating_add(self.lod.bias)
+            .clamp(self.lod.min, self.lod.max.max(self.lod.min))
+    }
+}
+
+impl<M: EnvLookupLod> Shader for DirectionMip<M> {
+    type Varyings = [i32; 6];
+    type Triangle = ();
+    const LOD: bool = true;
+    const LOD_DIRECTION: Option<usize> = Some(0);
+
+    #[inline(always)]
+    fn lod_granularity(&self) -> LodGranularity {
+        self.lod.granularity
+    }
+
+    #[inline]
+    fn triangle(&self, v: &mut [[i32; 6]; 3]) {
+        fit_group::<6, VARYING_BITS>(v, 0);
+    }
+
+    #[inline(always)]
+    fn shade(&self, f: &Fragment<[i32; 6], ()>) -> Option<u16> {
+        let [x, y, z, r, g, b] = f.varyings;
+        let texel = self.map.lookup_lod([x, y, z], self.lambda(f.lambda));
+        Some(modulate_rgb(texel, q8(r), q8(g), q8(b)))
+    }
+}
