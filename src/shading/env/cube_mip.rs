@@ -98,6 +98,11 @@ impl<'a, S: TexSampler> MipCubeMap<'a, S> {
         self.faces
     }
 
+    /// The sampler.
+    pub fn sampler(&self) -> S {
+        self.sampler
+    }
+
     /// A mipmapped cube map over six chains (GL order), sampled with `sampler`.
     ///
     /// # Errors

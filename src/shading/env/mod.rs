@@ -4,9 +4,10 @@
 //!
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
 //!   major axis through a reciprocal table, nearest or bilinear within a face;
-//!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges; [`cube_mip`]:
-//!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD
-//!   ([`SeamlessMipCubeMap`]: trilinear and seamless on every level).
+//!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges (nearest stays
+//!   nearest); [`cube_mip`]: [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per
+//!   face with GL's LOD ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
+//!   filters kept).
 //! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
 //!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
 //!   detail per pixel, both times a vertex colour.

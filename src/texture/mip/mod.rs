@@ -34,7 +34,7 @@ mod lod;
 mod sampler;
 
 pub use lod::{direction_lambda, lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
-pub(crate) use sampler::footprints_needed;
+pub(crate) use sampler::{footprints_needed, linear_levels};
 pub use sampler::{
     lerp565, DynMip, LinearMipmapNearest, Mipmapped, NearestMipmapLinear, NearestMipmapNearest,
     TexSampler, Trilinear,
