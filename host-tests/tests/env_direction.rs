@@ -327,6 +327,29 @@ fn wide_view_pixels_match_reference() {
     }
 }
 
+/// `EnvVertices::per_vertex_colour` is `per_vertex`'s reflection and the colour.
+#[test]
+fn per_vertex_colour_vertices() {
+    use fixel::math::{Angle, Mat4, Vec3};
+    use fixel::shading::env::EnvVertices;
+    let proj = Mat4::perspective(
+        Angle::from_degrees(Fx::from_num(45)),
+        Fx::from_num(1),
+        Fx::from_num(0.5),
+        Fx::from_num(20),
+    )
+    .unwrap();
+    let s = EnvVertices::new(&Mat4::IDENTITY, &proj, Vec3::ZERO);
+    let (p, n) = (Vec3::from_num(0.5, -1, -4), Vec3::from_num(0, 0.6, 0.8));
+    let a = s.per_vertex(p, n).unwrap();
+    let b = s.per_vertex_colour(p, n, [1, 2, 3]).unwrap();
+    assert_eq!(a.position, b.position);
+    assert_eq!(
+        b.varyings,
+        [a.varyings[0], a.varyings[1], a.varyings[2], 1, 2, 3]
+    );
+}
+
 /// Zero directions, opposite directions across one triangle (the direction passes through
 /// zero inside it) and a direction per vertex along each axis: no panic, every pixel drawn.
 #[test]

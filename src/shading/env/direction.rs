@@ -4,6 +4,7 @@
 //! texel alone).
 //!
 //! * [`Direction`]: any [`EnvLookup`] (no level of detail).
+//! * [`EnvVertices::per_vertex_colour`]: their vertices for a reflection per vertex.
 //! * [`DirectionMip`]: a mipmapped cube map ([`EnvLookupLod`]) with GL's cube-map level of
 //!   detail computed by the span loop at every pixel (or span, or triangle, as
 //!   [`Lod::granularity`] says) from the screen derivatives of the direction on the face
@@ -56,8 +57,10 @@
 
 use super::cube::EnvLookup;
 use super::cube_mip::EnvLookupLod;
-use super::reflect::{fit_group, VARYING_BITS};
+use super::reflect::{fit_group, EnvVertices, VARYING_BITS};
 use crate::color::modulate_rgb;
+use crate::geometry::Vertex;
+use crate::math::Vec3;
 use crate::shading::{q8, Fragment, Shader};
 use crate::texture::{Lod, LodGranularity};
 
@@ -130,5 +133,20 @@ impl<M: EnvLookupLod> Shader for DirectionMip<M> {
         let [x, y, z, r, g, b] = f.varyings;
         let texel = self.map.lookup_lod([x, y, z], self.lambda(f.lambda));
         Some(modulate_rgb(texel, q8(r), q8(g), q8(b)))
+    }
+}
+
+impl EnvVertices {
+    /// A vertex for [`Direction`] or [`DirectionMip`] reading the reflection per vertex:
+    /// varyings the unit `r` in Q14 ([`reflect_unit`](super::reflect_unit), world space)
+    /// and `colour` (`r, g, b` Q8.16, [`WHITE`] for the texel alone). On a flat mirror `r` is linear across each
+    /// triangle, so the interpolated `r` and [`DirectionMip`]'s level of detail are exact;
+    /// on a curved one `r` is interpolated (see [`ReflectPerVertex`](super::ReflectPerVertex)).
+    /// `None` when a component overflows.
+    pub fn per_vertex_colour(&self, p: Vec3, n: Vec3, colour: [i32; 3]) -> Option<Vertex<6>> {
+        let v = self.per_vertex(p, n)?;
+        let [x, y, z] = v.varyings;
+        let [r, g, b] = colour;
+        Some(Vertex::new(v.position, [x, y, z, r, g, b]))
     }
 }
