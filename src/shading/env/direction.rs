@@ -11,8 +11,24 @@
 //!   the pixel's direction selects ([`Shader::LOD_DIRECTION`],
 //!   [`direction_lambda`](crate::texture::direction_lambda)). Exact for a
 //!   perspective-correct direction whatever angle a triangle spans: a full-screen sky of
-//!   two triangles gets the same levels as one of many. Its cost over level 0: per pixel,
-//!   two 3-component cross terms and three `log2` lookups.
+//!   two triangles gets the same levels as one of many. Its cost: per pixel, two
+//!   3-component cross terms and three `log2` lookups.
+//!
+//! # Cost
+//!
+//! The benchmark sphere mirroring the 64-texel sky (2,208 triangles, exact perspective,
+//! 8-row bands, 25,976 pixels), the reflection per vertex, measured under QEMU
+//! (instructions per pixel, Cortex-M4F / Cortex-M0+ / RV32IMC):
+//!
+//! | shader | M4F | M0+ | RV32IMC |
+//! |---|---:|---:|---:|
+//! | [`ReflectPerVertex`](super::ReflectPerVertex), bilinear | 914.6 | 2040.1 | 1233.7 |
+//! | [`DirectionMip`], trilinear, LOD per span | 1290.7 | 2679.5 | 1731.3 |
+//! | [`DirectionMip`], trilinear, LOD per pixel | 1556.9 | 3267.5 | 2078.3 |
+//!
+//! Per span, `lambda` is the span's first pixel's: exact along a span whose direction
+//! turns little, 0.49 level off on average (p99 1.84) on a 127-degree view drawn as two
+//! triangles, 0.09 (p99 0.58) as an 8 x 8 grid.
 //!
 //! # Formats
 //!
