@@ -57,7 +57,8 @@ fn main() {
         fs::write(out.join(format!("t{w}x{h}.bin")), bytes).unwrap();
     }
 
-    // `T(64, 64)` with its full mip chain (7 levels, fixel's own 2 x 2 box filter).
+    // `T(64, 64)` with its full mip chain (7 levels, fixel's `generate_mips`: each level
+    // from level 0, rounded once).
     {
         use fixel::texture::{chain_len, full_levels};
         let levels = full_levels(64, 64);

@@ -123,7 +123,7 @@ pub fn reference_per_pixel<const N: usize>(
     })
 }
 
-/// The six sky faces of side `size` with full mip chains (fixel's box filter), one buffer
+/// The six sky faces of side `size` with full mip chains (fixel's `generate_mips`), one buffer
 /// per face.
 pub fn sky_chains(size: u32) -> Vec<Vec<Rgb565>> {
     let levels = full_levels(size, size);

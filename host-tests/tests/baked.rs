@@ -1,41 +1,68 @@
-//! `cargo xtask bake` output compiles and equals fixel's run-time chain: `baked/checker.rs`
+//! `cargo xtask bake` output compiles and is the full-precision chain of its 8-bit image: `baked/checker.rs`
 //! was baked from `baked/checker.png` (16 x 8, full chain) and is checked for freshness by
 //! xtask's own test.
 
-use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use fixel::texture::chain_len;
 use fixel::texture::{generate_mips, MipTexture};
 use std::io::BufReader;
 
 include!("baked/checker.rs");
 
-/// The PNG decoded independently, rounded to RGB565 as the bake documents.
-fn decode(path: &str) -> (u32, u32, Vec<Rgb565>) {
+/// The PNG decoded independently: 8-bit RGB pixels.
+fn decode(path: &str) -> (u32, u32, Vec<[u8; 3]>) {
     let file = std::fs::File::open(path).unwrap();
     let mut reader = png::Decoder::new(BufReader::new(file)).read_info().unwrap();
     let mut buf = vec![0; reader.output_buffer_size().unwrap()];
     let info = reader.next_frame(&mut buf).unwrap();
     assert_eq!(info.color_type, png::ColorType::Rgb);
-    let q = |v: u8, max: u32| ((u32::from(v) * max + 127) / 255) as u8;
     let px = buf[..info.buffer_size()]
         .chunks(3)
-        .map(|p| Rgb565::new(q(p[0], 31), q(p[1], 63), q(p[2], 31)))
+        .map(|p| [p[0], p[1], p[2]])
         .collect();
     (info.width, info.height, px)
 }
 
+/// The baked chain against an f64 chain from the 8-bit image: level 0 rounded to RGB565,
+/// every level `k` the mean of the source pixels it covers, rounded once. The run-time
+/// `generate_mips` (from the RGB565 level 0) agrees within one LSB.
 #[test]
-fn baked_chain_equals_generate_mips() {
-    let (w, h, base) = decode(concat!(
+fn baked_chain_is_the_full_precision_mean() {
+    let (w, h, src) = decode(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/baked/checker.png"
     ));
     assert_eq!((w, h, CHECKER_LEVELS), (CHECKER_WIDTH, CHECKER_HEIGHT, 5));
+    let mut want = Vec::new();
+    for k in 0..CHECKER_LEVELS {
+        let (dw, dh) = ((w >> k).max(1), (h >> k).max(1));
+        let (bw, bh) = (w / dw, h / dh);
+        for j in 0..dh {
+            for i in 0..dw {
+                let mut sum = [0f64; 3];
+                for y in j * bh..(j + 1) * bh {
+                    for x in i * bw..(i + 1) * bw {
+                        for c in 0..3 {
+                            sum[c] += f64::from(src[(y * w + x) as usize][c]);
+                        }
+                    }
+                }
+                let q = |c: usize, max: f64| {
+                    (sum[c] / f64::from(bw * bh) * max / 255.0 + 0.5).floor() as u8
+                };
+                want.push(Rgb565::new(q(0, 31.0), q(1, 63.0), q(2, 31.0)));
+            }
+        }
+    }
+    assert_eq!(CHECKER_TEXELS.as_slice(), want.as_slice());
     let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(w, h, CHECKER_LEVELS)];
-    chain[..base.len()].copy_from_slice(&base);
+    chain[..(w * h) as usize].copy_from_slice(&want[..(w * h) as usize]);
     generate_mips(&mut chain, w, h, CHECKER_LEVELS).unwrap();
-    assert_eq!(chain.len(), CHECKER_TEXELS.len());
-    assert_eq!(chain.as_slice(), CHECKER_TEXELS.as_slice());
+    for (a, b) in chain.iter().zip(CHECKER_TEXELS.iter()) {
+        let ch = |c: &Rgb565| [c.r(), c.g(), c.b()].map(i16::from);
+        let (a, b) = (ch(a), ch(b));
+        assert!((0..3).all(|c| (a[c] - b[c]).abs() <= 1), "{a:?} {b:?}");
+    }
     let mips = MipTexture::new(
         &CHECKER_TEXELS,
         CHECKER_WIDTH,

@@ -230,3 +230,55 @@ proptest! {
         prop_assert!(e.iter().all(|&x| x <= 1), "{:?}: {:04x} vs {:04x}", d, got, want);
     }
 }
+
+/// The filter chosen survives `.seamless()`: nearest stays nearest (it never reads past a
+/// face edge, so it is GL's clamped nearest everywhere), a mipmapped map keeps its filter
+/// within a level and between levels (`LINEAR_MIPMAP_NEAREST` never blends two levels,
+/// `NEAREST_MIPMAP_NEAREST` equals its clamped form).
+#[test]
+fn seamless_keeps_the_filter() {
+    use fixel::shading::env::{EnvLookupLod, MipCubeMap};
+    use fixel::texture::{
+        full_levels, LinearMipmapNearest, MipTexture, Nearest, NearestMipmapNearest, Trilinear,
+    };
+    let f = faces(SIZE);
+    let nearest = cube(&f, SIZE, Nearest);
+    let seamless = nearest.seamless();
+    for d in directions(20_000) {
+        assert_eq!(seamless.lookup(d), nearest.lookup(d), "{d:?}");
+    }
+    // Chains whose levels are plain colours, level k of face i: (4 i + k) in red, k in blue.
+    let levels = full_levels(16, 16);
+    let chains: Vec<Vec<Rgb565>> = (0..6u8)
+        .map(|i| {
+            (0..levels)
+                .flat_map(|k| {
+                    let side = (16 >> k) as usize;
+                    vec![Rgb565::new(4 * i + k as u8, 0, 3 * k as u8); side * side]
+                })
+                .collect()
+        })
+        .collect();
+    let m: [MipTexture<'_>; 6] =
+        core::array::from_fn(|i| MipTexture::new(&chains[i], 16, 16, levels).unwrap());
+    let nn = MipCubeMap::new(&m, NearestMipmapNearest::default()).unwrap();
+    let ln = MipCubeMap::new(&m, LinearMipmapNearest::default()).unwrap();
+    let tri = MipCubeMap::new(&m, Trilinear::default()).unwrap();
+    for d in directions(4_000) {
+        for lambda in [-300, 0, 100, 129, 300, 383, 640, 900, 2000] {
+            assert_eq!(
+                nn.seamless().lookup_lod(d, lambda),
+                nn.lookup_lod(d, lambda),
+                "{d:?} {lambda}"
+            );
+        }
+    }
+    // Away from the edges every face is one colour per level: LINEAR_MIPMAP_NEAREST reads
+    // one level (lambda 1.4 -> level 1), trilinear blends levels 1 and 2.
+    let centre = [1 << 20, 3, -7]; // +X
+    let one = |k: u8| Rgb565::new(k, 0, 3 * k).into_storage();
+    assert_eq!(ln.seamless().lookup_lod(centre, 358), one(1));
+    let blended = tri.seamless().lookup_lod(centre, 358);
+    assert_ne!(blended, one(1));
+    assert_ne!(blended, one(2));
+}

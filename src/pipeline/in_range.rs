@@ -109,6 +109,7 @@ impl<S: Shader> Shader for InRange<S> {
     const BLENDS: bool = S::BLENDS;
     const SMALL: bool = S::SMALL;
     const LOD: bool = S::LOD;
+    const LOD_DIRECTION: Option<usize> = S::LOD_DIRECTION;
     const RANGE_VARYING: Option<usize> = S::RANGE_VARYING;
 
     #[inline(always)]

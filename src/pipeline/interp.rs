@@ -15,8 +15,8 @@ use super::recip::{mul_q16, recip_q30};
 use super::setup::TriSetup;
 use super::stages::ProjKind;
 use crate::math::div::mul_wide_signed;
-use crate::shading::Varyings;
-use crate::texture::mip::lambda_q8;
+use crate::shading::{Shader, Varyings};
+use crate::texture::mip::{direction_lambda, lambda_q8};
 
 #[inline(always)]
 fn get<V: Varyings>(v: &V, k: usize) -> i32 {
@@ -31,16 +31,47 @@ fn add<V: Varyings>(v: &mut V, d: &V) {
     }
 }
 
-/// `lambda` of an affine mapping: constant derivatives, straight from the planes.
+/// The varying pair whose level of detail the span loop computes for shader `S`: its
+/// [`Shader::TEXCOORDS`] pair, or `(a, a)` for a direction at varyings `a..a + 3`
+/// ([`Shader::LOD_DIRECTION`]). A pair of equal indices always names a direction.
 #[inline(always)]
-pub(crate) fn affine_lambda<V: Varyings>(s: &TriSetup<V>, a: usize, b: usize) -> i32 {
+pub(crate) fn lod_pair<S: Shader>() -> Option<(usize, usize)> {
+    match S::LOD_DIRECTION {
+        Some(a) => Some((a, a)),
+        None => S::TEXCOORDS,
+    }
+}
+
+/// Three varyings from `a` (zero past the end).
+#[inline(always)]
+fn get3<V: Varyings>(v: &V, a: usize) -> [i32; 3] {
+    [get(v, a), get(v, a + 1), get(v, a + 2)]
+}
+
+/// `lambda` of an affine mapping: constant derivatives, straight from the planes. A
+/// direction (`a == b`) also needs its value at the pixel, `at()`.
+#[inline(always)]
+pub(crate) fn affine_lambda<V: Varyings>(
+    s: &TriSetup<V>,
+    at: impl FnOnce() -> V,
+    a: usize,
+    b: usize,
+) -> i32 {
+    if a == b {
+        return direction_lambda(get3(&at(), a), get3(&s.dx, a), get3(&s.dy, a));
+    }
     lambda_q8(get(&s.dx, a), get(&s.dx, b), get(&s.dy, a), get(&s.dy, b))
 }
 
 /// `lambda` of a perspective mapping at a pixel with interpolants `h`: the derivative of
-/// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`).
+/// `u = s / q` along x is `(s_x - u q_x) / q` (and likewise along y and for `v`). For a
+/// direction (`a == b`) the numerators `d q` are themselves the direction and linear in
+/// screen space, so [`direction_lambda`] takes them and their planes' steps as they are.
 #[inline(always)]
 pub(super) fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize, b: usize) -> i32 {
+    if a == b {
+        return direction_lambda(get3(&h.s, a), get3(&s.dx, a), get3(&s.dy, a));
+    }
     let r32 = recip_q30(h.q);
     let r = i64::from(r32);
     let m = |x: i32| mul_q16(x, r32);
@@ -58,7 +89,7 @@ pub(super) fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize,
 /// per-triangle level of detail).
 pub(crate) fn lambda_at<V: Varyings>(s: &TriSetup<V>, x: i32, y: i32, a: usize, b: usize) -> i32 {
     if s.affine {
-        affine_lambda(s, a, b)
+        affine_lambda(s, || s.at(x, y), a, b)
     } else {
         hyper_lambda(s, &Hyper::at(s, x, y), a, b)
     }
@@ -111,7 +142,8 @@ impl<V: Varyings> Hyper<V> {
 /// Where the span loop wants varyings and levels of detail filled.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FillSpec {
-    /// The texture-coordinate pair, when the shader has one.
+    /// The texture-coordinate pair, when the shader has one ([`lod_pair`]: equal indices
+    /// name a direction).
     pub pair: (usize, usize),
     /// Fill a level of detail per pixel (per segment for the linear modes).
     pub lod: bool,
@@ -435,7 +467,11 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
             let slope = chord_slope(&first, &end, |diff| scale_q16_short(diff, inv));
             (first, slope, lambda)
         } else {
-            let lambda = if spec.lod { affine_lambda(s, a, b) } else { 0 };
+            let lambda = if spec.lod {
+                affine_lambda(s, || s.at(x, y), a, b)
+            } else {
+                0
+            };
             (s.at(x, y), s.dx, lambda)
         };
         unshift_piece(&mut start, &mut slope, spec);
@@ -453,7 +489,7 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
         if SUBDIVIDED {
             hyper_lambda(s, &self.next, a, b)
         } else {
-            affine_lambda(s, a, b)
+            affine_lambda(s, || self.cur, a, b)
         }
     }
 
@@ -466,7 +502,8 @@ impl<V: Varyings, const SUBDIVIDED: bool> Linear<V, SUBDIVIDED> {
             self.shifted = true;
             unshift_piece(&mut self.cur, &mut self.slope, spec);
             if spec.lod {
-                self.seg_lambda = affine_lambda(s, spec.pair.0, spec.pair.1);
+                let cur = self.cur;
+                self.seg_lambda = affine_lambda(s, || cur, spec.pair.0, spec.pair.1);
             }
         }
         if self.in_seg == 0 {

@@ -7,7 +7,7 @@
 //! uses links exactly one copy.
 
 use super::in_range::{Proven, RangeProof, Unproven};
-use super::interp::lambda_at;
+use super::interp::{lambda_at, lod_pair};
 use super::setup::{centroid, setup, setup_inline, TriSetup};
 use super::setup_cache::SetupSlot;
 use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
@@ -203,7 +203,7 @@ where
         return 0;
     };
     let mut tri_lambda = 0;
-    if let Some((a, b)) = S::TEXCOORDS {
+    if let Some((a, b)) = lod_pair::<S>() {
         if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
             let (cx, cy) = centroid(&pos, vp);
             tri_lambda = lambda_at(setup, cx, cy, a, b);

@@ -108,7 +108,8 @@ pub struct Fragment<V, T> {
     pub depth: u16,
     /// Level of detail of the varying pair [`Shader::TEXCOORDS`]: `log2` of the larger of
     /// the pair's screen derivative lengths (Heckbert), Q8.8 (256 = one level), before any
-    /// bias; at the shader's [`Shader::lod_granularity`]. 0 unless [`Shader::LOD`].
+    /// bias; at the shader's [`Shader::lod_granularity`]. 0 unless [`Shader::LOD`]. For a
+    /// shader with [`Shader::LOD_DIRECTION`], the cube-map level of detail of that direction.
     pub lambda: i32,
     /// The per-triangle data returned by [`Shader::triangle`].
     pub triangle: T,
@@ -154,6 +155,16 @@ pub trait Shader: Copy {
     /// True when the shader reads [`Fragment::lambda`] (mipmapping): the span loop then
     /// computes it from the [`Shader::TEXCOORDS`] pair.
     const LOD: bool = false;
+
+    /// The first of three varyings holding a direction (any common scale; a cube-map
+    /// lookup's), when [`Fragment::lambda`] is to be GL's cube-map level of detail of that
+    /// direction rather than the [`Shader::TEXCOORDS`] pair's: `log2` of the larger screen
+    /// derivative length of the face coordinates `(sc / ma, tc / ma)` on the face the
+    /// pixel's direction selects, in units of half a face (a face of `2^l` texels adds
+    /// `l - 1` levels), exact for a perspective-correct direction at every pixel
+    /// ([`direction_lambda`](crate::texture::direction_lambda)). Only with
+    /// [`Shader::LOD`]. Default `None`.
+    const LOD_DIRECTION: Option<usize> = None;
 
     /// Where [`Fragment::lambda`] is computed (only when [`Shader::LOD`]).
     #[inline(always)]

@@ -29,8 +29,8 @@ pub(crate) use footprint_sized::check_level0_size;
 pub use footprint_sized::BilinearFootprintSized;
 pub use height::{generate_height_mips, HeightMap};
 pub use mip::{
-    chain_len, full_levels, generate_mips, lambda_q8, lerp565, level_side, log2_q8, DynMip,
-    LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
+    chain_len, direction_lambda, full_levels, generate_mips, lambda_q8, lerp565, level_side,
+    log2_q8, DynMip, LinearMipmapNearest, Lod, LodGranularity, MipFilter, MipTexture, Mipmapped,
     NearestMipmapLinear, NearestMipmapNearest, TexSampler, Trilinear, MAX_LEVELS,
 };
 pub use palette::{

@@ -124,7 +124,8 @@ fn from_rgb565(f: &[fixel::Rgb565]) -> Vec<u16> {
     f.iter().map(|c| c.into_storage()).collect()
 }
 
-/// Each face's full mip chain (`fixel::texture::generate_mips`, GL's box filter), raw.
+/// Each face's full mip chain (`fixel::texture::generate_mips`: every level the mean of
+/// the level-0 texels it covers, rounded once), raw.
 fn mip_chains(s: u32, faces: &[Vec<u16>]) -> Result<Vec<Vec<u16>>, String> {
     let levels = fixel::texture::full_levels(s, s);
     faces
@@ -254,7 +255,8 @@ pub fn run(args: &CubeArgs) -> Result<(), BakeError> {
             &mut src,
             &format!("{name}_MIPS"),
             &format!(
-                "Each face with its full mip chain ({levels} levels, GL's box filter): \
+                "Each face with its full mip chain ({levels} levels, each texel the rounded \
+                 mean of the level-0 texels it covers): \
                  `fixel::texture::MipTexture::new(&{name}_MIPS[i], {s}, {s}, {levels})`, then \
                  `fixel::shading::env::MipCubeMap::new`."
             ),

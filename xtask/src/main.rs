@@ -161,8 +161,8 @@ enum Command {
     /// Bake a power-of-two PNG into a Rust source file of RGB565 texels and their mip chain
     ///
     /// Bakes a power-of-two PNG (sides up to 4096) into a Rust source file: RGB565
-    /// texels (rounded to nearest) and their mip chain (2x2 box filter, the same as
-    /// fixel's generate_mips) as `pub static NAME_TEXELS`, with NAME_WIDTH,
+    /// texels (rounded to nearest) and their mip chain (each texel the mean of the
+    /// 8-bit pixels it covers, rounded once) as `pub static NAME_TEXELS`, with NAME_WIDTH,
     /// NAME_HEIGHT, NAME_LEVELS.
     #[command(verbatim_doc_comment)]
     Bake(bake::BakeArgs),

@@ -268,6 +268,56 @@ pub fn cube_sample_trilinear(
     )
 }
 
+/// GL's cube-map level of detail (OpenGL ES 3.2, 8.13 and 8.14) of a direction field, in
+/// closed form: `d` the direction at the pixel (any length), `ddx`, `ddy` its derivatives
+/// per pixel right and down, `size` the face side in texels. On the face `d` selects, with
+/// `ma` the major component and `c` a minor one, `d(c / ma) = (c' ma − c ma') / ma²`, and
+/// `s = (sc / ma + 1) / 2` makes a texel derivative `size / 2` times that; `lambda` is
+/// `log2` of the longer of the x and y derivative vectors (Heckbert), before any bias.
+pub fn cube_lambda(d: [f64; 3], ddx: [f64; 3], ddy: [f64; 3], size: f64) -> f64 {
+    let [ax, ay, az] = d.map(f64::abs);
+    let (m, i, j) = if ax >= ay && ax >= az {
+        (0, 1, 2)
+    } else if ay >= az {
+        (1, 0, 2)
+    } else {
+        (2, 0, 1)
+    };
+    let rho = |g: [f64; 3]| {
+        let q = |c: usize| (g[c] * d[m] - d[c] * g[m]) / (d[m] * d[m]);
+        0.5 * size * q(i).hypot(q(j))
+    };
+    rho(ddx).max(rho(ddy)).log2()
+}
+
+/// GL's trilinear cube-map lookup (bilinear within a level, linear between levels,
+/// `CLAMP_TO_EDGE`) of direction `d` at level of detail `lambda` (bias included): the
+/// face of `d`, the magnification filter on level 0 for `lambda <= 0`.
+pub fn cube_sample_lod(
+    chains: &[super::mip::RefMipChain; 6],
+    d: [f64; 3],
+    lambda: f64,
+) -> [f64; 3] {
+    let (f, s, t) = cube_face_st(d);
+    let chain = &chains[f];
+    let sel = super::mip::select(lambda, super::RefMip::Linear, chain.levels.len() as u32);
+    let at = |k: u32| {
+        sample(
+            &chain.levels[k as usize],
+            [s, t],
+            RefFilter::Bilinear,
+            RefWrap::ClampToEdge,
+            RefWrap::ClampToEdge,
+        )
+    };
+    let a = at(sel.a);
+    if sel.b == sel.a || sel.frac == 0.0 {
+        return a;
+    }
+    let b = at(sel.b);
+    core::array::from_fn(|c| (1.0 - sel.frac) * a[c] + sel.frac * b[c])
+}
+
 /// Sphere-map `(s, t)` of direction `d`: `r̂ = d / |d|`,
 /// `m = 2 sqrt(r̂x² + r̂y² + (r̂z + 1)²)`, `s = r̂x / m + 1/2`, `t = r̂y / m + 1/2`. At the
 /// rim singularity (`m = 0`, `r̂ = (0, 0, -1)`) and for the zero direction: fixel's

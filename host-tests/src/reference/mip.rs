@@ -1,10 +1,10 @@
 //! Mipmapping in the reference renderer, written from Williams' pyramid and
 //! OpenGL ES 3.2's mipmapping, in f64 (it shares no code with fixel's `texture::mip`).
 //!
-//! * Chain: level `k` is `max(1, w >> k) x max(1, h >> k)`. The chain is
-//!   *data*, so it is built with the same integer rule as fixel's: a 2 x 2
-//!   box per RGB565 channel, `(a + b + c + d + 2) >> 2`; where the source has
-//!   a side of 1 the two texels along the other side, `(a + b + 1) >> 1`.
+//! * Chain: level `k` is `max(1, w >> k) x max(1, h >> k)`, each texel the
+//!   mean (f64) of the block of level-0 texels it covers, per RGB565 channel,
+//!   rounded once (half up): level 0 at full precision, as GL filters its
+//!   levels in 8 bits or more, not a box filter of rounded levels.
 //! * Level of detail: from the exact screen-space derivatives of the texel
 //!   coordinates of level 0 (`ux = du/dx` ...), Heckbert's
 //!   `rho = max(sqrt(ux² + vx²), sqrt(uy² + vy²))`, `lambda = log2 rho`,
@@ -38,49 +38,33 @@ pub fn full_levels(w: u32, h: u32) -> u32 {
     n
 }
 
-/// One level down from `src` by the integer 2 x 2 box (see the module docs).
-pub fn downsample(src: &RefTexture) -> RefTexture {
-    let (w, h) = ((src.width / 2).max(1), (src.height / 2).max(1));
-    let chans = |t: u16| {
-        [
-            u32::from(t >> 11),
-            u32::from((t >> 5) & 63),
-            u32::from(t & 31),
-        ]
-    };
+/// Level `k` of `base`: each texel the mean of the `bw x bh` block of `base` texels it
+/// covers (`bw = width / side_k`), per RGB565 channel, rounded half up once.
+pub fn level_from_base(base: &RefTexture, k: u32) -> RefTexture {
+    let (w, h) = ((base.width >> k).max(1), (base.height >> k).max(1));
+    let (bw, bh) = (base.width / w, base.height / h);
+    let n = f64::from(bw * bh);
     let mut texels = Vec::with_capacity((w * h) as usize);
     for j in 0..h {
         for i in 0..w {
-            let mut taps = Vec::with_capacity(4);
-            // The source texels this texel covers: 2 along each side longer than 1.
-            let xs: Vec<u32> = if src.width > 1 {
-                vec![2 * i, 2 * i + 1]
-            } else {
-                vec![0]
-            };
-            let ys: Vec<u32> = if src.height > 1 {
-                vec![2 * j, 2 * j + 1]
-            } else {
-                vec![0]
-            };
-            for &y in &ys {
-                for &x in &xs {
-                    taps.push(chans(src.texel(x, y)));
+            let mut sum = [0f64; 3];
+            for y in j * bh..(j + 1) * bh {
+                for x in i * bw..(i + 1) * bw {
+                    let t = base.texel(x, y);
+                    sum[0] += f64::from(t >> 11);
+                    sum[1] += f64::from((t >> 5) & 63);
+                    sum[2] += f64::from(t & 31);
                 }
             }
-            let n = taps.len() as u32; // 4, or 2 where a side is 1
-            let avg = |c: usize| {
-                let sum: u32 = taps.iter().map(|t| t[c]).sum();
-                (sum + n / 2) / n
-            };
-            texels.push(((avg(0) << 11) | (avg(1) << 5) | avg(2)) as u16);
+            let q = |c: usize| (sum[c] / n + 0.5).floor() as u16;
+            texels.push((q(0) << 11) | (q(1) << 5) | q(2));
         }
     }
     RefTexture {
         width: w,
         height: h,
         texels,
-        border: src.border,
+        border: base.border,
     }
 }
 
@@ -90,12 +74,8 @@ impl RefMipChain {
         let n = levels
             .unwrap_or_else(|| full_levels(base.width, base.height))
             .max(1);
-        let mut out = vec![base.clone()];
-        while (out.len() as u32) < n {
-            let next = downsample(out.last().expect("non-empty"));
-            out.push(next);
-        }
-        RefMipChain { levels: out }
+        let levels = (0..n).map(|k| level_from_base(base, k)).collect();
+        RefMipChain { levels }
     }
 
     /// A one-level chain (no mipmaps).

@@ -88,6 +88,45 @@ pub fn render_chain(
     img
 }
 
+/// GL's `lambda` (`log2` of Heckbert's `rho`, before any bias) of a `tex_w x tex_h`
+/// texture at every pixel, from the exact derivatives ([`uv_derivatives`]) of the last
+/// triangle covering it (`NaN` where none): the analytic level of detail a mipmapped draw
+/// of `tris` should use. Clipping, culling and projection as [`render_chain`].
+pub fn lambda_map(
+    tris: &[RefTriangle],
+    (tex_w, tex_h): (u32, u32),
+    mode: &RefMode,
+    width: u32,
+    height: u32,
+) -> Vec<f64> {
+    let mut out = vec![f64::NAN; (width * height) as usize];
+    for tri in tris {
+        let noperspective = mode.projection == RefProjection::Affine;
+        for sub in clip::fan(&clip::clip_triangle_with(tri, noperspective)) {
+            let w = sub.0.map(|v| raster::to_window(&v, width, height));
+            let [Some(a), Some(b), Some(c)] = w else {
+                continue;
+            };
+            let v = [a, b, c];
+            let area = raster::signed_area2(&v);
+            let culled = match mode.cull {
+                RefCull::None => false,
+                RefCull::Back => area >= 0.0,
+                RefCull::Front => area < 0.0,
+            };
+            if culled || area == 0.0 {
+                continue;
+            }
+            raster::rasterize(&v, width, height, |x, y, l| {
+                let d = uv_derivatives(&v, l, mode.projection);
+                let d = texel_derivatives(d, tex_w, tex_h);
+                out[(y * width + x) as usize] = mip::rho(d).log2();
+            });
+        }
+    }
+    out
+}
+
 /// Interpolates one attribute of `n` channels at barycentrics `l`.
 fn interpolate<const N: usize>(
     v: &[WindowVertex; 3],

@@ -25,7 +25,7 @@
 //! falls back to the untested loop).
 
 use super::dyn_interp::DynInterp;
-use super::interp::{ExactInterp, Fill, FillSpec, Linear};
+use super::interp::{lod_pair, ExactInterp, Fill, FillSpec, Linear};
 use super::quadratic::Quadratic;
 use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage};
@@ -141,7 +141,7 @@ fn run_linear<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z
     zrow: &mut [u16],
 ) -> u32 {
     let s = &ctx.setup;
-    let pair = S::TEXCOORDS.unwrap_or((0, 1));
+    let pair = lod_pair::<S>().unwrap_or((0, 1));
     let mut it = Linear::<S::Varyings, SUB>::start(s, x, y, out.len() as u32, ctx.log2_n);
     let (lambda, per_piece) = lod_policy(ctx, || it.lambda(s, pair));
     let spec = FillSpec {
@@ -258,7 +258,7 @@ fn run_short<
     // The level of detail at the span's first pixel serves the span and its one piece.
     let at_start = S::LOD && ctx.shader.lod_granularity() != LodGranularity::Triangle;
     let spec = FillSpec {
-        pair: S::TEXCOORDS.unwrap_or((0, 1)),
+        pair: lod_pair::<S>().unwrap_or((0, 1)),
         lod: at_start,
         shift: ctx.coord_shift,
     };
@@ -356,7 +356,7 @@ fn run<S: Shader, C: TargetColor, D: DepthStage, I: Fill<S::Varyings>, const Z: 
     zrow: &mut [u16],
 ) -> u32 {
     let s = &ctx.setup;
-    let pair = S::TEXCOORDS.unwrap_or((0, 1));
+    let pair = lod_pair::<S>().unwrap_or((0, 1));
     let mut it = I::start_as(s, x, y, out.len() as u32, ctx.log2_n, ctx.kind);
     let (lambda, per_pixel) = lod_policy(ctx, || it.lambda(s, pair));
     let spec = FillSpec {

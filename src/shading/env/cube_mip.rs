@@ -13,13 +13,17 @@
 //! [`Lod::granularity`](crate::texture::Lod) says. The lookup itself still uses the exact
 //! per-pixel reflection; only the LOD comes from the projected pair.
 //!
-//! This is a first-order model of `r`'s face coordinates across the triangle: exact for
-//! `lambda` when the face coordinates are projective in screen space, which the
-//! reflection of a curved surface is not. On the benchmark sphere (small triangles) it is
-//! within a fraction of a level of the reference's `lambda` (see `host-tests`). If the
-//! three reflections of a triangle span more than about 80° (`ma` of a vertex at most 1/8
-//! of its largest component, or behind the face plane), the triangle's pair spreads over
-//! `2^13` texels: the coarsest level, which is what such a triangle needs.
+//! This is a first-order model of `r`'s face coordinates across the triangle, on one face
+//! plane per triangle: good on small triangles (on the benchmark sphere within a fraction
+//! of a level of the reference's `lambda`, see `host-tests`), wrong on wide ones (a
+//! 127-degree view as two triangles: 4.7 levels off on average). If the three reflections
+//! of a triangle span more than about 80° (`ma` of a vertex at most 1/8 of its largest
+//! component, or behind the face plane), the triangle's pair spreads over `2^13` texels:
+//! the coarsest level. Where `r` is linear across a triangle (a flat mirror, or a sky:
+//! the direction per vertex), [`DirectionMip`](super::DirectionMip) with the reflection
+//! per vertex ([`EnvVertices::per_vertex`]) has GL's exact per-pixel level of detail at
+//! any angle; the per-pixel reflection of a curved surface needs 9 varyings for that (`n`,
+//! `v` and a direction), one more than a shader has.
 //!
 //! # Formats
 //!
@@ -92,6 +96,11 @@ impl<'a, S: TexSampler> MipCubeMap<'a, S> {
     /// The six chains, GL order.
     pub fn chains(&self) -> &'a [MipTexture<'a>; 6] {
         self.faces
+    }
+
+    /// The sampler.
+    pub fn sampler(&self) -> S {
+        self.sampler
     }
 
     /// A mipmapped cube map over six chains (GL order), sampled with `sampler`.

@@ -4,9 +4,13 @@
 //!
 //! * [`cube`]: [`CubeMap`], six square faces with GL's face selection, the division by the
 //!   major axis through a reciprocal table, nearest or bilinear within a face;
-//!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges; [`cube_mip`]:
-//!   [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per face with GL's LOD
-//!   ([`SeamlessMipCubeMap`]: trilinear and seamless on every level).
+//!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges (nearest stays
+//!   nearest); [`cube_mip`]: [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per
+//!   face with GL's LOD ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
+//!   filters kept).
+//! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
+//!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
+//!   detail per pixel, both times a vertex colour.
 //! * [`sphere`]: [`SphereMap`], GL's sphere map, and [`latlong`]: [`LatLongMap`],
 //!   the equirectangular map, both through table `atan2` ([`angles`]) and fixel's sine
 //!   table: no square root, no divide.
@@ -55,6 +59,7 @@ pub mod angles;
 pub mod convolve;
 pub mod cube;
 pub mod cube_mip;
+pub mod direction;
 pub mod latlong;
 pub mod reflect;
 pub mod seamless;
@@ -63,6 +68,7 @@ pub mod sphere_bake;
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
+pub use direction::{Direction, DirectionMip, WHITE};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};

@@ -17,6 +17,13 @@
 //! GL specification recommends, it is the average of the three other taps (the three
 //! texels that meet at the cube's corner), per channel, rounded.
 //!
+//! # Filters
+//!
+//! The filter chosen is kept: a nearest tap never leaves the face the direction selects,
+//! so seamless nearest is GL's nearest, and a mipmapped map keeps its filter within a
+//! level (nearest or seamless bilinear), on magnification, and between levels (nearest
+//! level or linear blend), as [`TexSampler::filters`] reports them.
+//!
 //! # Cost
 //!
 //! Inside a face (all four taps on it, which is almost every pixel) the lookup is
@@ -46,25 +53,32 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-use super::cube::{CubeMap, EnvLookup};
+use super::cube::{CubeMap, EnvLookup, FaceCoords};
 use super::cube_mip::{EnvLookupLod, MipCubeMap};
+use crate::texture::mip::linear_levels;
 use crate::texture::sample::{blend_q8, split_half};
-use crate::texture::{lerp565, MipTexture, Sampler, TexSampler, Texture};
+use crate::texture::{
+    lerp565, Bilinear, ClampToEdge, Filter, MipFilter, MipTexture, Nearest, Sampler, TexSampler,
+    Texture, Trilinear,
+};
 
-/// A cube map filtered bilinearly across face edges (`TEXTURE_CUBE_MAP_SEAMLESS`). Made by
-/// [`CubeMap::seamless`]; copying it copies six references.
+/// A cube map filtered across face edges (`TEXTURE_CUBE_MAP_SEAMLESS`) with filter `F`
+/// (bilinear reads across edges; nearest never needs to). Made by [`CubeMap::seamless`];
+/// copying it copies six references.
 #[derive(Clone, Copy, Debug)]
-pub struct SeamlessCubeMap<'a> {
+pub struct SeamlessCubeMap<'a, F = Bilinear> {
     faces: [Texture<'a>; 6],
     log2_size: u8,
+    filter: core::marker::PhantomData<F>,
 }
 
 impl<'a, F: Sampler> CubeMap<'a, F> {
-    /// The same faces, filtered bilinearly across face edges (whatever `F` is).
-    pub fn seamless(&self) -> SeamlessCubeMap<'a> {
+    /// The same faces and filter, seamless across face edges.
+    pub fn seamless(&self) -> SeamlessCubeMap<'a, F> {
         SeamlessCubeMap {
             faces: *self.faces(),
             log2_size: self.size().trailing_zeros() as u8,
+            filter: core::marker::PhantomData,
         }
     }
 }
@@ -126,7 +140,7 @@ fn average3(a: u16, b: u16, c: u16) -> u16 {
     (ch(11, 31) | ch(5, 63) | ch(0, 31)) as u16
 }
 
-impl SeamlessCubeMap<'_> {
+impl<F> SeamlessCubeMap<'_, F> {
     /// The side of every face in texels.
     pub fn size(&self) -> u32 {
         1 << self.log2_size
@@ -195,42 +209,59 @@ fn seamless_bilinear<'t>(
     blend_q8(taps, a, b)
 }
 
-impl EnvLookup for SeamlessCubeMap<'_> {
+/// Nearest lookup at face coordinates `c` on `tex` (side `2^l`): the tap is on the face.
+#[inline(always)]
+fn nearest(tex: &Texture<'_>, l: u32, c: FaceCoords) -> u16 {
+    // Q16 s, t <= 2^16 and size <= 2^12: fits i32.
+    Nearest::sample(
+        tex,
+        ClampToEdge,
+        ClampToEdge,
+        (c.s << l) as i32,
+        (c.t << l) as i32,
+    )
+}
+
+impl<F: Sampler> EnvLookup for SeamlessCubeMap<'_, F> {
     #[inline(always)]
     fn lookup(&self, dir: [i32; 3]) -> u16 {
         let c = super::cube::face_coords(dir);
-        let faces = |f: usize| &self.faces[f % 6];
-        seamless_bilinear(
-            &faces,
-            u32::from(self.log2_size),
-            usize::from(c.face) % 6,
-            c.s,
-            c.t,
-        )
-    }
-}
-
-/// A mipmapped cube map filtered trilinearly with the seamless rule on every level (GL's
-/// `LINEAR_MIPMAP_LINEAR` with `TEXTURE_CUBE_MAP_SEAMLESS`): made by
-/// [`MipCubeMap::seamless`]. At coarse levels (a 4 x 4 face is a quarter of the face per
-/// texel) GL's clamped filter shows the cube's edges as lines; this does not.
-#[derive(Clone, Copy, Debug)]
-pub struct SeamlessMipCubeMap<'a> {
-    faces: &'a [MipTexture<'a>; 6],
-    log2_size: u8,
-}
-
-impl<'a, S: TexSampler> MipCubeMap<'a, S> {
-    /// The same chains, filtered trilinearly and seamlessly (whatever `S` is).
-    pub fn seamless(&self) -> SeamlessMipCubeMap<'a> {
-        SeamlessMipCubeMap {
-            faces: self.chains(),
-            log2_size: self.size().trailing_zeros() as u8,
+        let face = usize::from(c.face) % 6;
+        let l = u32::from(self.log2_size);
+        match F::FILTER {
+            Filter::Nearest => nearest(&self.faces[face], l, c),
+            Filter::Bilinear => {
+                let faces = |f: usize| &self.faces[f % 6];
+                seamless_bilinear(&faces, l, face, c.s, c.t)
+            }
         }
     }
 }
 
-impl EnvLookupLod for SeamlessMipCubeMap<'_> {
+/// A mipmapped cube map filtered with the seamless rule on every level (for example GL's
+/// `LINEAR_MIPMAP_LINEAR` with `TEXTURE_CUBE_MAP_SEAMLESS`), keeping the sampler's filters
+/// ([`TexSampler::filters`]): made by [`MipCubeMap::seamless`]. At coarse levels (a 4 x 4
+/// face is a quarter of the face per texel) GL's clamped bilinear filter shows the cube's
+/// edges as lines; this does not.
+#[derive(Clone, Copy, Debug)]
+pub struct SeamlessMipCubeMap<'a, S = Trilinear> {
+    faces: &'a [MipTexture<'a>; 6],
+    log2_size: u8,
+    sampler: S,
+}
+
+impl<'a, S: TexSampler> MipCubeMap<'a, S> {
+    /// The same chains and filters, seamless across face edges on every level.
+    pub fn seamless(&self) -> SeamlessMipCubeMap<'a, S> {
+        SeamlessMipCubeMap {
+            faces: self.chains(),
+            log2_size: self.size().trailing_zeros() as u8,
+            sampler: self.sampler(),
+        }
+    }
+}
+
+impl<S: TexSampler> EnvLookupLod for SeamlessMipCubeMap<'_, S> {
     #[inline(always)]
     fn log2_size(&self) -> u32 {
         u32::from(self.log2_size)
@@ -240,32 +271,49 @@ impl EnvLookupLod for SeamlessMipCubeMap<'_> {
     fn lookup_lod(&self, dir: [i32; 3], lambda: i32) -> u16 {
         let c = super::cube::face_coords(dir);
         let face = usize::from(c.face) % 6;
-        let at = |k: u32| {
-            let faces = |f: usize| self.faces[f % 6].level(k);
+        let (min, mag, between) = self.sampler.filters();
+        let at = |k: u32, filter: Filter| {
             let l = u32::from(self.log2_size).saturating_sub(k);
-            seamless_bilinear(&faces, l, face, c.s, c.t)
+            match filter {
+                Filter::Nearest => nearest(self.faces[face].level(k), l, c),
+                Filter::Bilinear => {
+                    let faces = |f: usize| self.faces[f % 6].level(k);
+                    seamless_bilinear(&faces, l, face, c.s, c.t)
+                }
+            }
         };
         if lambda <= 0 {
-            return at(0);
+            return at(0, mag);
         }
-        // GL's LINEAR_MIPMAP_LINEAR: levels floor(lambda) and the next, blended by the
-        // fraction; the last level alone beyond it.
         let last = self.faces[0].levels().saturating_sub(1);
-        let d1 = ((lambda >> 8) as u32).min(last);
-        let f = if d1 >= last {
-            0
-        } else {
-            (lambda & 0xFF) as u32
-        };
-        let a = at(d1);
-        if f == 0 {
-            return a;
+        match between {
+            // Minification without mipmaps: the min filter on level 0.
+            MipFilter::None => at(0, min),
+            // GL's *_MIPMAP_NEAREST: level 0 up to lambda = 1/2, else
+            // ceil(lambda + 1/2) - 1 (u32: lambda > 128 here).
+            MipFilter::Nearest => {
+                let d = if lambda <= 128 {
+                    0
+                } else {
+                    ((lambda as u32 + 127) >> 8).min(last)
+                };
+                at(d, min)
+            }
+            // GL's *_MIPMAP_LINEAR: levels floor(lambda) and the next, blended by the
+            // fraction; the last level alone beyond it.
+            MipFilter::Linear => {
+                let (d1, f) = linear_levels(lambda, last);
+                let a = at(d1, min);
+                if f == 0 {
+                    return a;
+                }
+                lerp565(a, at(d1 + 1, min), f)
+            }
         }
-        lerp565(a, at(d1 + 1), f)
     }
 }
 
-impl EnvLookup for SeamlessMipCubeMap<'_> {
+impl<S: TexSampler> EnvLookup for SeamlessMipCubeMap<'_, S> {
     /// Level 0: [`EnvLookupLod::lookup_lod`] with `lambda = 0`.
     #[inline(always)]
     fn lookup(&self, dir: [i32; 3]) -> u16 {

@@ -311,6 +311,7 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
     const DISCARDS: bool = S::DISCARDS;
     const SMALL: bool = S::SMALL;
     const LOD: bool = S::LOD;
+    const LOD_DIRECTION: Option<usize> = S::LOD_DIRECTION;
 
     #[inline(always)]
     fn lod_granularity(&self) -> crate::texture::LodGranularity {

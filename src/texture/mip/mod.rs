@@ -6,10 +6,11 @@
 //! A chain is one contiguous, row-major `&[Rgb565]`: level 0 (`w x h`), then level 1
 //! (`max(1, w/2) x max(1, h/2)`), and so on, down to 1 x 1 or to a chosen number of levels:
 //! at most 4/3 of the base size. [`MipTexture`] views each level as a [`Texture`]. Chains are
-//! built at compile time (`cargo xtask bake`) or at run time by [`generate_mips`] into
-//! caller-provided storage with a 2 x 2 box filter (per channel `(a + b + c + d + 2) >> 2`;
-//! where a side is already 1 the two texels along the other side are averaged,
-//! `(a + b + 1) >> 1`).
+//! built at compile time (`cargo xtask bake`, from the 8-bit source image) or at run time
+//! by [`generate_mips`] into caller-provided storage, every level straight from level 0
+//! at full precision: the mean of the block of texels it covers, rounded once (at level 1
+//! the 2 x 2 box filter `(a + b + c + d + 2) >> 2`, `(a + b + 1) >> 1` where a side is
+//! already 1).
 //!
 //! # Level of detail (OpenGL ES 3.2, scale factor and level of detail)
 //! `lambda = log2(rho)` with Heckbert's
@@ -33,8 +34,8 @@ use crate::Error;
 mod lod;
 mod sampler;
 
-pub use lod::{lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
-pub(crate) use sampler::footprints_needed;
+pub use lod::{direction_lambda, lambda_q8, log2_q8, Lod, LodGranularity, MipFilter};
+pub(crate) use sampler::{footprints_needed, linear_levels};
 pub use sampler::{
     lerp565, DynMip, LinearMipmapNearest, Mipmapped, NearestMipmapLinear, NearestMipmapNearest,
     TexSampler, Trilinear,
@@ -222,8 +223,15 @@ impl<'a> MipTexture<'a> {
     }
 }
 
-/// Fills levels `1..levels` of `chain` from level 0 (which the caller has written) with a
-/// 2 x 2 box filter. Same layout and errors as [`MipTexture::new`].
+/// Fills levels `1..levels` of `chain` from level 0 (which the caller has written), each
+/// level straight from level 0 at full precision: texel `(i, j)` of level `k` is the mean
+/// of the `bw x bh` block of level-0 texels it covers (`bw = width / side_k`, likewise
+/// `bh`), per channel, rounded once (half up): `(sum + n / 2) >> log2(n)`. Level 1 is the
+/// 2 x 2 box filter (`(a + b + c + d + 2) >> 2`, `(a + b + 1) >> 1` where a side is
+/// already 1); deeper levels do not compound its rounding, as box-filtering each level
+/// from the rounded one before does (up to half an LSB per level, always up at ties).
+/// Cost: `width x height` texel reads per level. Same layout and errors as
+/// [`MipTexture::new`].
 pub fn generate_mips(
     chain: &mut [Rgb565],
     width: u32,
@@ -232,41 +240,35 @@ pub fn generate_mips(
 ) -> Result<(), Error> {
     // Validates sizes and the length.
     MipTexture::new(chain, width, height, levels)?;
-    let mut src_off = 0usize;
+    let (base, rest) = chain.split_at_mut((width * height) as usize);
+    let mut off = 0usize;
     for k in 1..levels {
-        let (sw, sh) = (level_side(width, k - 1), level_side(height, k - 1));
         let (dw, dh) = (level_side(width, k), level_side(height, k));
-        let dst_off = src_off + (sw * sh) as usize;
-        let (src_part, dst_part) = chain.split_at_mut(dst_off);
-        let src = &src_part[src_off..];
+        // Powers of two: the block of level-0 texels under one level-k texel.
+        let (bw, bh) = (width / dw, height / dh);
+        let shift = (bw * bh).trailing_zeros();
+        let half = (1u32 << shift) >> 1;
         for j in 0..dh {
             for i in 0..dw {
-                let (x0, y0) = (2 * i, 2 * j);
-                let (x1, y1) = ((x0 + 1).min(sw - 1), (y0 + 1).min(sh - 1));
-                let at = |x: u32, y: u32| {
-                    src.get((y * sw + x) as usize)
-                        .map_or(0, |c| c.into_storage())
-                };
-                let texels = [at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)];
-                let n = if sw == 1 || sh == 1 { 2 } else { 4 };
-                let avg = |shift: u32, mask: u16| -> u16 {
-                    let sum: u32 = if n == 4 {
-                        texels.iter().map(|t| u32::from((t >> shift) & mask)).sum()
-                    } else {
-                        // One side is 1: x1 == x0 or y1 == y0, so texels[0] and texels[3]
-                        // are the two distinct texels.
-                        2 * (u32::from((texels[0] >> shift) & mask)
-                            + u32::from((texels[3] >> shift) & mask))
-                    };
-                    ((sum + 2) >> 2) as u16 & mask
-                };
-                let c = (avg(11, 0x1F) << 11) | (avg(5, 0x3F) << 5) | avg(0, 0x1F);
-                if let Some(d) = dst_part.get_mut((j * dw + i) as usize) {
-                    *d = Rgb565::from(RawU16::new(c));
+                // At most 2^24 texels of at most 63: sums below 2^30.
+                let mut sum = [0u32; 3];
+                for y in j * bh..(j + 1) * bh {
+                    let row = (y * width) as usize;
+                    for x in i * bw..(i + 1) * bw {
+                        let t = base.get(row + x as usize).map_or(0, |c| c.into_storage());
+                        sum[0] += u32::from(t >> 11);
+                        sum[1] += u32::from((t >> 5) & 0x3F);
+                        sum[2] += u32::from(t & 0x1F);
+                    }
+                }
+                let [r, g, b] = sum.map(|s| (s + half) >> shift);
+                let c = ((r & 0x1F) << 11) | ((g & 0x3F) << 5) | (b & 0x1F);
+                if let Some(d) = rest.get_mut(off + (j * dw + i) as usize) {
+                    *d = Rgb565::from(RawU16::new(c as u16));
                 }
             }
         }
-        src_off = dst_off;
+        off += (dw * dh) as usize;
     }
     Ok(())
 }
@@ -302,6 +304,59 @@ mod tests {
         assert_eq!(mip.level(2).width(), 1);
         assert!(MipTexture::new(&chain[..10], 4, 2, 3).is_err());
         assert!(MipTexture::new(&chain, 4, 2, 4).is_err());
+    }
+
+    /// Deeper levels are the rounded mean of level 0, not of the rounded level above: two
+    /// 2 x 2 blocks of mean 1/2 (level 1 rounds them up to 1) and two of 0 average 1/4,
+    /// level 2 is 0 (box-filtering level 1 gave (1 + 1 + 0 + 0 + 2) >> 2 = 1).
+    #[test]
+    fn deeper_levels_round_once() {
+        let px = |r: u8| Rgb565::new(r, 0, 0);
+        let mut chain = vec![px(0); chain_len(4, 4, 3)];
+        chain[5] = px(2); // block (0, 0): [0, 0, 0, 2]
+        chain[7] = px(2); // block (1, 0): [0, 0, 0, 2]
+        generate_mips(&mut chain, 4, 4, 3).unwrap();
+        assert_eq!(&chain[16..20], &[px(1), px(1), px(0), px(0)]);
+        assert_eq!(chain[20], px(0));
+        // Against the exact mean over random 16 x 8 images: within half an LSB.
+        let mut rng = crate::test_rng::Rng(0x0123_4567_89AB_CDEF);
+        for _ in 0..50 {
+            let mut chain = vec![px(0); chain_len(16, 8, 5)];
+            for c in chain.iter_mut().take(128) {
+                let v = rng.next();
+                *c = Rgb565::new(
+                    (v & 31) as u8,
+                    ((v >> 5) & 63) as u8,
+                    ((v >> 11) & 31) as u8,
+                );
+            }
+            let base: std::vec::Vec<u16> = chain[..128].iter().map(|c| c.into_storage()).collect();
+            generate_mips(&mut chain, 16, 8, 5).unwrap();
+            let mip = MipTexture::new(&chain, 16, 8, 5).unwrap();
+            for k in 1..5u32 {
+                let l = mip.level(k);
+                let (bw, bh) = (16 / l.width(), 8 / l.height());
+                for j in 0..l.height() {
+                    for i in 0..l.width() {
+                        let mut sum = [0f64; 3];
+                        for y in j * bh..(j + 1) * bh {
+                            for x in i * bw..(i + 1) * bw {
+                                let t = base[(y * 16 + x) as usize];
+                                sum[0] += f64::from(t >> 11);
+                                sum[1] += f64::from((t >> 5) & 63);
+                                sum[2] += f64::from(t & 31);
+                            }
+                        }
+                        let t = l.texel_raw(i, j);
+                        let got = [t >> 11, (t >> 5) & 63, t & 31].map(f64::from);
+                        for c in 0..3 {
+                            let mean = sum[c] / f64::from(bw * bh);
+                            assert!((got[c] - mean).abs() <= 0.5, "level {k} ({i}, {j})");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /// Sides past 4096 are refused by name before any length is computed, and the length

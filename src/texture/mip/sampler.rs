@@ -22,6 +22,13 @@ pub trait TexSampler: Copy + Default + core::fmt::Debug {
     /// draws refuse a chain of another size
     /// ([`Error::TextureSizeMismatch`](crate::Error::TextureSizeMismatch)).
     const LEVEL0_SIZE: Option<(u32, u32)> = None;
+    /// The filters as values, `(min, mag, between)`: within a level when minifying, when
+    /// magnifying, and between levels. The default: [`TexSampler::FILTER`] both ways and no
+    /// mipmaps (the plain samplers).
+    #[inline(always)]
+    fn filters(self) -> (Filter, Filter, MipFilter) {
+        (Self::FILTER, Self::FILTER, MipFilter::None)
+    }
     /// Samples at level-0 texel coordinates `u, v` (I16F16 bits) with `lambda` (Q8.8,
     /// already biased and clamped; ignored unless `LOD`).
     fn sample_mip<WU: WrapMode, WV: WrapMode>(
@@ -248,6 +255,15 @@ impl<Min: Sampler, Mag: Sampler, const LB: bool> TexSampler for Mipmapped<Min, M
     const LOD: bool = true;
     const FILTER: Filter = Mag::FILTER;
     #[inline(always)]
+    fn filters(self) -> (Filter, Filter, MipFilter) {
+        let between = if LB {
+            MipFilter::Linear
+        } else {
+            MipFilter::Nearest
+        };
+        (Min::FILTER, Mag::FILTER, between)
+    }
+    #[inline(always)]
     fn sample_base<WU: WrapMode, WV: WrapMode>(
         self,
         base: &Texture<'_>,
@@ -335,6 +351,10 @@ pub struct DynMip {
 impl TexSampler for DynMip {
     const LOD: bool = true;
     const FILTER: Filter = Filter::Nearest;
+    #[inline(always)]
+    fn filters(self) -> (Filter, Filter, MipFilter) {
+        (self.min, self.mag, self.between)
+    }
     #[inline(always)]
     fn sample_base<WU: WrapMode, WV: WrapMode>(
         self,

@@ -240,7 +240,7 @@ fn main() {
         );
     }
 
-    // Trilinear mip chains per face (GL's box filter, 7 levels), LOD per pixel from the
+    // Trilinear mip chains per face (`generate_mips`, 7 levels), LOD per pixel from the
     // projected pair, against the reference's GL cube LOD (central differences of r).
     {
         let levels = fixel::texture::full_levels(SIZE, SIZE);
