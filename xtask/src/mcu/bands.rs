@@ -93,9 +93,20 @@ pub(super) fn compact(f: &Figures) -> String {
         "| scene | instr/px in bands, M0+ / M4F / RV32 | bands / whole frame | geometry (M4F) | RAM (M4F) |\n\
          |---|---:|---:|---:|---:|\n",
     );
-    // The classic scenes and those held to the bar (the rest: docs/mcu.md).
-    let shown = ["cube", "sphere", "teapot", "fox"];
-    for scene in banded().filter(|s| shown.contains(s) || HELD.contains(s)) {
+    // The benchmark meshes and one scene per technique (every scene: docs/mcu.md).
+    let shown = [
+        "cube",
+        "sphere",
+        "sphere_sized",
+        "shadow_single",
+        "noise",
+        "env_pixel",
+        "aa_cube",
+        "transparency",
+        "water",
+        "bump",
+    ];
+    for scene in banded().filter(|s| shown.contains(s)) {
         let per = |label| f.per_px.get(&(scene.to_string(), label)).copied();
         let ratio = |label| {
             let b = per(label)?;
