@@ -17,6 +17,8 @@ mod count;
 mod fps;
 mod fuzz;
 mod images;
+#[cfg(test)]
+mod layers;
 mod light3d;
 mod mcu;
 mod pictures;

@@ -1,0 +1,142 @@
+//! The stage order of `src/` (`math -> geometry -> raster -> texture -> shading -> pipeline
+//! -> surface -> scene`, then the demo content), checked: a file of one stage may name
+//! (`crate::stage` in code, comments aside) only its own stage or a lower one. The files
+//! that still reach upwards are listed in [`KNOWN`]; the test fails on any new upward
+//! reference, and on a listed one that is gone (so the list only shrinks).
+
+use std::fs;
+use std::path::Path;
+
+/// The stages, lowest first. Top-level files (`error.rs`, `color.rs`, `lib.rs`) are below
+/// every stage; `guide` is documentation.
+pub(crate) const ORDER: [&str; 9] = [
+    "math", "geometry", "raster", "texture", "shading", "pipeline", "surface", "scene", "demo",
+];
+
+/// Upward references that remain: (file under `src/`, the higher stage it names).
+const KNOWN: [(&str, &str); 21] = [
+    ("geometry/clip.rs", "raster"),
+    ("geometry/vertex.rs", "raster"),
+    ("geometry/viewport.rs", "raster"),
+    ("pipeline/depth_only.rs", "surface"),
+    ("pipeline/draw.rs", "surface"),
+    ("pipeline/raster.rs", "surface"),
+    ("pipeline/shaded.rs", "surface"),
+    ("pipeline/span/tests.rs", "surface"),
+    ("scene/face_cull.rs", "demo"),
+    ("scene/subdivide.rs", "demo"),
+    ("scene/uv_gen.rs", "demo"),
+    ("scene/walk.rs", "demo"),
+    ("shading/noise/scene.rs", "scene"),
+    ("shading/pcf.rs", "surface"),
+    ("shading/shadow/light_space.rs", "pipeline"),
+    ("shading/shadow/mod.rs", "surface"),
+    ("shading/triplanar.rs", "scene"),
+    ("shading/uv_per_pixel.rs", "scene"),
+    ("texture/footprint.rs", "pipeline"),
+    ("texture/footprint.rs", "shading"),
+    ("texture/footprint_sized.rs", "pipeline"),
+];
+
+fn rank(stage: &str) -> Option<usize> {
+    ORDER.iter().position(|s| *s == stage)
+}
+
+/// The stages a line of code names through `crate::` (`crate::a::..` and the groups of
+/// `crate::{a::.., b::..}`).
+fn named(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = line;
+    while let Some(i) = rest.find("crate::") {
+        rest = &rest[i + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let end = group.find('}').unwrap_or(group.len());
+            for item in group[..end].split(',') {
+                let word: String = item
+                    .trim()
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                out.push(word);
+            }
+        } else {
+            out.push(
+                rest.chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect(),
+            );
+        }
+    }
+    out
+}
+
+/// Every upward reference under `src`: (path relative to `src`, the stage named), sorted.
+pub(crate) fn upward(src: &Path) -> Result<Vec<(String, String)>, String> {
+    let mut found = Vec::new();
+    let mut dirs = vec![src.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        for entry in fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+            let path = entry.map_err(|e| e.to_string())?.path();
+            if path.is_dir() {
+                dirs.push(path);
+                continue;
+            }
+            if path.extension().is_none_or(|e| e != "rs") {
+                continue;
+            }
+            let rel = path
+                .strip_prefix(src)
+                .map_err(|e| e.to_string())?
+                .to_string_lossy()
+                .replace('\\', "/");
+            let stage = rel.split('/').next().unwrap_or("").trim_end_matches(".rs");
+            let Some(own) = rank(stage) else { continue };
+            let text = fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
+                for name in named(line) {
+                    if rank(&name).is_some_and(|r| r > own) {
+                        found.push((rel.clone(), name));
+                    }
+                }
+            }
+        }
+    }
+    found.sort();
+    found.dedup();
+    Ok(found)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_stages_of_src_depend_one_way_but_for_the_known_files() {
+        let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../src");
+        let found = upward(&src).unwrap();
+        let known: Vec<(String, String)> = KNOWN
+            .iter()
+            .map(|(f, s)| (f.to_string(), s.to_string()))
+            .collect();
+        let new: Vec<_> = found.iter().filter(|f| !known.contains(f)).collect();
+        assert!(
+            new.is_empty(),
+            "files naming a higher stage ({}): {new:?}; move the shared type down to the \
+             stage that owns it",
+            ORDER.join(" -> ")
+        );
+        let gone: Vec<_> = known.iter().filter(|k| !found.contains(k)).collect();
+        assert!(
+            gone.is_empty(),
+            "these no longer reach upwards: take them off layers::KNOWN: {gone:?}"
+        );
+    }
+
+    #[test]
+    fn grouped_and_plain_paths_are_both_read() {
+        assert_eq!(
+            named("use crate::{surface::Frame, math::Fx}; let x = crate::scene::f();"),
+            ["surface", "math", "scene"]
+        );
+    }
+}
