@@ -18,9 +18,11 @@ use core::convert::Infallible;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::demo;
-use fixel::prelude::*;
 use fixel::geometry::ScreenTriangle;
-use fixel::scene::{walk_mesh, CachedVertex, DirectionalLight, FacePlane, Mesh, MeshTransform, TriangleOut};
+use fixel::prelude::*;
+use fixel::scene::{
+    walk_mesh, CachedVertex, DirectionalLight, FacePlane, Mesh, MeshTransform, TriangleOut,
+};
 use fixel::surface::{BandDraw, BandShare, Binned, BinnedFrame, Blocking, TriangleSink};
 use fixel::texture::MipTexture;
 
@@ -135,7 +137,15 @@ fn bin<'f, 'd>(
 ) -> Result<BinnedFrame<'f, 'd, Rgb565>, Error> {
     let light = DirectionalLight::default();
     BinnedFrame::new(draws, bins, |sink| {
-        walk_mesh(draw, mesh, transform, Some(&light), cache, 0, &mut ToBins(sink));
+        walk_mesh(
+            draw,
+            mesh,
+            transform,
+            Some(&light),
+            cache,
+            0,
+            &mut ToBins(sink),
+        );
     })
 }
 
@@ -144,7 +154,9 @@ fn frame(scene: &str, draw: &Draw<'_, Rgb565>, parts: &Parts<'_>, model: &Mat4) 
     let transform = MeshTransform::new(model, &demo::camera(20));
     let draws: [&dyn BandDraw<Rgb565>; 1] = [draw];
     let n = parts.indices.len();
-    let (Ok(whole), Ok(first), Ok(later)) = (parts.mesh(0..n), parts.mesh(0..n / 2), parts.mesh(n / 2..n)) else {
+    let (Ok(whole), Ok(first), Ok(later)) =
+        (parts.mesh(0..n), parts.mesh(0..n / 2), parts.mesh(n / 2..n))
+    else {
         return false;
     };
     // SAFETY: each hart bins into its own half; the bins are read only after both are done.
@@ -156,8 +168,15 @@ fn frame(scene: &str, draw: &Draw<'_, Rgb565>, parts: &Parts<'_>, model: &Mat4) 
     // One core: bin, every band.
     bench_start();
     let nv = parts.positions.len();
-    let one = bin(&draws, draw, &whole, &transform, &mut bins[..], cache(0, nv))
-        .and_then(|f| draw_share(&f, BandShare::ALL));
+    let one = bin(
+        &draws,
+        draw,
+        &whole,
+        &transform,
+        &mut bins[..],
+        cache(0, nv),
+    )
+    .and_then(|f| draw_share(&f, BandShare::ALL));
     bench_end();
     bench_mark();
     let one_sum = checksum();
@@ -225,7 +244,13 @@ fn frame(scene: &str, draw: &Draw<'_, Rgb565>, parts: &Parts<'_>, model: &Mat4) 
             true
         }
         (a, b, c) => {
-            outln!("scene={} error={:?} {:?} {:?}", scene, a.err(), b.err(), c.err());
+            outln!(
+                "scene={} error={:?} {:?} {:?}",
+                scene,
+                a.err(),
+                b.err(),
+                c.err()
+            );
             false
         }
     }
@@ -240,7 +265,8 @@ pub fn run(scene: &str) -> bool {
     let (draw, parts, model) = match scene {
         "cube" => {
             let m = demo::cube();
-            let Ok(draw) = Draw::new_mip::<LitFootprint>(Some(data::T128_FP), vp, Cull::Back) else {
+            let Ok(draw) = Draw::new_mip::<LitFootprint>(Some(data::T128_FP), vp, Cull::Back)
+            else {
                 return false;
             };
             // The cube's arrays live in this frame: drawn here.

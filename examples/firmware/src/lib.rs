@@ -10,20 +10,20 @@
 pub mod aa;
 #[cfg(fixel_fw_report)]
 pub mod alpha;
+#[cfg(feature = "smp")]
+pub mod cores;
 pub mod data;
 pub mod env;
 pub mod mapping;
 pub mod matcap_scene;
 pub mod model_scene;
-pub mod palette_scene;
 pub mod modes;
 pub mod open_frame;
+pub mod palette_scene;
 pub mod scenes;
 #[cfg(fixel_fw_report)]
 pub mod shadow_modes;
 pub mod size;
-#[cfg(feature = "smp")]
-pub mod cores;
 #[cfg(feature = "smp")]
 pub mod smp;
 #[cfg(fixel_fw_report)]

@@ -26,7 +26,10 @@ pub fn both(here: &mut dyn FnMut(), there: &mut dyn FnMut()) {
     unsafe {
         let mut job: &mut dyn FnMut() = there;
         let posted = read_volatile(addr_of!(POSTED)).wrapping_add(1);
-        write_volatile(addr_of_mut!(JOB), &mut job as *mut &mut dyn FnMut() as usize);
+        write_volatile(
+            addr_of_mut!(JOB),
+            &mut job as *mut &mut dyn FnMut() as usize,
+        );
         fence(Ordering::SeqCst);
         write_volatile(addr_of_mut!(POSTED), posted);
         here();

@@ -88,3 +88,48 @@ pub fn water<const R: usize, const V: usize, const B: usize, const S: usize>(
         resume,
     )
 }
+
+/// A `water` firmware: frame 3 of the scene into `target` (bands or whole), counted and
+/// reported as scene `name` (firmware only; the host tests include this file for the scene
+/// code above).
+#[cfg(target_os = "none")]
+pub fn run_firmware<const R: usize, const V: usize, const B: usize, const S: usize>(
+    name: &str,
+    target: Target<'_, R, V, B, S>,
+) -> bool {
+    mod base {
+        include!("../../../assets/displaced/water_base.rs");
+    }
+    static mut POSITIONS: [Vec3; WATER_VERTICES] = [Vec3::ZERO; WATER_VERTICES];
+    static mut NORMALS: [Vec3; WATER_VERTICES] = [Vec3::ZERO; WATER_VERTICES];
+    // SAFETY: the only references to these statics, taken once in this single-threaded
+    // firmware (each firmware calls this function once).
+    let (positions, normals) = unsafe {
+        (
+            &mut *core::ptr::addr_of_mut!(POSITIONS),
+            &mut *core::ptr::addr_of_mut!(NORMALS),
+        )
+    };
+    let Ok(mesh) = Mesh::new(
+        core::hint::black_box(&base::WATER_POSITIONS),
+        Some(&base::WATER_NORMALS),
+        &base::WATER_UVS,
+        &base::WATER_INDICES,
+    ) else {
+        return false;
+    };
+    let frame = core::hint::black_box(3);
+    fixel_firmware::report(name, |pause, resume| {
+        water(
+            target,
+            fixel_firmware::data::T64,
+            &mesh,
+            &base::WATER_HEIGHTS,
+            positions,
+            normals,
+            frame,
+            pause,
+            resume,
+        )
+    })
+}

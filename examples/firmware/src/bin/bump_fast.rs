@@ -19,7 +19,13 @@ fn run() -> bool {
         return false;
     };
     report("bump_fast", |pause, resume| {
-        scenes::render::<scenes::FloorBilinear, { scenes::RANGES }, { scenes::CACHE }, 0, { scenes::SETUPS }>(
+        scenes::render::<
+            scenes::FloorBilinear,
+            { scenes::RANGES },
+            { scenes::CACHE },
+            0,
+            { scenes::SETUPS },
+        >(
             scenes::Target::Bands(&mut buf),
             MipTexture::single(data::BRICKS_LIT256X128),
             &mesh,

@@ -11,8 +11,10 @@ use fixel_firmware::model_scene::{self, ModelBuffers, ModelTarget};
 use fixel_firmware::report;
 
 fn run() -> bool {
-    let mut buf =
-        ModelBuffers::<{ model_scene::CESIUM_MAN_RANGES }, { model_scene::CESIUM_MAN_SETUPS }>::new();
+    let mut buf = ModelBuffers::<
+        { model_scene::CESIUM_MAN_RANGES },
+        { model_scene::CESIUM_MAN_SETUPS },
+    >::new();
     let Ok(mesh) = Mesh::new(
         core::hint::black_box(&model::CESIUM_MAN_POSITIONS),
         Some(&model::CESIUM_MAN_NORMALS),
