@@ -20,7 +20,7 @@ use std::path::Path;
 
 use clap::Args;
 
-use crate::bake::{chain, full_levels, read_rgb8, to_565, BakeError, Levels, DEFAULT_RGB565};
+use crate::bake::{chain, full_levels, read_rgb8, BakeError, Levels, DEFAULT_RGB565};
 
 /// An RGB565 colour as its channels `[r5, g6, b5]`.
 pub type C565 = [u8; 3];
@@ -366,8 +366,8 @@ fn parse_bits(v: &str) -> Result<u32, String> {
     }
 }
 
-/// The RGB565 level 0 of `input`: a PNG or `checker:WxH`.
-fn read_source(input: &str) -> Result<(u32, u32, Vec<C565>), String> {
+/// The 8-bit image of `input`: a PNG, or `checker:WxH` (RGB565 widened to 8 bits).
+fn read_source(input: &str) -> Result<(u32, u32, Vec<[u8; 3]>), String> {
     if let Some(size) = input.strip_prefix("checker:") {
         let (w, h) = size
             .split_once('x')
@@ -375,10 +375,19 @@ fn read_source(input: &str) -> Result<(u32, u32, Vec<C565>), String> {
             .ok_or_else(|| format!("{input}: expected checker:WxH"))?;
         let mut t = vec![fixel::Rgb565::new(0, 0, 0); (w * h) as usize];
         fixel::demo::checker_texture(w, h, &mut t).map_err(|e| format!("{input}: {e}"))?;
-        return Ok((w, h, t.iter().map(|c| channels(*c)).collect()));
+        // Bit-replicated to 8 bits: `chain` rounds them back to exactly these texels.
+        return Ok((w, h, t.iter().map(|c| widen(channels(*c))).collect()));
     }
-    let (w, h, px) = read_rgb8(Path::new(input))?;
-    Ok((w, h, px.into_iter().map(to_565).collect()))
+    read_rgb8(Path::new(input))
+}
+
+/// RGB565 channels widened to 8 bits by bit replication (`to_565` inverts it exactly).
+fn widen(c: C565) -> [u8; 3] {
+    [
+        (c[0] << 3) | (c[0] >> 2),
+        (c[1] << 2) | (c[1] >> 4),
+        (c[2] << 3) | (c[2] >> 2),
+    ]
 }
 
 /// The channels of an `Rgb565`.

@@ -3,7 +3,7 @@
 //! partial texels weighted by their covered fraction, in f64), then `bake`'s RGB565 rounding
 //! and mip chain.
 
-use crate::bake::{chain, full_levels, to_565};
+use crate::bake::{chain, full_levels};
 
 use super::GltfOpts;
 
@@ -201,7 +201,8 @@ pub fn bake_texture(
     } else {
         resample(px, w, h, tw, th)
     };
-    let base: Vec<[u8; 3]> = base.into_iter().map(to_565).collect();
+    // `chain` takes the 8-bit image: level 0 rounded to RGB565 once, the others filtered
+    // from the 8-bit texels at full precision.
     Ok(BakedTexture {
         image,
         source_size: (w, h),
