@@ -96,13 +96,23 @@ impl DepthOnlyDraw {
         map: &mut DepthMap<'_>,
     ) -> Result<u32, Error> {
         self.check_map(map)?;
+        Ok(self.clip_checked(tris, map))
+    }
+
+    /// [`DepthOnlyDraw::clip_triangles`] into a map already checked with
+    /// [`DepthOnlyDraw::check_map`] (a mesh's light pass checks once, not per triangle).
+    pub(crate) fn clip_checked<const N: usize>(
+        &self,
+        tris: &[[Vertex<N>; 3]],
+        map: &mut DepthMap<'_>,
+    ) -> u32 {
         let mut n = 0u32;
         for tri in tris {
             clip_and_project_varyings(tri, &self.viewport, self.cull, false, &mut |s| {
                 n = n.wrapping_add(self.screen_triangle(s, map));
             });
         }
-        Ok(n)
+        n
     }
 
     /// Draws one screen triangle (already clipped, projected and culled) into `map`;

@@ -37,8 +37,7 @@ pub fn light_pass_mesh<K: LightKind>(
             Some(Vertex::new([p.x, p.y, p.z, p.w], []))
         };
         if let (Some(a), Some(b), Some(c)) = (v(0), v(1), v(2)) {
-            // The map's size was checked above.
-            n = n.wrapping_add(draw.clip_triangles::<0>(&[[a, b, c]], map).unwrap_or(0));
+            n = n.wrapping_add(draw.clip_checked::<0>(&[[a, b, c]], map));
         }
     }
     Ok(n)

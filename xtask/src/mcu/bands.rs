@@ -251,22 +251,21 @@ pub(super) fn realtime(f: &Figures) -> String {
     );
     let cores = ["Cortex-M0+", "Cortex-M4F", "RV32IMC"];
     let per = |s: &str, l: &'static str| f.per_px.get(&(s.to_string(), l)).copied();
-    let row = |s: &str, g: &dyn Fn(&'static str) -> Option<f64>, d: usize| {
-        let _ = s;
+    let row = |g: &dyn Fn(&'static str) -> Option<f64>, d: usize| {
         cores
             .map(|l| g(l).map_or("-".into(), |v| format!("{v:.d$}")))
             .join(" / ")
     };
     t.push_str(&format!(
         "| plain: lit, bilinear, the sphere's own texture | {} | 1 |\n",
-        row("sphere", &|l| per("sphere", l), 1)
+        row(&|l| per("sphere", l), 1)
     ));
     for (what, scene) in REALTIME {
         let ratio = |l: &'static str| Some(per(scene, l)? / per("sphere", l)?);
         t.push_str(&format!(
             "| {what} (`{scene}`) | {} | {} |\n",
-            row(scene, &|l| per(scene, l), 1),
-            row(scene, &ratio, 2),
+            row(&|l| per(scene, l), 1),
+            row(&ratio, 2),
         ));
     }
     t
