@@ -11,7 +11,6 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection};
@@ -19,6 +18,7 @@ use fixel::scene::{draw_mesh, jittered, Camera, DirectionalLight, Mesh, SamplePa
 use fixel::surface::{resolve_box, Accumulator, Frame};
 use fixel::texture::{Filter, Texture};
 use fixel::Error;
+use fixel_scenes as demo;
 
 const W: u32 = 320;
 const H: u32 = 240;

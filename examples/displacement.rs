@@ -16,11 +16,6 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
-use fixel::demo::displaced::{
-    grid, rock_heights, rock_heights_sized, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
-};
-use fixel::demo::surface;
-use fixel::demo::{self, MeshData};
 use fixel::geometry::Vertex;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
@@ -37,6 +32,11 @@ use fixel::shading::{Shader, TexBinding};
 use fixel::surface::Frame;
 use fixel::texture::{Filter, HeightMap, Lod, MipTexture, Repeat, Texture, Trilinear, Wrap};
 use fixel::Error;
+use fixel_scenes::displaced::{
+    grid, rock_heights, rock_heights_sized, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
+};
+use fixel_scenes::surface;
+use fixel_scenes::{self as demo, MeshData};
 
 const PANEL: u32 = 280;
 const H: u32 = 240;
@@ -80,7 +80,7 @@ fn draw_panel<S: Shader<Varyings = [i32; 8]>>(
 }
 
 /// `displacement_vs_bump.png`: the rocky sphere lit per pixel (Blinn-Phong, the point light
-/// of `fixel::demo::surface`) three ways: smooth, bump-mapped from the same heights (per-pixel
+/// of `fixel_scenes::surface`) three ways: smooth, bump-mapped from the same heights (per-pixel
 /// differences, on a 4x finer grid of the same surface) at the
 /// strength that matches the displacement (σ = scale / 256 steps over a texel's 0.0736
 /// units), and displaced. Bump mapping shades the bumps but keeps the round outline.

@@ -100,7 +100,7 @@ fn main() -> Result<(), fixel::Error> {
         let mut frame = Frame::new(&mut color, W, H)?.with_depth(&mut depth)?;
         let draw = ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)?;
         let eye = Vec3::ZERO;
-        let sphere = fixel::demo::sphere();
+        let sphere = fixel_scenes::sphere();
         let model = Mat4::translation(Vec3::from_num(-1.05, -0.35, -5.2));
         let s = EnvVertices::new(&model, &vproj, eye);
         let st = tris(
@@ -143,7 +143,7 @@ fn main() -> Result<(), fixel::Error> {
 
     // Per-vertex vs per-pixel r on the benchmark sphere (radius 1.5 at z = -5).
     let mut pair = vec![Rgb565::new(0, 0, 0); (2 * W * H) as usize];
-    let sphere = fixel::demo::sphere();
+    let sphere = fixel_scenes::sphere();
     let s = EnvVertices::new(
         &Mat4::translation(Vec3::from_num(0, 0, -5)),
         &proj,
@@ -258,13 +258,13 @@ fn main() -> Result<(), fixel::Error> {
         Bilinear,
     )?;
     let mut base = vec![Rgb565::new(0, 0, 0); 256 * 128];
-    fixel::demo::checker_texture(256, 128, &mut base)?;
+    fixel_scenes::checker_texture(256, 128, &mut base)?;
     let black = [Rgb565::new(0, 0, 0); 1];
     let none = CubeMap::new([Texture::new(&black, 1, 1)?; 6], Bilinear)?;
     let mip = MipTexture::single(Texture::new(&base, 256, 128)?);
     let binding = TexBinding::new(&mip, Bilinear, Repeat, Repeat, Lod::default())?;
-    let sphere = fixel::demo::sphere();
-    let s = EnvVertices::new(&fixel::demo::sphere_model(0), &proj, Vec3::ZERO);
+    let sphere = fixel_scenes::sphere();
+    let s = EnvVertices::new(&fixel_scenes::sphere_model(0), &proj, Vec3::ZERO);
     let t8: Vec<[Vertex<8>; 3]> = sphere
         .indices
         .iter()

@@ -40,7 +40,7 @@ fn sphere<const N: usize>(
     proj: &Mat4,
     vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
 ) -> Vec<[Vertex<N>; 3]> {
-    let m = fixel::demo::sphere();
+    let m = fixel_scenes::sphere();
     let s = EnvVertices::new(model, proj, Vec3::ZERO);
     m.indices
         .iter()

@@ -18,20 +18,18 @@ mod teapot {
 }
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{DepthLess, Exact, NoDepth, ShadedDraw};
 use fixel::scene::DirectionalLight;
-use fixel::shading::noise::presets::{
-    marble_sphere_model, wood_cube_model, FLOOR_SCALE, SHOWCASE_SCALE,
-};
 use fixel::shading::noise::{
     BandLimit, Fixed, FlameShader, Octaves, Pattern, Ramp, Ramps, SolidMesh, SolidShader,
     FLAME_KEYS,
 };
 use fixel::shading::Shader;
 use fixel::surface::Frame;
+use fixel_scenes as demo;
+use fixel_scenes::noise::{marble_sphere_model, wood_cube_model, FLOOR_SCALE, SHOWCASE_SCALE};
 
 const W: u32 = 320;
 const H: u32 = 240;

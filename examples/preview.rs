@@ -36,11 +36,11 @@ fn write_png(path: &PathBuf, frame: &Frame<'_, Rgb565>, w: u32) -> Result<(), Bo
 fn main() -> Result<(), Box<dyn StdError>> {
     let (w, h) = (320, 240);
     let mut texels = vec![Rgb565::BLACK; 128 * 128];
-    fixel::demo::checker_texture(128, 128, &mut texels)?;
+    fixel_scenes::checker_texture(128, 128, &mut texels)?;
     let texture = Texture::new(&texels, 128, 128)?;
     let draw = Draw::new::<Lit>(Some(texture), Viewport::new(0, 0, w, h)?, Cull::Back)?;
 
-    let cube = fixel::demo::cube();
+    let cube = fixel_scenes::cube();
     let camera = Camera::perspective(Angle::from_degrees(fx(45)), fx(4) / 3, fx(0.5), fx(20))?;
     let model = Mat4::translation(Vec3::from_num(0, 0, -4))
         .mul(&Mat4::rotation_x(Angle::from_degrees(fx(20))))

@@ -21,7 +21,6 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Vec3;
 use fixel::pipeline::{
@@ -29,9 +28,10 @@ use fixel::pipeline::{
 };
 use fixel::scene::{draw_mesh_walked, CachedVertex, DirectionalLight, MeshTransform, SphereMapUvs};
 use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
-use fixel::shading::noise::{bake, presets, BandLimit, Ramps, SolidMesh, SolidShader};
+use fixel::shading::noise::{bake, BandLimit, Ramps, SolidMesh, SolidShader};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, ClampToEdge, Repeat, Texture};
+use fixel_scenes as demo;
 
 const W: u32 = 320;
 const H: u32 = 240;
@@ -136,7 +136,7 @@ fn noise(out: &std::path::Path) {
         &s.positions,
         Some(&s.normals),
         &s.indices,
-        presets::SHOWCASE_SCALE,
+        fixel_scenes::noise::SHOWCASE_SCALE,
     )
     .expect("mesh");
     let mut tris = Vec::new();
@@ -161,7 +161,7 @@ fn noise(out: &std::path::Path) {
     bake(
         &ramps.marble(),
         &BandLimit::new(6),
-        &presets::baked_sphere_surface(),
+        &fixel_scenes::noise::baked_sphere_surface(),
         256,
         128,
         &mut t,
@@ -174,13 +174,13 @@ fn noise(out: &std::path::Path) {
 }
 
 fn bump(out: &std::path::Path) {
-    use fixel::demo::surface;
     use fixel::math::Fx;
     use fixel::scene::{LitMesh, PixelLight};
     use fixel::shading::bump::{resolve_sphere, Bumped, HeightDifferences};
     use fixel::shading::lighting::{Material, Specular};
     use fixel::shading::TexBinding;
     use fixel::texture::{chain_len, HeightMap, Lod, MipTexture};
+    use fixel_scenes::surface;
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
     let (n, levels) = (64, 7);
     let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];

@@ -9,13 +9,13 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::pipeline::{Affine, DepthLess, Exact, ModulateIntensity, Pipeline, Replace};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight};
 use fixel::texture::{
     chain_len, full_levels, generate_mips, Bilinear, MipTexture, Nearest, Repeat, Trilinear,
 };
+use fixel_scenes as demo;
 
 type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 type FloorNearest = Pipeline<Exact, Nearest, Repeat, Repeat, Replace, DepthLess>;

@@ -22,8 +22,6 @@ mod teapot {
 
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::prelude::*;
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
@@ -31,6 +29,8 @@ use fixel::shading::shadow::{Bias, LightKind, LightSpace, Shadowed};
 use fixel::shading::ModulateIntensity;
 use fixel::surface::DepthMap;
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
+use fixel_scenes as demo;
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 const W: u32 = demo::WIDTH;
 const H: u32 = demo::HEIGHT;

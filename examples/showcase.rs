@@ -13,12 +13,12 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{OriginDimensions, Size};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::Pixel;
-use fixel::demo;
 use fixel::geometry::ClipVertex;
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
 use fixel::surface::DrawTargetFlush;
 use fixel::surface::{BandDraw, Binned};
+use fixel_scenes as demo;
 
 /// A display in RAM: what `embedded-graphics-simulator` would be, without a window.
 struct Display {

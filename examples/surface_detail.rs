@@ -13,8 +13,6 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565, RgbColor};
-use fixel::demo::bricks::{brick_colours, brick_heights};
-use fixel::demo::surface;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Angle, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
@@ -30,6 +28,8 @@ use fixel::texture::{
     Nearest, NearestMipmapNearest, Repeat, Texture, Trilinear,
 };
 use fixel::Error;
+use fixel_scenes::bricks::{brick_colours, brick_heights};
+use fixel_scenes::surface;
 
 const PANEL: u32 = 240;
 const BRICKS: u32 = 128;

@@ -8,7 +8,6 @@
 mod common;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, DepthTest, Draw, DrawMode, Exact, Projection, ShadedDraw};
@@ -20,6 +19,7 @@ use fixel::texture::{
     Texture,
 };
 use fixel::Error;
+use fixel_scenes as demo;
 
 const W: u32 = 320;
 const H: u32 = 240;

@@ -16,7 +16,7 @@
 //!
 //! // A 64 x 64 texture and a lit, bilinear, perspective-correct draw into an 80 x 60 frame.
 //! let mut texels = [Rgb565::BLACK; 64 * 64];
-//! fixel::demo::checker_texture(64, 64, &mut texels)?;
+//! fixel_scenes::checker_texture(64, 64, &mut texels)?;
 //! let draw = Draw::new::<Lit>(Some(Texture::new(&texels, 64, 64)?), Viewport::new(0, 0, 80, 60)?, Cull::Back)?;
 //!
 //! // A square of side 2 with normals and uv, turned 30 degrees and 3 units away.
@@ -38,8 +38,8 @@
 //! The [`guide`] has a chapter per topic: from `Cargo.toml` to a PNG on the desktop
 //! ([`guide::first_frame`]) and to an SPI display in bands ([`guide::bands`]), choosing a
 //! projection and filter, mipmaps, each technique, performance on each chip, accuracy
-//! against the f64 reference, and troubleshooting; [`demo`] has the benchmark meshes (cube,
-//! sphere, floor) ready-made.
+//! against the f64 reference, and troubleshooting. The examples take the benchmark meshes (cube,
+//! sphere, floor) and their checker texture from the repository's `fixel-scenes` crate.
 //!
 //! ## The pipeline, stage by stage
 //!
@@ -56,9 +56,9 @@
 //! | scene | [`scene`] | meshes, camera, per-vertex directional light; a geometry walker with a cache of projected vertices that culls before lighting; per-pixel light vectors and tangent frames for the lighting shaders ([`scene::LitMesh`], [`scene::tangents`]) |
 //!
 //! The modules depend one way, in the order `math -> geometry -> raster -> texture ->
-//! shading -> pipeline -> surface -> scene` (the demo content last): a type two stages need
-//! lives in the lower one. A test (`xtask`'s `layers`) fails on a new reference that runs
-//! against the order; the few files that still reach upwards are listed there.
+//! shading -> pipeline -> surface -> scene`: a type two stages need lives in the lower one,
+//! and no two files import each other. A test (`xtask`'s `layers`) fails on a reference that
+//! runs against the order and on two files that name each other.
 //!
 //! ## Writing a shader
 //!
@@ -113,7 +113,7 @@
 //! }
 //!
 //! let mut base_texels = [Rgb565::default(); 32 * 32];
-//! fixel::demo::checker_texture(32, 32, &mut base_texels)?;
+//! fixel_scenes::checker_texture(32, 32, &mut base_texels)?;
 //! let light_texels: [Rgb565; 4] = [Rgb565::new(31, 63, 31), Rgb565::new(8, 16, 8),
 //!                                  Rgb565::new(8, 16, 8), Rgb565::new(31, 63, 31)];
 //! let (base, light) = (MipTexture::single(Texture::new(&base_texels, 32, 32)?),
@@ -182,7 +182,6 @@
 #![warn(missing_docs, missing_debug_implementations)]
 
 pub mod color;
-pub mod demo;
 pub mod error;
 pub mod geometry;
 pub mod guide;
@@ -194,6 +193,15 @@ pub mod shading;
 pub mod surface;
 #[cfg(test)]
 mod test_rng;
+/// The benchmark scenes (`examples/scenes`, the `fixel-scenes` crate) compiled into the unit
+/// tests, which cannot link that crate: it depends on the published `fixel`, not on this test
+/// build. Its `fixel::` paths name this crate through the `extern crate self` below.
+#[cfg(test)]
+#[allow(unused_attributes, missing_docs, dead_code)]
+#[path = "../examples/scenes/src/lib.rs"]
+mod test_scenes;
+#[cfg(test)]
+extern crate self as fixel;
 pub mod texture;
 
 pub use error::Error;

@@ -21,11 +21,11 @@ mod modes;
 pub use modes::{Filt, Mode, Proj};
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_cached, DirectionalLight, Mesh};
 use fixel::texture::{chain_len, full_levels};
 use fixel::texture::{generate_mips, write_footprints, MipTexture};
+use fixel_scenes as demo;
 
 /// A benchmark scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -49,7 +49,7 @@ fn main() {
 
     for (w, h) in [(8, 8), (64, 64), (128, 128), (256, 128)] {
         let mut t = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
-        fixel::demo::checker_texture(w, h, &mut t).unwrap();
+        fixel_scenes::checker_texture(w, h, &mut t).unwrap();
         let bytes: Vec<u8> = t
             .iter()
             .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
@@ -63,7 +63,7 @@ fn main() {
         use fixel::texture::{chain_len, full_levels};
         let levels = full_levels(64, 64);
         let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(64, 64, levels)];
-        fixel::demo::checker_texture(64, 64, &mut chain[..64 * 64]).unwrap();
+        fixel_scenes::checker_texture(64, 64, &mut chain[..64 * 64]).unwrap();
         fixel::texture::generate_mips(&mut chain, 64, 64, levels).unwrap();
         let bytes: Vec<u8> = chain
             .iter()
@@ -72,17 +72,17 @@ fn main() {
         fs::write(out.join("t64x64-mips.bin"), bytes).unwrap();
     }
 
-    let s = fixel::demo::sphere();
+    let s = fixel_scenes::sphere();
     fs::write(out.join("sphere.rs"), mesh_source(&s)).unwrap();
     // The geometry benchmark's ~10k-triangle mesh (flash: ~230 KB; whole-layout builds only
     // link it).
-    let f = Box::new(fixel::demo::fine_sphere());
+    let f = Box::new(fixel_scenes::fine_sphere());
     fs::write(out.join("fine_sphere.rs"), mesh_source(&f)).unwrap();
 
     // The bump scene's brick sphere (texture coordinates 4 x 2 around), its tangents and
     // the 64 x 64 brick maps: colours, and the derivative map of the heights' mip chain.
     {
-        let (sphere, tangents) = fixel::demo::surface::sphere().unwrap();
+        let (sphere, tangents) = fixel_scenes::surface::sphere().unwrap();
         fs::write(out.join("brick_sphere.rs"), mesh_source(&sphere)).unwrap();
         let mut src = String::from("[");
         for t in &tangents {
@@ -104,7 +104,7 @@ fn main() {
         let mut heights = vec![0u8; chain];
         let mut derivs = vec![Rgb565::new(0, 0, 0); chain];
         let scale =
-            fixel::demo::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
+            fixel_scenes::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
                 .unwrap();
         for (name, t) in [("brick-colours", &colours), ("brick-derivs", &derivs)] {
             let bytes: Vec<u8> = t
@@ -146,10 +146,10 @@ fn main() {
     // The marble baked for the benchmark sphere's texture coordinates (256 x 128,
     // band-limited turbulence of at most 6 octaves): the `noise_baked` scene's texture.
     {
-        use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+        use fixel::shading::noise::{bake, BandLimit, Ramps};
         let ramps = Ramps::new().unwrap();
         let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
-        let surface = presets::baked_sphere_surface();
+        let surface = fixel_scenes::noise::baked_sphere_surface();
         bake(
             &ramps.marble(),
             &BandLimit::new(6),
@@ -174,25 +174,25 @@ fn main() {
         let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
         let mut heights = vec![0u8; chain_len(n, n, levels)];
         let mut derivs = vec![Rgb565::new(0, 0, 0); chain_len(n, n, levels)];
-        fixel::demo::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
+        fixel_scenes::surface::brick_maps(n, levels, &mut colours, &mut heights, &mut derivs)
             .unwrap();
         let tile = Texture::new(&colours, n, n).unwrap();
         let map = HeightMap::new(&heights, n, n, levels).unwrap();
         let normals = fixel::shading::bump::HeightDifferences::new(
             map,
-            fixel::math::Fx::from_bits(fixel::demo::surface::RESOLVE_STRENGTH),
+            fixel::math::Fx::from_bits(fixel_scenes::surface::RESOLVE_STRENGTH),
         )
         .unwrap();
         let material = fixel::shading::lighting::Material {
             specular: 0,
-            ..fixel::demo::surface::material(fixel::shading::lighting::Specular::None)
+            ..fixel_scenes::surface::material(fixel::shading::lighting::Specular::None)
         };
         let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
         fixel::shading::bump::resolve_sphere(
             &tile,
             &normals,
             &material,
-            fixel::demo::surface::resolve_light(),
+            fixel_scenes::surface::resolve_light(),
             256,
             128,
             &mut t,
@@ -259,7 +259,7 @@ fn main() {
 }
 
 /// A `MeshData { … }` literal of `s` (I16F16 bits through `v`/`uv`).
-fn mesh_source<const V: usize, const T: usize>(s: &fixel::demo::MeshData<V, T>) -> String {
+fn mesh_source<const V: usize, const T: usize>(s: &fixel_scenes::MeshData<V, T>) -> String {
     let mut src = String::from("MeshData {\n positions: [");
     for p in &s.positions {
         let _ = write!(

@@ -4,13 +4,13 @@
 //! `recompute_normals` over `frames` frames of the once-subdivided rocky demo sphere
 //! (4655 vertices, 8832 triangles) with a moving offset; divide by `frames x 4655`.
 
-use fixel::demo::{self, displaced};
 use fixel::math::{Fx, Vec3};
 use fixel::scene::{
     count_edges, displace, subdivide, subdivide_capacity, weld, weld_table_words, Displacement,
     MeshStorage,
 };
 use fixel::texture::HeightMap;
+use fixel_scenes::{self as demo, displaced};
 
 fn main() -> Result<(), fixel::Error> {
     let frames: u32 = std::env::args()

@@ -2,13 +2,13 @@
 //! `tests/displacement_hard_cases.rs`): fixel's subdivided, welded and displaced meshes as
 //! vectors, their f64 twins for the reference, and the demo height maps.
 
-use fixel::demo::displaced::{rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE};
 use fixel::math::{Fx, Vec3};
 use fixel::scene::{
     count_edges, count_edges_words, displace, subdivide, subdivide_capacity, weld,
     weld_table_words, Displacement, Mesh, MeshStorage,
 };
 use fixel::Error;
+use fixel_scenes::displaced::{rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE};
 
 use crate::reference::displace::RefMesh;
 

@@ -59,11 +59,11 @@ pub fn cube<F: Sampler>(f: &[Vec<Rgb565>], size: u32, filter: F) -> CubeMap<'_, 
 /// The triangles of `m` (with `model`, the benchmark camera of frame 20) as vertices of
 /// `vertex` (for example [`EnvVertices::per_pixel`]).
 pub fn triangles<const V: usize, const T: usize, const N: usize>(
-    m: &fixel::demo::MeshData<V, T>,
+    m: &fixel_scenes::MeshData<V, T>,
     model: &Mat4,
     vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
 ) -> Vec<[Vertex<N>; 3]> {
-    let cam = fixel::demo::camera(20);
+    let cam = fixel_scenes::camera(20);
     let s = EnvVertices::new(model, &cam.projection.mul(&cam.view), Vec3::ZERO);
     m.indices
         .iter()
@@ -79,8 +79,8 @@ pub fn triangles<const V: usize, const T: usize, const N: usize>(
 /// The benchmark sphere (frame 0) with per-pixel-reflection vertices.
 pub fn sphere_pixel() -> Vec<[Vertex<6>; 3]> {
     triangles(
-        &fixel::demo::sphere(),
-        &fixel::demo::sphere_model(0),
+        &fixel_scenes::sphere(),
+        &fixel_scenes::sphere_model(0),
         EnvVertices::per_pixel,
     )
 }

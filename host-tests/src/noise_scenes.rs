@@ -5,18 +5,16 @@
 use crate::reference::noise::{render_solid, RefOctaves, RefPattern, RefSolidImage};
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::scene::DirectionalLight;
-use fixel::shading::noise::presets::{
-    marble_sphere_model, wood_cube_model, FLOOR_SCALE, SHOWCASE_SCALE,
-};
 use fixel::shading::noise::{BandLimit, Fixed, Octaves, Pattern, Ramps, SolidMesh, SolidShader};
 use fixel::shading::Shader;
 use fixel::surface::{Frame, DEPTH_CLEAR};
 use fixel::texture::LodGranularity;
+use fixel_scenes as demo;
+use fixel_scenes::noise::{marble_sphere_model, wood_cube_model, FLOOR_SCALE, SHOWCASE_SCALE};
 
 /// Frame width of the test scenes.
 pub const W: u32 = 160;

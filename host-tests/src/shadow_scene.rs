@@ -7,7 +7,6 @@
 //! fraction is within 1/126 of the shader's own Q8 value.
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
-use fixel::demo::shadow as scene;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, DepthOnlyDraw, Exact, ShadedDraw};
@@ -16,6 +15,7 @@ use fixel::shading::pcf::ShadowFilter;
 use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Outside, Shadowed};
 use fixel::shading::Flat;
 use fixel::surface::{DepthMap, Frame};
+use fixel_scenes::shadow as scene;
 
 use crate::reference::shadow::{mul, transform, RefBias, ShadowScene, M4};
 

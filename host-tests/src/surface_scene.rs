@@ -1,11 +1,9 @@
-//! The surface-detail scenes (`fixel::demo::surface`: the brick sphere under a circling
+//! The surface-detail scenes (`fixel_scenes::surface`: the brick sphere under a circling
 //! point light) drawn by fixel in each lighting variant and by the f64 reference from the
 //! same data, for the tests, goldens and the report.
 
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565, RgbColor};
-use fixel::demo::bricks::{brick_colours, brick_heights};
-use fixel::demo::surface;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{fx, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
@@ -20,6 +18,8 @@ use fixel::texture::{
     chain_len, full_levels, generate_height_mips, Bilinear, HeightMap, Lod, MipTexture, Nearest,
     NearestMipmapNearest, Repeat, Texture,
 };
+use fixel_scenes::bricks::{brick_colours, brick_heights};
+use fixel_scenes::surface;
 
 use crate::reference::lighting::{RefLight, RefLitScene, RefMaterial, RefNormals};
 use crate::reference::types::{RefFilter, RefImage, RefTexture};

@@ -5,7 +5,6 @@
 //! reference covers partly) and on the whole frame.
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection};
@@ -13,6 +12,7 @@ use fixel::scene::{draw_mesh, jittered, Camera, DirectionalLight, SamplePattern}
 use fixel::surface::{resolve_box, Accumulator, Frame};
 use fixel::texture::{Filter, Texture};
 use fixel::Rgb565;
+use fixel_scenes as demo;
 use host_tests::reference;
 use host_tests::scenes;
 

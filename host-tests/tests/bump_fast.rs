@@ -11,11 +11,11 @@
 //! | frame vs fixel's per-pixel bump (same light and material) | mean 0.89, max 16 LSB, 27.9 dB |
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo::surface;
 use fixel::math::Fx;
 use fixel::shading::bump::{resolve_sphere, HeightDifferences};
 use fixel::shading::lighting::{Material, Specular};
 use fixel::texture::{chain_len, Filter, HeightMap, Texture};
+use fixel_scenes::surface;
 use host_tests::metrics::{channel_errors, compare};
 use host_tests::reference::{render, rgb565_from_f64, RefShading, RefTexture};
 use host_tests::{adapter, scenes};
@@ -212,8 +212,8 @@ fn resolved_frame_against_per_pixel_bump() {
     let mut vertices = vec![Vertex::new([Fx::ZERO; 4], [0; 8]); sphere.positions.len()];
     let light = PixelLight::directional(surface::resolve_light()).unwrap();
     mesh.bump_vertices(
-        &fixel::demo::sphere_model(0),
-        &fixel::demo::camera(20),
+        &fixel_scenes::sphere_model(0),
+        &fixel_scenes::camera(20),
         &light,
         &mut vertices,
     )

@@ -15,8 +15,6 @@
 //! 3.4e-4, 9.0e-4 and 3.1e-3.
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo::displaced::{grid, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE};
-use fixel::demo::{self, MeshData};
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection, Shading};
@@ -24,6 +22,8 @@ use fixel::scene::{draw_mesh, Camera, DirectionalLight, Displacement, Mesh};
 use fixel::surface::Frame;
 use fixel::texture::HeightMap;
 use fixel::Rgb565;
+use fixel_scenes::displaced::{grid, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE};
+use fixel_scenes::{self as demo, MeshData};
 use host_tests::displaced::{f3, max_step, rock, to_ref, waves, Fine, LSB};
 use host_tests::reference::displace::{self as reference, RefDisplacement, RefHeights};
 use proptest::prelude::*;

@@ -2,8 +2,6 @@
 //! small, indices out of range, seam and pole copies that must not crack, and the
 //! silhouette against bump mapping's.
 
-use fixel::demo;
-use fixel::demo::displaced::{ROCK_HEIGHT, ROCK_WIDTH};
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{fx, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Shading};
@@ -14,6 +12,8 @@ use fixel::scene::{
 use fixel::surface::Frame;
 use fixel::texture::HeightMap;
 use fixel::{Error, Rgb565};
+use fixel_scenes as demo;
+use fixel_scenes::displaced::{ROCK_HEIGHT, ROCK_WIDTH};
 use host_tests::displaced::{f3, rock, Fine};
 use host_tests::reference::displace as reference;
 

@@ -120,7 +120,7 @@ fn env_lit_frame_matches_reference() {
         CubeMap::new(faces, Bilinear).unwrap()
     }
     let mut base = vec![Rgb565::new(0, 0, 0); 256 * 128];
-    fixel::demo::checker_texture(256, 128, &mut base).unwrap();
+    fixel_scenes::checker_texture(256, 128, &mut base).unwrap();
     let mip = MipTexture::single(Texture::new(&base, 256, 128).unwrap());
     let shader = EnvLit {
         base: TexBinding::new(&mip, Bilinear, Repeat, Repeat, Lod::default()).unwrap(),
@@ -128,10 +128,10 @@ fn env_lit_frame_matches_reference() {
         glossy: cube(&glos),
         specular: 128,
     };
-    let m = fixel::demo::sphere();
-    let cam = fixel::demo::camera(20);
+    let m = fixel_scenes::sphere();
+    let cam = fixel_scenes::camera(20);
     let s = EnvVertices::new(
-        &fixel::demo::sphere_model(0),
+        &fixel_scenes::sphere_model(0),
         &cam.projection.mul(&cam.view),
         Vec3::ZERO,
     );

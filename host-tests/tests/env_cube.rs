@@ -270,8 +270,8 @@ struct Scene {
     vertex: Vec<[Vertex<3>; 3]>,
 }
 
-fn scene<const V: usize, const T: usize>(m: &fixel::demo::MeshData<V, T>, model: &Mat4) -> Scene {
-    let cam = fixel::demo::camera(20);
+fn scene<const V: usize, const T: usize>(m: &fixel_scenes::MeshData<V, T>, model: &Mat4) -> Scene {
+    let cam = fixel_scenes::camera(20);
     let s = EnvVertices::new(model, &cam.projection.mul(&cam.view), Vec3::ZERO);
     let tri = |t: &[u16; 3]| t.map(|i| (m.positions[usize::from(i)], m.normals[usize::from(i)]));
     Scene {
@@ -289,11 +289,11 @@ fn scene<const V: usize, const T: usize>(m: &fixel::demo::MeshData<V, T>, model:
 }
 
 fn sphere_scene() -> Scene {
-    scene(&fixel::demo::sphere(), &fixel::demo::sphere_model(0))
+    scene(&fixel_scenes::sphere(), &fixel_scenes::sphere_model(0))
 }
 
 fn cube_scene() -> Scene {
-    scene(&fixel::demo::cube(), &fixel::demo::cube_model(0))
+    scene(&fixel_scenes::cube(), &fixel_scenes::cube_model(0))
 }
 
 fn draw<S: Shader<Varyings = [i32; N]>, const N: usize>(

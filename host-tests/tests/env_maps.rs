@@ -266,10 +266,10 @@ fn frame<S: Shader<Varyings = [i32; 6]>>(
 /// per pixel: fixel against the f64 reference.
 #[test]
 fn sphere_frames_match_reference() {
-    let m = fixel::demo::sphere();
-    let cam = fixel::demo::camera(20);
+    let m = fixel_scenes::sphere();
+    let cam = fixel_scenes::camera(20);
     let s = EnvVertices::new(
-        &fixel::demo::sphere_model(0),
+        &fixel_scenes::sphere_model(0),
         &cam.projection.mul(&cam.view),
         Vec3::ZERO,
     );

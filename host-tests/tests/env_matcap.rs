@@ -12,13 +12,13 @@
 //! | frame vs f64 per-pixel lookup of the same sphere map | 35.5 dB (the interpolation) |
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo;
 use fixel::math::{Fx, Vec3};
 use fixel::pipeline::{DepthLess, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh_walked, CachedVertex, MeshTransform, SphereMapUvs};
 use fixel::surface::DEPTH_CLEAR;
 use fixel::texture::{Bilinear, ClampToEdge};
+use fixel_scenes as demo;
 use host_tests::env_scene::{self, H, W};
 use host_tests::metrics::{compare_rgb565, Report};
 use host_tests::reference::env::{cube_sample, reflect, sphere_st};

@@ -48,8 +48,8 @@ fn mips(c: &[Vec<Rgb565>], size: u32) -> [MipTexture<'_>; 6] {
 
 fn sphere() -> Vec<[Vertex<8>; 3]> {
     env_scene::triangles(
-        &fixel::demo::sphere(),
-        &fixel::demo::sphere_model(0),
+        &fixel_scenes::sphere(),
+        &fixel_scenes::sphere_model(0),
         EnvVertices::per_pixel_mip,
     )
 }

@@ -4,7 +4,6 @@
 //! (and look at the images).
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{
@@ -18,6 +17,7 @@ use fixel::shading::triplanar::{Triplanar, TriplanarMesh};
 use fixel::surface::{BandRenderer, Binned, Frame};
 use fixel::texture::{Bilinear, Filter, Texture, Wrap};
 use fixel::Rgb565;
+use fixel_scenes as demo;
 use host_tests::golden::assert_golden;
 
 #[allow(dead_code)]

@@ -10,10 +10,10 @@
 mod scenes;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, DirectionalLight, Mesh};
 use fixel::texture::MipTexture;
+use fixel_scenes as demo;
 #[path = "../../examples/firmware/src/aa_scene.rs"]
 mod aa_scene;
 
@@ -267,12 +267,12 @@ fn mcu_frames() {
 
     // Per-pixel lighting with bump mapping: the firmware's flash tables, built here at run
     // time by the same functions.
-    let (sphere, tangents) = fixel::demo::surface::sphere().unwrap();
+    let (sphere, tangents) = fixel_scenes::surface::sphere().unwrap();
     let sphere = Box::new(sphere);
     let chain = fixel::texture::chain_len(bump_scene::SIZE, bump_scene::SIZE, bump_scene::LEVELS);
     let mut colours = vec![Rgb565::new(0, 0, 0); (bump_scene::SIZE * bump_scene::SIZE) as usize];
     let (mut heights, mut derivs) = (vec![0u8; chain], vec![Rgb565::new(0, 0, 0); chain]);
-    let scale = fixel::demo::surface::brick_maps(
+    let scale = fixel_scenes::surface::brick_maps(
         bump_scene::SIZE,
         bump_scene::LEVELS,
         &mut colours,
@@ -566,10 +566,10 @@ fn mcu_env_matcap() {
 /// two bakes equal).
 #[test]
 fn mcu_noise_baked() {
-    use fixel::shading::noise::{bake, presets, BandLimit, Ramps};
+    use fixel::shading::noise::{bake, BandLimit, Ramps};
     let ramps = Ramps::new().unwrap();
     let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
-    let surface = presets::baked_sphere_surface();
+    let surface = fixel_scenes::noise::baked_sphere_surface();
     bake(
         &ramps.marble(),
         &BandLimit::new(6),
@@ -607,10 +607,10 @@ fn mcu_noise_baked() {
 /// firmware's is resolved by its `build.rs` with the same function).
 #[test]
 fn mcu_bump_fast() {
-    use fixel::demo::surface;
     use fixel::shading::bump::{resolve_sphere, HeightDifferences};
     use fixel::shading::lighting::{Material, Specular};
     use fixel::texture::{chain_len, HeightMap};
+    use fixel_scenes::surface;
     let (n, levels) = (64, 7);
     let mut colours = vec![Rgb565::new(0, 0, 0); 64 * 64];
     let mut heights = vec![0u8; chain_len(n, n, levels)];

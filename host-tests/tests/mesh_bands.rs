@@ -16,7 +16,6 @@ mod common;
 
 use common::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::Viewport;
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, KeptSetup, Projection, Shading};
@@ -28,6 +27,7 @@ use fixel::scene::{
 use fixel::surface::Binned;
 use fixel::surface::{BandRange, BandRenderer, Frame};
 use fixel::texture::{Filter, Wrap};
+use fixel_scenes as demo;
 use proptest::prelude::*;
 
 /// A random mesh's arrays.

@@ -4,13 +4,13 @@
 
 use core::convert::Infallible;
 
-use fixel::demo;
 use fixel::math::{fx, try_fx, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, NoDepth, Pipeline, Replace};
 use fixel::prelude::*;
 use fixel::scene::{draw_mesh, mesh_triangles, DirectionalLight};
 use fixel::surface::{BandError, Binned};
 use fixel::texture::{Bilinear, Repeat};
+use fixel_scenes as demo;
 
 type Lit = Pipeline<Exact, Bilinear, Repeat, Repeat, ModulateIntensity, DepthLess>;
 type Unlit = Pipeline<Exact, Bilinear, Repeat, Repeat, Replace, NoDepth>;

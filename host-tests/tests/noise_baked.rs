@@ -14,7 +14,7 @@ use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::math::Fx;
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::{
-    bake, bake_mips, presets, BakeSurface, BandLimit, Ramps, SolidMesh, SolidShader, SphereSurface,
+    bake, bake_mips, BakeSurface, BandLimit, Ramps, SolidMesh, SolidShader, SphereSurface,
 };
 use fixel::texture::{chain_len, full_levels, Filter};
 use host_tests::metrics::{channel_errors, compare, compare_rgb565};
@@ -32,7 +32,7 @@ const OCTAVES: u32 = 6;
 fn fixel_bake() -> Vec<Rgb565> {
     let ramps = Ramps::new().unwrap();
     let mut t = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
-    let s = presets::baked_sphere_surface();
+    let s = fixel_scenes::noise::baked_sphere_surface();
     bake(
         &ramps.marble(),
         &BandLimit::new(OCTAVES as u8),
@@ -49,7 +49,9 @@ fn fixel_bake() -> Vec<Rgb565> {
 /// `(s, t)`, band-limited to the texel's widest side (on the equator).
 fn reference_bake() -> Vec<[f64; 3]> {
     let marble = RefPattern::presets()[0];
-    let r = presets::baked_sphere_surface().radius.to_num::<f64>();
+    let r = fixel_scenes::noise::baked_sphere_surface()
+        .radius
+        .to_num::<f64>();
     let pi = std::f64::consts::PI;
     let lambda = (2.0 * pi * r / f64::from(W))
         .max(pi * r / f64::from(H))
@@ -129,18 +131,18 @@ fn baked_frame_matches_reference() {
 /// pixel), and fixel's per-pixel solid texture against the same, for scale.
 #[test]
 fn baked_frame_against_solid_texture() {
-    let sphere = fixel::demo::sphere();
+    let sphere = fixel_scenes::sphere();
     let mesh = SolidMesh::new(
         &sphere.positions,
         Some(&sphere.normals),
         &sphere.indices,
-        presets::SHOWCASE_SCALE,
+        fixel_scenes::noise::SHOWCASE_SCALE,
     )
     .unwrap();
     let mut tris = Vec::new();
     mesh.triangles(
-        &fixel::demo::sphere_model(0),
-        &fixel::demo::camera(20),
+        &fixel_scenes::sphere_model(0),
+        &fixel_scenes::camera(20),
         Some(&DirectionalLight::default()),
         |t| tris.push(*t),
     );
@@ -200,7 +202,7 @@ fn mip_chain_is_baked_per_level() {
     let ramps = Ramps::new().unwrap();
     let levels = full_levels(W, H);
     let mut chain = vec![Rgb565::new(0, 0, 0); chain_len(W, H, levels)];
-    let s = presets::baked_sphere_surface();
+    let s = fixel_scenes::noise::baked_sphere_surface();
     bake_mips(
         &ramps.marble(),
         &BandLimit::new(6),

@@ -263,7 +263,7 @@ fn solid_times_texture_is_the_product() {
     use fixel::texture::{Bilinear, Lod, MipTexture, Repeat, Texture};
 
     let mut texels = vec![Rgb565::default(); 32 * 32];
-    fixel::demo::checker_texture(32, 32, &mut texels).unwrap();
+    fixel_scenes::checker_texture(32, 32, &mut texels).unwrap();
     let chain = MipTexture::single(Texture::new(&texels, 32, 32).unwrap());
     let bind = || TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
     let ramps = Ramps::new().unwrap();

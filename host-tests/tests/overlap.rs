@@ -15,7 +15,6 @@ use std::collections::VecDeque;
 
 use common::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::Viewport;
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, KeptSetup, Projection, Shading};
@@ -26,6 +25,7 @@ use fixel::scene::{
 use fixel::surface::{BandDraw, BandError, BandRange, BandRenderer, BandSender, Binned, Frame};
 use fixel::texture::{Filter, Wrap};
 use fixel::Error;
+use fixel_scenes as demo;
 use proptest::prelude::*;
 
 /// A random mesh's arrays.

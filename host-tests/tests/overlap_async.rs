@@ -19,13 +19,13 @@ use std::task::{Context, Poll, Waker};
 use common::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_hal::spi::{ErrorType, Operation};
-use fixel::demo;
 use fixel::geometry::Viewport;
 use fixel::pipeline::{Draw, DrawMode};
 use fixel::scene::mesh_triangles;
 use fixel::surface::{
     AsyncBandSender, BandRenderer, BandSender, Binned, Frame, SpiSender, TriangleSink,
 };
+use fixel_scenes as demo;
 use proptest::prelude::*;
 
 /// Runs a future to its end with a waker that does nothing (every test sender makes

@@ -25,7 +25,6 @@ mod palette {
 }
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo;
 use fixel::geometry::Vertex;
 use fixel::pipeline::{DepthLess, ProjectionStage, QuadraticBy, ShadedDraw, SubdividedBy};
 use fixel::prelude::*;
@@ -36,6 +35,7 @@ use fixel::shading::{
 use fixel::texture::{
     Bilinear, Index4, Index8, IndexFormat, Lod, MipTexture, Nearest, PaletteTexture, Repeat,
 };
+use fixel_scenes as demo;
 use host_tests::golden::assert_golden;
 use scenes::{Fnv1a, FrameResult, SmallBuffers};
 

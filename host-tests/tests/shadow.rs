@@ -6,11 +6,11 @@
 //! Errors are in lit fraction (0..=1) per covered pixel: `mean` is the mean absolute
 //! difference, `wrong` the pixels on the other side of a shadow edge (difference > 0.5).
 
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::geometry::Cull;
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
 use fixel::shading::shadow::{Bias, Directional, LightKind, LightSpace, Outside};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter, RefShadowImage};
 use host_tests::shadow_scene::{
     demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, FixelShadow, LitError, SceneMesh,
@@ -346,7 +346,7 @@ fn front_face_culling_against_acne() {
 fn face_at_angle<F: ShadowFilter>(theta: f64) -> (Vec<f64>, Vec<f64>) {
     use fixel::math::fx;
     use fixel::scene::Camera;
-    let cube = fixel::demo::cube();
+    let cube = fixel_scenes::cube();
     let turn = Angle::from_degrees(fx(-(90.0 - theta)));
     let centre = Vec3::new(Fx::ZERO, Fx::ZERO, fx(-4.0));
     let mesh = SceneMesh {

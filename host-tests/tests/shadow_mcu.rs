@@ -11,8 +11,6 @@ mod scenes;
 mod shadow;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::prelude::*;
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
@@ -20,6 +18,8 @@ use fixel::shading::shadow::{Bias, LightKind, LightSpace, Shadowed};
 use fixel::shading::ModulateIntensity;
 use fixel::surface::ShadowMap;
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
+use fixel_scenes as demo;
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use scenes::Fnv1a;
 use shadow::ShadowBuffers;
 

@@ -3,7 +3,6 @@
 //! points), the refusal of bad input, and golden images of the showcase panels.
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::prelude::*;
@@ -14,6 +13,7 @@ use fixel::shading::shadow::{
 use fixel::shading::{Flat, ModulateIntensity};
 use fixel::surface::{DepthMap, ShadowMap};
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use host_tests::golden::assert_golden;
 use host_tests::reference::shadow::{filter, project, transform, RefMap, RefShadowFilter};
 use host_tests::shadow_scene::m4;
@@ -161,7 +161,7 @@ fn bad_input_is_refused_with_errors_that_say_what() {
     let mut small = vec![0xFFFFu16; 32 * 32];
     let mut small_map = DepthMap::new(&mut small, 32).unwrap();
     let space = scene::directional(SceneLight::High).unwrap();
-    let cube = fixel::demo::cube();
+    let cube = fixel_scenes::cube();
     assert_eq!(
         fixel::scene::light_pass_mesh(
             &pass,
@@ -257,7 +257,7 @@ fn golden_showcase_panels() {
         name: &str,
     ) {
         let mut t128 = vec![Rgb565::new(0, 0, 0); 128 * 128];
-        fixel::demo::checker_texture(128, 128, &mut t128).unwrap();
+        fixel_scenes::checker_texture(128, 128, &mut t128).unwrap();
         let mut t64 = vec![Rgb565::new(0, 0, 0); 64 * 64];
         scene::floor_texture(&mut t64).unwrap();
         let (ct, ft) = (

@@ -13,7 +13,6 @@ mod common;
 
 use common::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::Viewport;
 use fixel::pipeline::{Draw, DrawMode, Shading};
 use fixel::scene::{mesh_triangles, DirectionalLight};
@@ -22,6 +21,7 @@ use fixel::surface::{
     TriangleSink,
 };
 use fixel::Error;
+use fixel_scenes as demo;
 use proptest::prelude::*;
 
 type Sent = (i32, Vec<u16>);

@@ -2,9 +2,9 @@
 //! (`host_tests::reference::lighting`): error budgets per variant, the gain of per-pixel
 //! lighting over Gouraud on the highlight, and the hard cases.
 
-use fixel::demo::surface;
 use fixel::math::{fx, Vec3};
 use fixel::scene::PixelLight;
+use fixel_scenes::surface;
 use host_tests::metrics::{compare, Report};
 use host_tests::surface_scene::{
     render_fixel, render_reference, sphere, wall, Assets, MeshArrays, Variant, SIZE,
@@ -202,7 +202,7 @@ proptest! {
         strength in 0.0f64..0.05,
     ) {
         let mut heights = vec![0u8; (SIZE * SIZE) as usize];
-        fixel::demo::bricks::brick_heights(SIZE, &mut heights).unwrap();
+        fixel_scenes::bricks::brick_heights(SIZE, &mut heights).unwrap();
         let a = Assets::with_heights(&heights, strength);
         let s = sphere();
         let light = PixelLight::point(Vec3::new(fx(lx), fx(ly), fx(lz))).unwrap();

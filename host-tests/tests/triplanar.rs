@@ -3,7 +3,6 @@
 //! the error budget, for the default and the widest blend.
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
@@ -12,6 +11,7 @@ use fixel::shading::triplanar::{Triplanar, TriplanarMesh};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, Texture};
 use fixel::Rgb565;
+use fixel_scenes as demo;
 use host_tests::adapter;
 use host_tests::metrics::compare;
 use host_tests::reference::{triplanar, RefFilter};

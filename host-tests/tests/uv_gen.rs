@@ -116,7 +116,7 @@ fn r_frame(r: &RefUvMapping, p: [f64; 3], c: [f64; 3]) -> (f64, f64, f64) {
 /// and no triangle spans more than half the texture.
 #[test]
 fn seam_and_poles_match_the_reference() {
-    let s = fixel::demo::sphere();
+    let s = fixel_scenes::sphere();
     for k in [1, 4] {
         let (m, r) = mappings(Vec3::ZERO, k);
         let need = map_mesh_capacity(&m, &s.positions, &s.indices).unwrap();
@@ -171,7 +171,7 @@ fn seam_and_poles_match_the_reference() {
 #[test]
 fn generated_sphere_renders_like_the_reference() {
     let scene = scenes::sphere(0);
-    let fs = fixel::demo::sphere();
+    let fs = fixel_scenes::sphere();
     let (m, r) = mappings(Vec3::ZERO, 1);
     let need = map_mesh_capacity(&m, &fs.positions, &fs.indices).unwrap();
     let (mut p, mut uv, mut ix) = (

@@ -4,7 +4,6 @@
 //! poles included (no vertex copies needed).
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
@@ -13,6 +12,7 @@ use fixel::shading::uv_per_pixel::{PerPixelMesh, PerPixelUv};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, Texture};
 use fixel::Rgb565;
+use fixel_scenes as demo;
 use host_tests::adapter;
 use host_tests::metrics::compare;
 use host_tests::reference::uv_gen::{render_per_pixel, RefAxis, RefUvMapping};

@@ -74,6 +74,6 @@ pub fn try_fx<T: fixed::traits::ToFixed + Copy>(v: T) -> Result<Fx, crate::Error
 pub use div::{div_floor_i64, div_round_i64, div_u64, Divisor32, HW_DIVIDE};
 pub use mat::Mat4;
 pub use recip::{div_fx, isqrt_u32, isqrt_u64, recip_fx, reciprocal_u32};
-pub use trig::{sin_cos, Angle};
+pub use trig::{sin_cos, sin_cos_q30, Angle};
 pub use unit::{dot_q14, unit_q14, UNIT_Q14};
 pub use vec::{Vec3, Vec4};

@@ -162,7 +162,7 @@ pub fn sin_cos(a: Angle) -> (Fx, Fx) {
 
 /// Sine and cosine in Q2.30 (value = bits / 2^30) of an angle in 2^-32 turns.
 /// Abs error a few 2^-30.
-pub(crate) fn sin_cos_q30(t: u32) -> (i32, i32) {
+pub fn sin_cos_q30(t: u32) -> (i32, i32) {
     let (s, c) = quarter_q30(t & ((1 << 30) - 1));
     apply_quadrant(t >> 30, s as i32, c as i32)
 }

@@ -275,7 +275,7 @@ impl FaceCull {
 /// tiny against the mesh's extent) are left to the screen-space test.
 ///
 /// ```
-/// use fixel::demo;
+/// use fixel_scenes as demo;
 /// use fixel::geometry::Cull;
 /// use fixel::scene::MeshTransform;
 ///
@@ -475,15 +475,15 @@ mod tests {
     /// both as a back and as a front face, and an index out of range is never culled.
     #[test]
     fn the_facing_test_is_the_walkers() {
-        let data = crate::demo::sphere();
+        let data = crate::test_scenes::sphere();
         let mesh = data.mesh().unwrap();
-        let camera = crate::demo::camera(0);
+        let camera = crate::test_scenes::camera(0);
         for frame in 0..4 {
             let transform =
-                crate::scene::MeshTransform::new(&crate::demo::sphere_model(frame), &camera);
+                crate::scene::MeshTransform::new(&crate::test_scenes::sphere_model(frame), &camera);
             let mvp = camera
                 .projection
-                .mul(&camera.view.mul(&crate::demo::sphere_model(frame)));
+                .mul(&camera.view.mul(&crate::test_scenes::sphere_model(frame)));
             let eye = camera_centre(&mvp);
             let back = transform.facing_test(&mesh, Cull::Back).unwrap();
             let front = transform.facing_test(&mesh, Cull::Front).unwrap();

@@ -16,7 +16,7 @@
 //! RAM with [`write_face_planes`]. A mesh without planes links and runs none of this.
 //!
 //! ```
-//! use fixel::demo;
+//! use fixel_scenes as demo;
 //! use fixel::geometry::Cull;
 //! use fixel::scene::{face_planes, FacePlane, Mesh, MeshTransform};
 //!

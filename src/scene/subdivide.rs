@@ -507,7 +507,7 @@ mod tests {
     /// The storage table of the module docs.
     #[test]
     fn documented_storage_per_level() {
-        let s = crate::demo::sphere();
+        let s = crate::test_scenes::sphere();
         let mut table = [0u32; 1 << 15];
         let e = count_edges(&s.indices, &mut table).unwrap();
         assert_eq!(e, 3430);
@@ -518,7 +518,8 @@ mod tests {
         let two = subdivide_capacity(1225, 2208, e, 2);
         assert_eq!((two.vertices, two.triangles), (18139, 35328));
         assert_eq!(bytes(two), (792_416, 262_144));
-        let g: crate::demo::MeshData<289, 512> = crate::demo::displaced::grid(16, Fx::ONE);
+        let g: crate::test_scenes::MeshData<289, 512> =
+            crate::test_scenes::displaced::grid(16, Fx::ONE);
         assert_eq!(count_edges(&g.indices, &mut table), Ok(800));
         assert_eq!(
             bytes(subdivide_capacity(289, 512, 800, 1)),

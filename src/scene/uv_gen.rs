@@ -494,8 +494,8 @@ pub fn map_mesh_with<'a, G: UvGenerator>(
 mod tests {
     extern crate std;
     use super::*;
-    use crate::demo;
     use crate::math::fx;
+    use crate::test_scenes as demo;
     use std::vec;
 
     const CYL: UvMapping = UvMapping::Cylindrical {

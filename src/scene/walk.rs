@@ -736,9 +736,9 @@ pub fn draw_mesh_walked<C: TargetColor, T: RenderTarget<Color = C>, G: VertexUv>
 mod tests {
     extern crate std;
     use super::{walk_mesh, CachedVertex, MeshTransform, TriangleOut};
-    use crate::demo;
     use crate::geometry::{Cull, ScreenTriangle, Viewport};
     use crate::pipeline::{Draw, DrawMode, Shading};
+    use crate::test_scenes as demo;
     use embedded_graphics_core::pixelcolor::Rgb565;
     use std::vec::Vec;
 

@@ -1,7 +1,7 @@
 //! `cargo xtask bake-displaced`: a displaced mesh baked into a Rust source file of `static`
 //! arrays (the format of `bake-obj`), so firmware that shows a rocky sphere pays nothing at
 //! run time: the demo UV sphere subdivided by `fixel::scene::subdivide`, welded, displaced
-//! by the procedural rock height map (`fixel::demo::displaced::rock_heights`) with
+//! by the procedural rock height map (`fixel_scenes::displaced::rock_heights`) with
 //! `fixel::scene::displace`, the same functions as at run time (no f64 copy here).
 //!
 //! ```text
@@ -19,16 +19,16 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use fixel::demo::displaced::{
-    grid, rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
-};
-use fixel::demo::{self, MeshData};
 use fixel::math::{Fx, Vec3};
 use fixel::scene::{
     count_edges, count_edges_words, displace, subdivide, subdivide_capacity, weld,
     weld_table_words, Displacement, MeshStorage,
 };
 use fixel::texture::HeightMap;
+use fixel_scenes::displaced::{
+    grid, rock_heights, wave_heights, ROCK_HEIGHT, ROCK_WIDTH, WAVE_SIDE,
+};
+use fixel_scenes::{self as demo, MeshData};
 
 use clap::{Args, ValueEnum};
 
@@ -258,7 +258,7 @@ pub fn run(args: &DisplacedArgs) -> Result<(), BakeError> {
         let (h, (w, hh)) = heights(&o);
         let _ = writeln!(
             text,
-            "/// The swell (`fixel::demo::displaced::wave_heights`), {w} x {hh} heights.\n\
+            "/// The swell (`fixel_scenes::displaced::wave_heights`), {w} x {hh} heights.\n\
              pub static {}_HEIGHTS: [u8; {}] = [",
             o.name,
             h.len()

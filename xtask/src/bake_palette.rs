@@ -374,7 +374,7 @@ fn read_source(input: &str) -> Result<(u32, u32, Vec<[u8; 3]>), String> {
             .and_then(|(a, b)| Some((a.parse::<u32>().ok()?, b.parse::<u32>().ok()?)))
             .ok_or_else(|| format!("{input}: expected checker:WxH"))?;
         let mut t = vec![fixel::Rgb565::new(0, 0, 0); (w * h) as usize];
-        fixel::demo::checker_texture(w, h, &mut t).map_err(|e| format!("{input}: {e}"))?;
+        fixel_scenes::checker_texture(w, h, &mut t).map_err(|e| format!("{input}: {e}"))?;
         // Bit-replicated to 8 bits: `chain` rounds them back to exactly these texels.
         return Ok((w, h, t.iter().map(|c| widen(channels(*c))).collect()));
     }

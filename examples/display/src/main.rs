@@ -15,7 +15,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_hal::delay::DelayNs;
 use embedded_hal::digital::{ErrorType as PinErrorType, OutputPin};
 use embedded_hal::spi::{ErrorType as SpiErrorType, Operation, SpiDevice};
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};

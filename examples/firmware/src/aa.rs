@@ -5,13 +5,13 @@
 
 use crate::scenes::{Fnv1a, FrameResult, LitSub4 as Lit, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::pipeline::Draw;
 use fixel::scene::{mesh_triangles, DirectionalLight};
 use fixel::surface::{resolve_box, BandError, BandRenderer, Binned};
 use fixel::texture::Texture;
 use fixel::Error;
+use fixel_scenes as demo;
 
 /// Largest supersampling factor the buffers hold.
 pub const K_MAX: u32 = 4;
@@ -50,7 +50,7 @@ pub fn band_ram(k: u32) -> u32 {
 
 /// The benchmark cube's geometry for frame `i`: mesh, model, camera and light.
 struct CubeScene {
-    data: fixel::demo::MeshData<24, 12>,
+    data: fixel_scenes::MeshData<24, 12>,
     model: fixel::math::Mat4,
     camera: fixel::scene::Camera,
     light: DirectionalLight,

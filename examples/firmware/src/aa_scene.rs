@@ -6,7 +6,6 @@
 
 use crate::scenes::{Fnv1a, FrameResult, LitSub4 as Lit, H, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::Fx;
 use fixel::pipeline::Draw;
@@ -14,6 +13,7 @@ use fixel::scene::{mesh_triangles, DirectionalLight, SamplePattern};
 use fixel::surface::{BandError, BandRenderer, Binned};
 use fixel::texture::Texture;
 use fixel::Error;
+use fixel_scenes as demo;
 
 /// Rows per band.
 pub const ROWS: u32 = 4;

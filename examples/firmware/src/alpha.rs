@@ -5,7 +5,6 @@
 
 use crate::scenes::Fnv1a;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{ClipVertex, Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Draw, Exact, ShadedDraw};
@@ -15,6 +14,7 @@ use fixel::shading::Shader;
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, Nearest, Texture};
 use fixel::Error;
+use fixel_scenes as demo;
 
 /// Frame width.
 pub const W: u32 = 240;

@@ -8,7 +8,6 @@
 
 use crate::scenes::{FloorNearest, Fnv1a, FrameResult, H, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{ClipVertex, Cull, Vertex, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{DepthLess, Draw, Exact, ShadedDraw};
@@ -17,6 +16,7 @@ use fixel::shading::alpha::{AlphaBlend, AlphaSource, AlphaTest, BlendMode};
 use fixel::surface::{BandDraw, BandRenderer, Binned};
 use fixel::texture::{Bilinear, Nearest, Texture};
 use fixel::Error;
+use fixel_scenes as demo;
 
 const ROWS: u32 = 8;
 const N: usize = (W * ROWS) as usize;

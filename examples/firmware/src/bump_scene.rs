@@ -1,4 +1,4 @@
-//! The `bump` scenes (`cargo xtask mcu`): the brick sphere of `fixel::demo::surface`
+//! The `bump` scenes (`cargo xtask mcu`): the brick sphere of `fixel_scenes::surface`
 //! bump-mapped from the precomputed derivative map (64 x 64 bricks, nearest mip), lit per
 //! pixel by the point light of frame 0, in a 240 x 240 viewport of the 320 x 240 frame.
 //! `bump` draws it in 8-row bands (each band builds only the vertices of the triangles that
@@ -12,7 +12,6 @@ use core::cell::Cell;
 use crate::open_frame::{open_bands, open_whole};
 use crate::scenes::{FrameResult, H, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::surface;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
@@ -25,6 +24,7 @@ use fixel::texture::{
     Bilinear, Lod, LodGranularity, MipTexture, NearestMipmapNearest, Repeat, Texture,
 };
 use fixel::Error;
+use fixel_scenes::surface;
 
 /// Side of the brick maps.
 pub const SIZE: u32 = 64;
@@ -34,7 +34,7 @@ pub const LEVELS: u32 = 7;
 /// ring at a time, so neighbours find their shared corners here.
 pub const VERTEX_CACHE: usize = 24;
 /// Triangles of the brick sphere.
-pub const TRIANGLES: usize = fixel::demo::SPHERE_TRIANGLES;
+pub const TRIANGLES: usize = fixel_scenes::SPHERE_TRIANGLES;
 
 /// The scene's data, wherever it is held (flash on the MCUs).
 #[derive(Clone, Copy)]

@@ -17,7 +17,7 @@
 use core::convert::Infallible;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::geometry::ScreenTriangle;
 use fixel::prelude::*;
 use fixel::scene::{

@@ -2,7 +2,7 @@
 //! host's runtime values bit for bit). The linker keeps only the ones a binary uses.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::{
+use fixel_scenes::{
     MeshData, FINE_SPHERE_TRIANGLES, FINE_SPHERE_VERTICES, SPHERE_TRIANGLES, SPHERE_VERTICES,
 };
 use fixel::math::{Fx, Vec3};
@@ -116,7 +116,7 @@ const fn uv(u: i32, v: i32) -> [Fx; 2] {
     [Fx::from_bits(u), Fx::from_bits(v)]
 }
 
-/// The benchmark sphere (`fixel::demo::sphere()`), ~52 KB of flash.
+/// The benchmark sphere (`fixel_scenes::sphere()`), ~52 KB of flash.
 pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/sphere.rs"));
 
@@ -126,7 +126,7 @@ pub static SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
 pub static SPHERE_FACES: [FacePlane; SPHERE_TRIANGLES] =
     face_planes(&SPHERE.positions, &SPHERE.indices);
 
-/// The geometry benchmark's fine sphere (`fixel::demo::fine_sphere()`: 5,265 vertices,
+/// The geometry benchmark's fine sphere (`fixel_scenes::fine_sphere()`: 5,265 vertices,
 /// 10,080 triangles), ~230 KB of flash: linked by the whole-layout `geometry` firmware only.
 pub static FINE_SPHERE: MeshData<FINE_SPHERE_VERTICES, FINE_SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/fine_sphere.rs"));
@@ -197,7 +197,7 @@ const fn tangent(x: i32, y: i32, z: i32, handedness: i8) -> fixel::scene::Tangen
     }
 }
 
-/// The bump scene's brick sphere (`fixel::demo::surface::sphere()`: the benchmark sphere's
+/// The bump scene's brick sphere (`fixel_scenes::surface::sphere()`: the benchmark sphere's
 /// tessellation, texture coordinates 4 x 2 around), ~52 KB of flash.
 pub static BRICK_SPHERE: MeshData<SPHERE_VERTICES, SPHERE_TRIANGLES> =
     include!(concat!(env!("OUT_DIR"), "/brick_sphere.rs"));
@@ -211,7 +211,7 @@ pub const BRICK_SIZE: u32 = 64;
 /// Mip levels of the brick derivative map.
 pub const BRICK_LEVELS: u32 = 7;
 
-/// The 64 x 64 brick colours (`fixel::demo::surface::brick_maps`), 8 KB.
+/// The 64 x 64 brick colours (`fixel_scenes::surface::brick_maps`), 8 KB.
 pub static BRICK_COLOURS: [Rgb565; 64 * 64] = texels(include_bytes!(concat!(
     env!("OUT_DIR"),
     "/brick-colours.bin"

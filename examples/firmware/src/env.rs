@@ -11,7 +11,6 @@
 //! (`fixel::scene::triangles_to_sink`).
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Vec3;
 use fixel::pipeline::{DepthLess, ProjectionStage, ShadedDraw};
@@ -20,6 +19,7 @@ use fixel::shading::Shader;
 use fixel::surface::{BandRange, Binnable};
 use fixel::texture::{Bilinear, Texture};
 use fixel::Error;
+use fixel_scenes as demo;
 
 use crate::scenes::{FrameResult, BAND_PIXELS, H, W};
 

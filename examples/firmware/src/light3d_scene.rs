@@ -14,17 +14,17 @@
 
 use crate::scenes::{Fnv1a, FrameResult, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::ScreenTriangle;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
 use fixel::scene::DirectionalLight;
-use fixel::shading::noise::presets::SHOWCASE_SCALE;
 use fixel::shading::noise::{LightMap3d, SolidMesh};
 use fixel::shading::Shader;
 use fixel::surface::{BandRenderer, Binnable, Binned};
 use fixel::Error;
+use fixel_scenes as demo;
+use fixel_scenes::noise::SHOWCASE_SCALE;
 
 #[path = "../../common/light3d_cube.rs"]
 #[allow(dead_code)]

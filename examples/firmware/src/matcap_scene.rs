@@ -6,11 +6,11 @@
 //! Shared word for word by the firmware and the host test `mcu_checksums`.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::pipeline::{DepthLess, Pipeline, Replace, SubdividedBy};
 use fixel::prelude::*;
 use fixel::scene::{Mesh, MeshTransform, SphereMapUvs};
 use fixel::texture::{Bilinear, ClampToEdge, MipTexture};
+use fixel_scenes as demo;
 
 use crate::scenes::{render_walk, viewport, FrameResult, Target};
 

@@ -10,18 +10,18 @@
 
 use crate::scenes::{Fnv1a, FrameResult, H, ROWS, W};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{sin_cos, Angle, Fx, Mat4, Vec3};
 use fixel::pipeline::{Exact, NoDepth, ProjectionStage, ShadedDraw};
 use fixel::scene::triangles_to_sink;
 use fixel::scene::DirectionalLight;
-use fixel::shading::noise::presets::{marble_sphere_model, SHOWCASE_SCALE};
 use fixel::shading::noise::SolidMesh;
 use fixel::shading::Shader;
 use fixel::surface::BandStats;
 use fixel::surface::{BandRange, BandRenderer, Binned, Frame};
 use fixel::Error;
+use fixel_scenes as demo;
+use fixel_scenes::noise::{marble_sphere_model, SHOWCASE_SCALE};
 
 /// Sphere stacks.
 pub const STACKS: u16 = 12;

@@ -17,7 +17,6 @@
 use core::convert::Infallible;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{ClipVertex, ScreenTriangle, Vertex};
 use fixel::pipeline::{DepthLess, ProjectionStage, QuadraticBy, ShadedDraw, SubdividedBy};
 use fixel::prelude::*;
@@ -28,6 +27,7 @@ use fixel::shading::{
 };
 use fixel::surface::Binnable;
 use fixel::texture::{Bilinear, IndexFormat, Lod, MipTexture, Nearest, PaletteTexture, Repeat};
+use fixel_scenes as demo;
 
 use crate::scenes::{geometry_done, viewport, Fnv1a, FrameResult, SmallBuffers, H, ROWS, W};
 

@@ -6,7 +6,6 @@
 
 use core::convert::Infallible;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo;
 use fixel::pipeline::KeptSetup;
 use fixel::pipeline::{
     Adaptive, DepthLess, ModulateFacet, ModulateIntensity, Pipeline, QuadraticBy, Replace,
@@ -21,6 +20,7 @@ use fixel::surface::{BandStats, Binned};
 use fixel::texture::{
     Bilinear, BilinearFootprint, BilinearFootprintSized, MipTexture, Nearest, Repeat,
 };
+use fixel_scenes as demo;
 
 /// Marks the end of a banded frame's binning pass for `cargo xtask mcu`'s geometry share
 /// (call it from the geometry closure when its sink is in the binning pass). Nothing on the

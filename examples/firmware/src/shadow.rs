@@ -1,4 +1,4 @@
-//! The shadow-mapping scene (`fixel::demo::shadow`) for the firmware: the light pass into a
+//! The shadow-mapping scene (`fixel_scenes::shadow`) for the firmware: the light pass into a
 //! 64 x 64 map (8 KiB), then the lit pass in bands of 4 rows (5 KiB of colour and depth),
 //! its screen triangles binned once by fixel's band renderer (`BandRenderer::render`). Shared word for word with the host test
 //! `host-tests/tests/shadow_mcu.rs` (included there with `#[path]`), so the checksums are
@@ -6,7 +6,6 @@
 //! stone texture), the cube `T(128, 128)`.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::geometry::ScreenTriangle;
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::prelude::*;
@@ -18,6 +17,7 @@ use fixel::shading::{ModulateIntensity, Shader};
 use fixel::surface::DepthMap;
 use fixel::surface::{BandRenderer, Binnable, Binned};
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 use crate::scenes::{Fnv1a, FrameResult, H, W};
 
@@ -115,7 +115,7 @@ where
 }
 
 /// [`lit_pass`]'s frame drawn whole into `color` / `depth` (320 x 240) from the map
-/// `map`, through the scene's own lit pass (`fixel::demo::shadow::lit_pass`): the figure
+/// `map`, through the scene's own lit pass (`fixel_scenes::shadow::lit_pass`): the figure
 /// the banded frame is compared with, and the same checksum.
 #[allow(clippy::too_many_arguments)]
 pub fn lit_pass_whole<K: LightKind, F: ShadowFilter, const M: usize>(

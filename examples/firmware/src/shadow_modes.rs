@@ -7,7 +7,6 @@
 
 use crate::scenes::Fnv1a;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::geometry::{Cull, Viewport};
 use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
@@ -16,6 +15,7 @@ use fixel::shading::{ModulateIntensity, TexBinding};
 use fixel::surface::{DepthMap, Frame, ShadowMap};
 use fixel::texture::{Bilinear, Lod, MipTexture, Repeat, Texture};
 use fixel::Error;
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 /// Frame width and height.
 pub const W: u32 = 320;

@@ -4,7 +4,7 @@
 //! harness without fixel (its flash is subtracted to get fixel's share).
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::math::{Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, Stages};
 use fixel::prelude::{BandRenderer, Cull, Viewport};

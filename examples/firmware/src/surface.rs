@@ -1,13 +1,11 @@
 //! Per-pixel lighting, bump and normal mapping on microcontrollers (`report_surface`,
-//! shared with the host report): the brick sphere of `fixel::demo::surface`, frame 0 under
+//! shared with the host report): the brick sphere of `fixel_scenes::surface`, frame 0 under
 //! light 0, in a 160 x 160 frame, in each lighting variant. The same code runs on the host,
 //! so checksums compare bit for bit; the host measures each frame's error against the f64
 //! reference. Vertices are prepared once per frame (`LitMesh::*_vertices`).
 
 use crate::scenes::Fnv1a;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo::surface;
-use fixel::demo::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Fx, Vec3};
 use fixel::pipeline::{DepthLess, Exact, ProjectionStage, ShadedDraw, SubdividedBy};
@@ -20,6 +18,8 @@ use fixel::texture::{
     chain_len, Bilinear, HeightMap, Lod, MipTexture, Nearest, NearestMipmapNearest, Repeat, Texture,
 };
 use fixel::Error;
+use fixel_scenes::surface;
+use fixel_scenes::{MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
 
 /// Frame side.
 pub const W: u32 = 160;

@@ -7,7 +7,7 @@
 use std::convert::Infallible;
 
 use embedded_graphics_core::draw_target::DrawTarget;
-use fixel::demo::{self, MeshData};
+use fixel_scenes::{self as demo, MeshData};
 use fixel::math::Fx;
 use fixel::pipeline::KeptSetup;
 use fixel::prelude::*;

@@ -29,10 +29,10 @@ use std::path::Path;
 use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
-use fixel::demo;
 use fixel::scene::SamplePattern;
 use fixel::texture::Texture;
 use fixel::Rgb565;
+use fixel_scenes as demo;
 use host_tests::reference::{self, RefTriangle};
 use host_tests::report_args::ReportArgs;
 use host_tests::scenes as ref_scenes;

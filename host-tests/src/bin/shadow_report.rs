@@ -25,9 +25,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Parser;
-use fixel::demo::shadow::{self as scene, SceneLight};
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
 use fixel::shading::shadow::{Bias, LightKind, LightSpace, Outside};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter};
 use host_tests::shadow_scene::{demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, Setup};
 
@@ -87,8 +87,8 @@ impl Firmware {
             vec![Rgb565::new(0, 0, 0); 128 * 128],
             vec![Rgb565::new(0, 0, 0); 64 * 64],
         );
-        fixel::demo::checker_texture(128, 128, &mut t128).unwrap();
-        fixel::demo::checker_texture(64, 64, &mut t64).unwrap();
+        fixel_scenes::checker_texture(128, 128, &mut t128).unwrap();
+        fixel_scenes::checker_texture(64, 64, &mut t64).unwrap();
         let tex = [
             fixel::texture::Texture::new(&t128, 128, 128).unwrap(),
             fixel::texture::Texture::new(&t64, 64, 64).unwrap(),

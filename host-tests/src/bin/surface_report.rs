@@ -1,5 +1,5 @@
 //! `cargo xtask report`, surface detail: the brick sphere of
-//! `fixel::demo::surface` (frame 0, light 0, 160 x 160) lit per vertex (Gouraud), per pixel
+//! `fixel_scenes::surface` (frame 0, light 0, 160 x 160) lit per vertex (Gouraud), per pixel
 //! (Phong, Blinn-Phong, textured), bump-mapped (precomputed derivatives, exact and
 //! subdivided by 8; height differences per pixel) and normal-mapped, through the firmware's
 //! own code (`examples/firmware/src/surface.rs`).
@@ -72,7 +72,7 @@ fn main() {
     assets.build().expect("assets");
     let refs = Assets::new();
     let sphere = scene::sphere();
-    let light = fixel::demo::surface::light(0);
+    let light = fixel_scenes::surface::light(0);
     let mut rows = Vec::new();
     for (k, name) in surface::VARIANTS.iter().enumerate() {
         let mut color = vec![Rgb565::new(0, 0, 0); (w * h) as usize];
@@ -102,7 +102,7 @@ fn main() {
     }
     let mut md = String::from(
         "# Surface detail: per-pixel lighting, bump and normal maps\n\n\
-         The brick sphere of `fixel::demo::surface` (2208 triangles, 64 x 64 brick maps, strength 0.02), \
+         The brick sphere of `fixel_scenes::surface` (2208 triangles, 64 x 64 brick maps, strength 0.02), \
          frame 0 under the point light of frame 0, 160 x 160, exact perspective unless stated; vertices \
          prepared once per frame and counted. Per drawn pixel. Error against the f64 per-pixel reference \
          (`host_tests::reference::lighting`; Gouraud against the same per-pixel ideal).\n\n\

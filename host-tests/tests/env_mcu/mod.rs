@@ -32,10 +32,10 @@ fn whole<S: Shader<Varyings = [i32; N]>, const N: usize>(
     shader: S,
     vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
 ) -> (u32, u32) {
-    let m = fixel::demo::sphere();
-    let cam = fixel::demo::camera(20);
+    let m = fixel_scenes::sphere();
+    let cam = fixel_scenes::camera(20);
     let setup = EnvVertices::new(
-        &fixel::demo::sphere_model(0),
+        &fixel_scenes::sphere_model(0),
         &cam.projection.mul(&cam.view),
         Vec3::ZERO,
     );
@@ -75,7 +75,7 @@ fn whole<S: Shader<Varyings = [i32; N]>, const N: usize>(
 fn env_frames() {
     let f = faces();
     let cube = env::env_cube([&f[0], &f[1], &f[2], &f[3], &f[4], &f[5]]).unwrap();
-    let sphere = Box::new(fixel::demo::sphere());
+    let sphere = Box::new(fixel_scenes::sphere());
     let mut buf = Box::new(env::EnvBuffers::new());
     let (mut nop1, mut nop2) = (|| {}, || {});
     let r = env::env_frame::<_, Exact, 6>(

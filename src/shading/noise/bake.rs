@@ -5,7 +5,7 @@
 //! object-space texture coordinates, costing what any textured draw costs.
 //!
 //! * [`SphereSurface`]: the texture coordinates of a UV sphere about the origin
-//!   (`fixel::demo::uv_sphere`'s convention): `u` the azimuth in turns from `+x` towards
+//!   (`fixel_scenes::uv_sphere`'s convention): `u` the azimuth in turns from `+x` towards
 //!   `−z`, `v` the polar angle from `+y` in half turns, so texel `(i, j)` lies at
 //!   `(sin θ cos φ, cos θ, −sin θ sin φ) · radius` with `φ = 2π (i + ½) / w`,
 //!   `θ = π (j + ½) / h`.

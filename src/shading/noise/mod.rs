@@ -49,7 +49,7 @@
 //! ```
 //! use fixel::prelude::*;
 //! use fixel::math::fx;
-//! use fixel::demo;
+//! use fixel_scenes as demo;
 //! use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 //! use fixel::scene::DirectionalLight;
 //! use fixel::shading::noise::{BandLimit, Ramps, SolidMesh, SolidShader};

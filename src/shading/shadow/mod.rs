@@ -56,7 +56,7 @@
 //! use fixel::shading::shadow::{with_light, Bias, Directional, LightSpace, Shadowed};
 //! use fixel::shading::Gouraud;
 //! use fixel::surface::DepthMap;
-//! use fixel::demo::{self, shadow::floor};
+//! use fixel_scenes::{self as demo, shadow::floor};
 //! use embedded_graphics_core::pixelcolor::Rgb565;
 //!
 //! // The benchmark cube over a floor, a light from above and to the left.

@@ -29,7 +29,7 @@ fn run() -> bool {
             scenes::Target::Bands(&mut buf),
             MipTexture::single(data::BRICKS_LIT256X128),
             &mesh,
-            &fixel::demo::sphere_model(frame),
+            &fixel_scenes::sphere_model(frame),
             20,
             false,
             pause,

@@ -22,7 +22,7 @@
 #![no_main]
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo::{self, MeshData};
+use fixel_scenes::{self as demo, MeshData};
 use fixel::geometry::{clip_and_project, keeps, prepare, ClipVertex, ScreenTriangle, ScreenVertex};
 use fixel::prelude::*;
 use fixel::scene::{

@@ -5,7 +5,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::SceneLight;
+use fixel_scenes::shadow::SceneLight;
 use fixel::geometry::Cull;
 use fixel::shading::pcf::Pcf3x3;
 use fixel_firmware::shadow::{self, ShadowBuffers};

@@ -4,7 +4,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use fixel_firmware::shadow::{self, ShadowBuffers, MAP_TEXELS};
 use fixel_firmware::{bench_end, bench_start, outln};
 

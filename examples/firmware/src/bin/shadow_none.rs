@@ -4,7 +4,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::{self as scene, SceneLight};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 use fixel_firmware::shadow::{self, ShadowBuffers};
 use fixel_firmware::{data, report};
 

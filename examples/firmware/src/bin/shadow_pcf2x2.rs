@@ -3,7 +3,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::SceneLight;
+use fixel_scenes::shadow::SceneLight;
 use fixel::geometry::Cull;
 use fixel::shading::pcf::Pcf2x2;
 use fixel_firmware::shadow::{self, ShadowBuffers};

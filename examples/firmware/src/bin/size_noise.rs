@@ -5,7 +5,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{Exact, NoDepth, ShadedDraw};

@@ -5,7 +5,7 @@
 #![no_std]
 #![no_main]
 
-use fixel::demo::shadow::SceneLight;
+use fixel_scenes::shadow::SceneLight;
 use fixel::shading::pcf::SingleTap;
 use fixel_firmware::{scenes, shadow};
 

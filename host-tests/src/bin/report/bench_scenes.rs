@@ -2,11 +2,11 @@
 //! textures and meshes they are drawn with.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::math::Mat4;
 use fixel::scene::Mesh;
 use fixel::texture::{chain_len, full_levels};
 use fixel::texture::{generate_mips, write_footprints, MipTexture, Texture};
+use fixel_scenes as demo;
 use host_tests::scenes as refscenes;
 
 use crate::modes::{self, Filt, Mode};

@@ -40,7 +40,7 @@ use std::collections::BTreeMap;
 use std::time::Instant;
 
 use clap::Parser;
-use fixel::demo;
+use fixel_scenes as demo;
 use host_tests::metrics::compare_rgb565;
 use host_tests::report_args::{parse_with_runs, ReportArgs};
 use indicatif::{ProgressBar, ProgressStyle};

@@ -6,11 +6,11 @@ use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
 use fixel::geometry::{ClipVertex, Cull, Viewport};
 use fixel::pipeline::{DepthTest, DrawMode, Shading};
 use fixel::scene::{draw_mesh, DirectionalLight};
 use fixel::surface::Frame;
+use fixel_scenes as demo;
 use host_tests::adapter;
 use host_tests::reference::{self, RefFilter, RefMip, RefMode, RefProjection, RefShading};
 use host_tests::scenes as refscenes;

@@ -88,8 +88,8 @@ fn main() {
         Bilinear,
     )
     .expect("cube");
-    let sphere = mesh(&fixel::demo::sphere(), &fixel::demo::sphere_model(0));
-    let cubem = mesh(&fixel::demo::cube(), &fixel::demo::cube_model(0));
+    let sphere = mesh(&fixel_scenes::sphere(), &fixel_scenes::sphere_model(0));
+    let cubem = mesh(&fixel_scenes::cube(), &fixel_scenes::cube_model(0));
 
     let mut md = String::from(
         "## Environment mapping\n\n\
@@ -398,7 +398,7 @@ fn main() {
             .expect("cube")
         }
         let mut base = vec![Rgb565::new(0, 0, 0); 256 * 128];
-        fixel::demo::checker_texture(256, 128, &mut base).expect("texture");
+        fixel_scenes::checker_texture(256, 128, &mut base).expect("texture");
         let mip = MipTexture::single(Texture::new(&base, 256, 128).expect("texture"));
         let shader = EnvLit {
             base: TexBinding::new(&mip, Bilinear, Repeat, Repeat, Lod::default()).expect("tex"),
@@ -406,10 +406,10 @@ fn main() {
             glossy: cube16(&glos),
             specular: 128,
         };
-        let m = Box::new(fixel::demo::sphere());
-        let cam = fixel::demo::camera(20);
+        let m = Box::new(fixel_scenes::sphere());
+        let cam = fixel_scenes::camera(20);
         let setup = EnvVertices::new(
-            &fixel::demo::sphere_model(0),
+            &fixel_scenes::sphere_model(0),
             &cam.projection.mul(&cam.view),
             Vec3::ZERO,
         );

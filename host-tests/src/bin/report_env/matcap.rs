@@ -37,10 +37,10 @@ pub struct MatcapRow {
 pub fn matcap_row(runs: u32) -> MatcapRow {
     let map = host_tests::env_scene::sky_sphere_map(SIDE);
     let tex = Texture::new(&map, SIDE, SIDE).expect("texture");
-    let s = Box::new(fixel::demo::sphere());
+    let s = Box::new(fixel_scenes::sphere());
     let mesh = s.mesh().expect("mesh");
-    let cam = fixel::demo::camera(20);
-    let model = fixel::demo::sphere_model(0);
+    let cam = fixel_scenes::camera(20);
+    let model = fixel_scenes::sphere_model(0);
     let draw = Draw::new::<Matcap>(
         Some(tex),
         Viewport::new(0, 0, W, H).expect("vp"),

@@ -24,8 +24,11 @@ pub struct Mesh {
     pub vertex: Vec<[Vertex<3>; 3]>,
 }
 
-pub fn mesh<const V: usize, const T: usize>(m: &fixel::demo::MeshData<V, T>, model: &Mat4) -> Mesh {
-    let cam = fixel::demo::camera(20);
+pub fn mesh<const V: usize, const T: usize>(
+    m: &fixel_scenes::MeshData<V, T>,
+    model: &Mat4,
+) -> Mesh {
+    let cam = fixel_scenes::camera(20);
     let s = EnvVertices::new(model, &cam.projection.mul(&cam.view), Vec3::ZERO);
     let pn = |i: u16| (m.positions[usize::from(i)], m.normals[usize::from(i)]);
     Mesh {
@@ -136,7 +139,7 @@ pub fn band_checksum<S: Shader<Varyings = [i32; N]>, const N: usize>(
 where
     fixel::geometry::ScreenTriangle<N>: fixel::surface::Binnable,
 {
-    let s = Box::new(fixel::demo::sphere());
+    let s = Box::new(fixel_scenes::sphere());
     let mut buf = Box::new(env::EnvBuffers::new());
     let (mut a, mut b) = (|| {}, || {});
     let r = env::env_frame::<_, Exact, N>(

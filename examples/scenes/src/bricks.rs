@@ -10,8 +10,8 @@
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::Rgb565;
 
-use crate::color::rgb888_to_565;
-use crate::Error;
+use fixel::color::rgb888_to_565;
+use fixel::Error;
 
 /// A small integer hash (deterministic grain).
 fn hash(x: u32, y: u32, seed: u32) -> u32 {

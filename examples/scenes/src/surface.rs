@@ -7,11 +7,11 @@
 //! ([`bricks`](super::bricks)) repeats 4 times around and twice from pole to pole, and
 //! tangents from [`tangents`].
 
-use crate::demo::{uv_sphere, MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
-use crate::math::{Angle, Fx, Mat4, Vec3};
-use crate::scene::{tangents, Camera, PixelLight, Tangent};
-use crate::shading::lighting::{Material, Specular, SpecularTable};
-use crate::Error;
+use super::{uv_sphere, MeshData, SPHERE_TRIANGLES, SPHERE_VERTICES};
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::scene::{tangents, Camera, PixelLight, Tangent};
+use fixel::shading::lighting::{Material, Specular, SpecularTable};
+use fixel::Error;
 
 /// The specular exponent table of the scenes (`e = 24`).
 pub static SHININESS: SpecularTable = match SpecularTable::new(24) {
@@ -84,7 +84,7 @@ pub fn light(i: u32) -> PixelLight {
 
 /// The direction towards the light (object space, unit length within 2^-16) for which the
 /// brick sphere's lighting is resolved into its texture
-/// ([`resolve_sphere`](crate::shading::bump::resolve_sphere), the `bump_fast` scene): up,
+/// ([`resolve_sphere`](fixel::shading::bump::resolve_sphere), the `bump_fast` scene): up,
 /// left and towards the viewer of the benchmark sphere's frame 0, about `(−0.48, 0.64,
 /// 0.6)`.
 pub fn resolve_light() -> Vec3 {
@@ -96,13 +96,13 @@ pub fn resolve_light() -> Vec3 {
 pub const RESOLVE_STRENGTH: i32 = 1311;
 
 /// Builds the `n x n` brick maps of the scenes into caller storage: `colours` (`n * n`),
-/// `heights` (the full mip chain, [`chain_len`](crate::texture::chain_len)`(n, n,
+/// `heights` (the full mip chain, [`chain_len`](fixel::texture::chain_len)`(n, n,
 /// levels)`) and its derivative map `derivs` (the same chain length); returns the
-/// derivative map's scale (see [`derivative_map`](crate::shading::bump::derivative_map)).
+/// derivative map's scale (see [`derivative_map`](fixel::shading::bump::derivative_map)).
 ///
 /// # Errors
 /// The size and length errors of [`bricks`](super::bricks) and
-/// [`HeightMap::new`](crate::texture::HeightMap::new).
+/// [`HeightMap::new`](fixel::texture::HeightMap::new).
 pub fn brick_maps(
     n: u32,
     levels: u32,
@@ -110,7 +110,7 @@ pub fn brick_maps(
     heights: &mut [u8],
     derivs: &mut [embedded_graphics_core::pixelcolor::Rgb565],
 ) -> Result<Fx, Error> {
-    use crate::texture::{generate_height_mips, HeightMap};
+    use fixel::texture::{generate_height_mips, HeightMap};
     super::bricks::brick_colours(n, colours)?;
     let base = (n as usize).saturating_mul(n as usize);
     let len = heights.len();
@@ -121,5 +121,5 @@ pub fn brick_maps(
     super::bricks::brick_heights(n, level0)?;
     generate_height_mips(heights, n, n, levels)?;
     let map = HeightMap::new(heights, n, n, levels)?;
-    crate::shading::bump::derivative_map(&map, derivs)
+    fixel::shading::bump::derivative_map(&map, derivs)
 }

@@ -1,4 +1,4 @@
-//! The displacement-mapping demos' inputs ([`crate::scene::displace`]), procedural and
+//! The displacement-mapping demos' inputs ([`fixel::scene::displace`]), procedural and
 //! fixed point so the example, the tests, `cargo xtask bake-displaced` and the firmware
 //! build the same bytes:
 //!
@@ -11,7 +11,7 @@
 //! * [`grid`]: a flat square grid facing `+y`, the water's base mesh.
 //!
 //! ```
-//! use fixel::demo::displaced::{rock_heights, ROCK_HEIGHT, ROCK_WIDTH};
+//! use fixel_scenes::displaced::{rock_heights, ROCK_HEIGHT, ROCK_WIDTH};
 //! use fixel::texture::HeightMap;
 //! let mut h = [0u8; (ROCK_WIDTH * ROCK_HEIGHT) as usize];
 //! rock_heights(&mut h)?;
@@ -22,9 +22,9 @@
 //! ```
 
 use super::MeshData;
-use crate::math::{Angle, Fx, Vec3};
-use crate::shading::noise::noise3;
-use crate::Error;
+use fixel::math::{Angle, Fx, Vec3};
+use fixel::shading::noise::noise3;
+use fixel::Error;
 
 /// Width of [`rock_heights`] (around the sphere).
 pub const ROCK_WIDTH: u32 = 128;

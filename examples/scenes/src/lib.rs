@@ -7,13 +7,16 @@
 //! `l = normalize(-0.4, 0.6, 1.0)` in view space. Every triangle is counter-clockwise seen
 //! from outside. Nothing here allocates: meshes are written into caller-provided arrays.
 
+#![no_std]
+#![forbid(unsafe_code)]
+
 use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::Rgb565;
 
-use crate::color::rgb888_to_565;
-use crate::math::{Angle, Fx, Mat4, Vec3};
-use crate::scene::Camera;
-use crate::Error;
+use fixel::color::rgb888_to_565;
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::scene::Camera;
+use fixel::Error;
 
 pub mod displaced;
 
@@ -84,9 +87,9 @@ pub struct MeshData<const V: usize, const T: usize> {
 }
 
 impl<const V: usize, const T: usize> MeshData<V, T> {
-    /// The mesh as a [`crate::scene::Mesh`].
-    pub fn mesh(&self) -> Result<crate::scene::Mesh<'_>, Error> {
-        crate::scene::Mesh::new(
+    /// The mesh as a [`fixel::scene::Mesh`].
+    pub fn mesh(&self) -> Result<fixel::scene::Mesh<'_>, Error> {
+        fixel::scene::Mesh::new(
             &self.positions,
             Some(&self.normals),
             &self.uvs,
@@ -217,7 +220,7 @@ pub fn uv_sphere<const V: usize, const T: usize>(stacks: u16, slices: u16) -> Me
 /// Sine and cosine of `num / den` turn, I16F16, through the 2^-32-turn Q30 table.
 fn sin_cos_fx(num: u32, den: u32) -> (Fx, Fx) {
     let t = ((u64::from(num) << 32) + u64::from(den) / 2) / u64::from(den.max(1));
-    let (s, c) = crate::math::trig::sin_cos_q30(t as u32);
+    let (s, c) = fixel::math::sin_cos_q30(t as u32);
     let fx = |q: i32| Fx::from_bits((q + (1 << 13)) >> 14);
     (fx(s), fx(c))
 }
@@ -258,5 +261,6 @@ mod tests {
 }
 
 pub mod bricks;
+pub mod noise;
 pub mod shadow;
 pub mod surface;

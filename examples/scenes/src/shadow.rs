@@ -6,18 +6,18 @@
 //! lowest corner at `y = -1.3717`; the floor is the quad `y = -1.375`, `x` in `[-4, 4]`,
 //! `z` in `[-9, 0]`, its texture repeating every 2 units.
 
-use crate::color::TargetColor;
-use crate::geometry::Vertex;
-use crate::math::{Angle, Fx, Mat4, Vec3};
-use crate::pipeline::{DepthLess, DepthOnlyDraw, ProjectionStage, ShadedDraw};
-use crate::scene::{light_pass_mesh, shadowed_mesh_triangles, Camera, DirectionalLight};
-use crate::shading::builtin::Classic;
-use crate::shading::pcf::ShadowFilter;
-use crate::shading::shadow::{with_light, Directional, LightKind, LightSpace, Shadowed, Spot};
-use crate::shading::{ModulateIntensity, Shader};
-use crate::surface::{DepthMap, RenderTarget};
-use crate::texture::{TexSampler, WrapMode};
-use crate::Error;
+use fixel::color::TargetColor;
+use fixel::geometry::Vertex;
+use fixel::math::{Angle, Fx, Mat4, Vec3};
+use fixel::pipeline::{DepthLess, DepthOnlyDraw, ProjectionStage, ShadedDraw};
+use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles, Camera, DirectionalLight};
+use fixel::shading::pcf::ShadowFilter;
+use fixel::shading::shadow::{with_light, Directional, LightKind, LightSpace, Shadowed, Spot};
+use fixel::shading::Classic;
+use fixel::shading::{ModulateIntensity, Shader};
+use fixel::surface::{DepthMap, RenderTarget};
+use fixel::texture::{TexSampler, WrapMode};
+use fixel::Error;
 
 use super::MeshData;
 
@@ -140,7 +140,7 @@ pub fn floor_texture(out: &mut [embedded_graphics_core::pixelcolor::Rgb565]) -> 
             (160, 150, 134)
         };
         *px = embedded_graphics_core::pixelcolor::Rgb565::from(RawU16::new(
-            crate::color::rgb888_to_565(r - grain, g - grain, b - grain),
+            fixel::color::rgb888_to_565(r - grain, g - grain, b - grain),
         ));
     }
     Ok(())
@@ -157,7 +157,7 @@ pub fn light_pass<K: LightKind>(
     space: &LightSpace<K>,
     map: &mut DepthMap<'_>,
 ) -> Result<u32, Error> {
-    light_pass_culling(space, map, crate::geometry::Cull::Back)
+    light_pass_culling(space, map, fixel::geometry::Cull::Back)
 }
 
 /// [`light_pass`] culling `cull` faces as seen from the light: `Cull::Front` keeps only the
@@ -166,7 +166,7 @@ pub fn light_pass<K: LightKind>(
 pub fn light_pass_culling<K: LightKind>(
     space: &LightSpace<K>,
     map: &mut DepthMap<'_>,
-    cull: crate::geometry::Cull,
+    cull: fixel::geometry::Cull,
 ) -> Result<u32, Error> {
     map.clear();
     let draw = DepthOnlyDraw::new(map, cull)?;
