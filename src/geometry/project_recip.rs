@@ -12,7 +12,7 @@
 //! vertices are bit-identical on every core and equal to the plain division's (tested
 //! against it over random and edge inputs, in the tests below).
 
-use super::viewport::{depth_div, mul_i32_i64, Viewport, DEPTH_K, HALF_OFFSET, LIM, OFFSET_BITS};
+use super::viewport::{mul_i32_i64, Viewport, HALF_OFFSET, LIM, OFFSET_BITS};
 use crate::math::recip32::Recip32;
 
 impl Viewport {
@@ -97,35 +97,10 @@ fn div_rem(r: &Recip32, m: u64) -> Option<(u32, u32)> {
     Some((q, (m as u32).wrapping_sub(q.wrapping_mul(r.divisor()))))
 }
 
-/// The window depth of clip `z`: `(z/w + 1)/2 * 65535` with 14 fraction bits,
-/// `k (z/w + 1)` with `k = 65535 * 2^13`, where `z k / w` is rounded to nearest, ties away
-/// from zero; clamped to `0..=2k` (`65535 << 14`).
-///
-/// `|z| >= w` lands on the clamps; inside, the rounded fraction `|z| / w` of `k` from the
-/// reciprocal, in 32-bit arithmetic, below `w = 2^28` (4096.0); beyond, a 64-bit division.
-#[inline(always)]
-pub(crate) fn depth_recip(z: i32, r: &Recip32) -> i32 {
-    let w = r.divisor();
-    let a = z.unsigned_abs();
-    let k = DEPTH_K as i32;
-    if a >= w {
-        return if z > 0 { 2 * k } else { 0 };
-    }
-    if w >= 1 << 28 {
-        // Beyond the reciprocal form's range: the 64-bit quotient.
-        return depth_div(z, w as i32);
-    }
-    let q = r.fraction_of(a, k as u32, w / 2) as i32;
-    if z < 0 {
-        k - q
-    } else {
-        k + q
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::viewport::{depth_recip, DEPTH_K};
     use crate::math::{div_floor_i64, div_round_i64};
     use crate::test_rng::Rng;
 

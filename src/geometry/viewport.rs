@@ -8,7 +8,6 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
-use super::project_recip::depth_recip;
 use crate::math::div::HW_DIVIDE;
 use crate::math::recip32::Recip32;
 use crate::math::{div_floor_i64, div_round_i64};
@@ -220,6 +219,32 @@ pub(crate) const HALF_OFFSET: i64 = 1 << (OFFSET_BITS - 1);
 /// `65535 * 2^13`: depth `(z/w + 1)/2 * 65535` with 14 fraction bits is `k (z/w + 1)`.
 pub(crate) const DEPTH_K: i64 = 65535i64 << 13;
 
+/// The window depth of clip `z`: `(z/w + 1)/2 * 65535` with 14 fraction bits,
+/// `k (z/w + 1)` with `k = 65535 * 2^13`, where `z k / w` is rounded to nearest, ties away
+/// from zero; clamped to `0..=2k` (`65535 << 14`).
+///
+/// `|z| >= w` lands on the clamps; inside, the rounded fraction `|z| / w` of `k` from the
+/// reciprocal, in 32-bit arithmetic, below `w = 2^28` (4096.0); beyond, a 64-bit division.
+#[inline(always)]
+pub(crate) fn depth_recip(z: i32, r: &Recip32) -> i32 {
+    let w = r.divisor();
+    let a = z.unsigned_abs();
+    let k = DEPTH_K as i32;
+    if a >= w {
+        return if z > 0 { 2 * k } else { 0 };
+    }
+    if w >= 1 << 28 {
+        // Beyond the reciprocal form's range: the 64-bit quotient.
+        return depth_div(z, w as i32);
+    }
+    let q = r.fraction_of(a, k as u32, w / 2) as i32;
+    if z < 0 {
+        k - q
+    } else {
+        k + q
+    }
+}
+
 /// `a b` for a `b` that is normally within `i32` (viewport scales): on ARMv6-M a
 /// 16-bit-split product instead of an `__aeabi_lmul` call; elsewhere, and for a larger `b`,
 /// the `i64` product. Exact either way.
@@ -227,7 +252,7 @@ pub(crate) const DEPTH_K: i64 = 65535i64 << 13;
 pub(crate) fn mul_i32_i64(a: i32, b: i64) -> i64 {
     if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
         if let Ok(b) = i32::try_from(b) {
-            return crate::math::div::mul_wide_signed(a, b);
+            return crate::math::wide::mul_wide_signed(a, b);
         }
     }
     i64::from(a) * b

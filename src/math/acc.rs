@@ -15,7 +15,7 @@ use super::Fx;
 /// are the largest single cost of the banded environment-mapping scene on Cortex-M0+).
 #[inline]
 pub(crate) fn prod(a: Fx, b: Fx) -> i64 {
-    super::div::mul_wide_signed(a.to_bits(), b.to_bits())
+    super::wide::mul_wide_signed(a.to_bits(), b.to_bits())
 }
 
 /// `round(Σ products / 2^16)` computed exactly; `products` are Q32 values with |p| <= 2^62.

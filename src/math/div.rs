@@ -19,6 +19,7 @@
 //!
 //! [`Divisor32`] divides many numerators by one divisor below 2^32 through a reciprocal.
 
+use super::wide::mul_wide;
 /// True on cores with a 32-bit divide instruction (Cortex-M3/M4/M7, RV32IM, hosts); false on
 /// ARMv6-M (Cortex-M0/M0+), where division is a library call.
 pub const HW_DIVIDE: bool = !cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
@@ -267,79 +268,9 @@ fn mul_hi64(a: u64, b: u64) -> u64 {
     mul_wide(ah, bh) + (lh >> 32) + (hl >> 32) + (mid >> 32)
 }
 
-/// The full 64-bit product of two `u32`: one `umull` where there is one; on ARMv6-M, which
-/// has only a 32-bit `muls`, four 16 x 16-bit products (the library's `__aeabi_lmul` is
-/// about 25 instructions and a call).
-#[inline(always)]
-pub(crate) fn mul_wide(a: u32, b: u32) -> u64 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
-        mul_wide_split(a, b)
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
-        u64::from(a) * u64::from(b)
-    }
-}
-
-/// `a * b` as `i64`, exactly: one `smull` where the core has it; on ARMv6-M (no 64-bit
-/// product instruction) the 16-bit-split product of the magnitudes instead of the
-/// `__aeabi_lmul` library call that `i64` multiplication compiles to.
-#[inline(always)]
-pub(crate) fn mul_wide_signed(a: i32, b: i32) -> i64 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
-        let p = mul_wide_split(a.unsigned_abs(), b.unsigned_abs()) as i64;
-        if (a < 0) != (b < 0) {
-            p.wrapping_neg()
-        } else {
-            p
-        }
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
-        i64::from(a) * i64::from(b)
-    }
-}
-
-/// The 16-bit-multiply form of [`mul_wide`] (compiled everywhere so every target tests it).
-#[cfg_attr(
-    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-    allow(dead_code)
-)]
-#[inline(always)]
-pub(crate) fn mul_wide_split(a: u32, b: u32) -> u64 {
-    let (ah, al) = (a >> 16, a & 0xFFFF);
-    let (bh, bl) = (b >> 16, b & 0xFFFF);
-    let (ll, hh) = (al * bl, ah * bh);
-    let (mid1, mid2) = (ah * bl, al * bh);
-    // mid1 + mid2 may carry into bit 32.
-    let (mid, carry) = mid1.overflowing_add(mid2);
-    let lo = u64::from(ll) + (u64::from(mid) << 16);
-    lo + (u64::from(hh) << 32) + (u64::from(carry) << 48)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn split_wide_multiply_is_exact() {
-        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
-        for _ in 0..200_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            let (a, b) = ((x >> 32) as u32, x as u32);
-            assert_eq!(mul_wide_split(a, b), u64::from(a) * u64::from(b));
-            let (sa, sb) = (a as i32, b as i32);
-            assert_eq!(mul_wide_signed(sa, sb), i64::from(sa) * i64::from(sb));
-        }
-        assert_eq!(
-            mul_wide_split(u32::MAX, u32::MAX),
-            u64::from(u32::MAX) * u64::from(u32::MAX)
-        );
-    }
 
     #[test]
     fn reciprocal_division_is_exact() {

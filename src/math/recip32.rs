@@ -13,8 +13,8 @@
 //! operands, in both forms on every target), so a caller's output does not depend on which
 //! core computed it.
 
-use super::div::mul_wide;
 use super::recip::recip_mantissa;
+use super::wide::mul_wide;
 use super::wide::{clz32, shl};
 
 /// ARMv6-M: no 32 x 32 -> 64-bit product instruction.

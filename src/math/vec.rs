@@ -152,7 +152,7 @@ impl Vec3 {
     pub fn length_squared_bits(self) -> u64 {
         let sq = |c: Fx| {
             let a = c.to_bits().unsigned_abs();
-            super::div::mul_wide(a, a)
+            super::wide::mul_wide(a, a)
         };
         sq(self.x) + sq(self.y) + sq(self.z)
     }

@@ -8,8 +8,8 @@
 
 use super::interp::{ExactInterp, Fill, FillSpec, Linear};
 use super::quadratic::Quadratic;
-use super::setup::TriSetup;
 use super::stages::ProjKind;
+use super::tri_setup::TriSetup;
 use crate::shading::Varyings;
 
 /// One of the chunk-filling interpolators, chosen per span from the draw's projection.

@@ -12,9 +12,9 @@
 //! a draw pays only for the one it uses.
 
 use super::recip::{mul_q16, recip_q30};
-use super::setup::TriSetup;
 use super::stages::ProjKind;
-use crate::math::div::mul_wide_signed;
+use super::tri_setup::TriSetup;
+use crate::math::wide::mul_wide_signed;
 use crate::shading::{Shader, Varyings};
 use crate::texture::mip::{direction_lambda, lambda_q8};
 

@@ -19,6 +19,7 @@ mod setup_cache;
 mod shaded;
 mod span;
 pub(crate) mod stages;
+mod tri_setup;
 
 pub use depth_only::DepthOnlyDraw;
 pub use draw::Draw;

@@ -28,7 +28,7 @@
 
 use super::interp::{hyper_lambda, unshift_piece, FillSpec, Hyper, INV_SMALL};
 use super::interp::{scale_q16, unshift, Fill};
-use super::setup::TriSetup;
+use super::tri_setup::TriSetup;
 use crate::shading::Varyings;
 
 /// Quadratic interpolation along one span, a segment of up to `2^log2_n` pixels at a time.
@@ -288,7 +288,7 @@ mod tests {
 
     /// A right triangle `(0, 0)`, `(w, 0)`, `(0, h)` in pixels whose vertices lie at clip
     /// `w` = `ws`, with texel coordinates `(0, 0)`, `(128, 0)`, `(0, 128)` (I16F16).
-    fn triangle(w: i32, h: i32, ws: [f64; 3]) -> super::super::setup::TriSetup<[i32; 2]> {
+    fn triangle(w: i32, h: i32, ws: [f64; 3]) -> super::super::tri_setup::TriSetup<[i32; 2]> {
         let p = |x: i32, y: i32, k: usize| {
             (
                 x << ATTR_SUBPIXEL_BITS,
@@ -319,7 +319,7 @@ mod tests {
 
     /// The span of row `y` filled by `I`, chunk by chunk as the span loop does.
     fn fill<I: Fill<[i32; 2]>>(
-        s: &super::super::setup::TriSetup<[i32; 2]>,
+        s: &super::super::tri_setup::TriSetup<[i32; 2]>,
         y: i32,
         len: usize,
         log2_n: u32,

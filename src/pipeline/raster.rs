@@ -8,10 +8,11 @@
 
 use super::in_range::{Proven, RangeProof, Unproven};
 use super::interp::{lambda_at, lod_pair};
-use super::setup::{centroid, setup, setup_inline, TriSetup};
+use super::setup::{centroid, setup, setup_inline};
 use super::setup_cache::SetupSlot;
 use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
+use super::tri_setup::TriSetup;
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
 use crate::raster::{rasterize_rows, rasterize_shared, Rect, SpanSink, SUBPIXEL_BITS};

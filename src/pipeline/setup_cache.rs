@@ -12,7 +12,7 @@
 //! A kept set-up is a copy of the one the triangle would build, so the pixels are the same
 //! with or without it.
 
-use super::setup::TriSetup;
+use super::tri_setup::TriSetup;
 use crate::raster::Plane;
 use crate::shading::Varyings;
 

@@ -13,7 +13,7 @@
 //! remainder fits `i32`; the one `i64` division is at [`EdgeWalker::new`].
 
 use super::{SUBPIXEL_BITS, SUBPIXEL_ONE};
-use crate::math::div::mul_wide_signed;
+use crate::math::wide::mul_wide_signed;
 use crate::math::{div_floor_i64, HW_DIVIDE};
 
 /// Walks one edge row by row; see the module docs for the arithmetic.

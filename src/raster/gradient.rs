@@ -33,10 +33,10 @@
 //!   across the viewport.
 
 use super::{Rect, ATTR_SUBPIXEL_BITS};
-use crate::math::div::{mul_wide, mul_wide_signed};
 use crate::math::div_u64;
 use crate::math::recip32::Recip32;
 use crate::math::wide;
+use crate::math::wide::{mul_wide, mul_wide_signed};
 
 /// Extra fraction bits of the set-up gradient.
 const EXTRA: u32 = 8;
@@ -387,7 +387,7 @@ fn mul_split(a: i64, b: i64) -> i64 {
         (i64::from(ah * b) << 16) + i64::from(al * b)
     } else if a as i32 as i64 == a && b as i32 as i64 == b {
         // Signed 32 x 32 -> 64 from the unsigned product of the magnitudes.
-        let p = crate::math::div::mul_wide_split(a.unsigned_abs() as u32, b.unsigned_abs() as u32)
+        let p = crate::math::wide::mul_wide_split(a.unsigned_abs() as u32, b.unsigned_abs() as u32)
             as i64;
         if (a < 0) != (b < 0) {
             p.wrapping_neg()

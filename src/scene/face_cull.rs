@@ -36,7 +36,7 @@
 //! this test must decide on every path, whatever the walker's cache holds).
 
 use crate::geometry::Cull;
-use crate::math::div::{mul_wide, mul_wide_signed};
+use crate::math::wide::{mul_wide, mul_wide_signed};
 use crate::math::{Mat4, Vec3};
 
 use super::face_planes::FacePlane;

@@ -1,5 +1,5 @@
 //! The stage order of `src/` (`math -> geometry -> raster -> texture -> shading -> pipeline
-//! -> surface -> scene`, then the demo content), checked: a file of one stage may name
+//! -> surface -> scene`), checked: a file of one stage may name
 //! (`crate::stage` in code, comments aside) only its own stage or a lower one. The files
 //! that still reach upwards are listed in [`KNOWN`]; the test fails on any new upward
 //! reference, and on a listed one that is gone (so the list only shrinks).
@@ -9,12 +9,12 @@ use std::path::Path;
 
 /// The stages, lowest first. Top-level files (`error.rs`, `color.rs`, `lib.rs`) are below
 /// every stage; `guide` is documentation.
-pub(crate) const ORDER: [&str; 9] = [
-    "math", "geometry", "raster", "texture", "shading", "pipeline", "surface", "scene", "demo",
+pub(crate) const ORDER: [&str; 8] = [
+    "math", "geometry", "raster", "texture", "shading", "pipeline", "surface", "scene",
 ];
 
 /// Upward references that remain: (file under `src/`, the higher stage it names).
-const KNOWN: [(&str, &str); 21] = [
+const KNOWN: [(&str, &str); 17] = [
     ("geometry/clip.rs", "raster"),
     ("geometry/vertex.rs", "raster"),
     ("geometry/viewport.rs", "raster"),
@@ -23,10 +23,6 @@ const KNOWN: [(&str, &str); 21] = [
     ("pipeline/raster.rs", "surface"),
     ("pipeline/shaded.rs", "surface"),
     ("pipeline/span/tests.rs", "surface"),
-    ("scene/face_cull.rs", "demo"),
-    ("scene/subdivide.rs", "demo"),
-    ("scene/uv_gen.rs", "demo"),
-    ("scene/walk.rs", "demo"),
     ("shading/noise/scene.rs", "scene"),
     ("shading/pcf.rs", "surface"),
     ("shading/shadow/light_space.rs", "pipeline"),
@@ -129,6 +125,20 @@ mod tests {
         assert!(
             gone.is_empty(),
             "these no longer reach upwards: take them off layers::KNOWN: {gone:?}"
+        );
+    }
+
+    /// A file that names another may not be named by it: shared items move to a third file
+    /// (or down a stage), so each file can be read knowing only the ones it names.
+    #[test]
+    fn no_two_files_of_src_name_each_other() {
+        let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../src");
+        let graph = crate::imports::graph(&src).unwrap();
+        let pairs = crate::imports::mutual(&graph);
+        assert!(
+            pairs.is_empty(),
+            "{} pairs of files name each other: {pairs:#?}",
+            pairs.len()
         );
     }
 

@@ -18,6 +18,8 @@ mod fps;
 mod fuzz;
 mod images;
 #[cfg(test)]
+mod imports;
+#[cfg(test)]
 mod layers;
 mod light3d;
 mod mcu;

@@ -27,8 +27,8 @@
 use super::dyn_interp::DynInterp;
 use super::interp::{lod_pair, ExactInterp, Fill, FillSpec, Linear};
 use super::quadratic::Quadratic;
-use super::setup::TriSetup;
 use super::stages::{DepthStage, ProjKind, ProjectionStage};
+use super::tri_setup::TriSetup;
 use crate::color::TargetColor;
 use crate::shading::{Shader, Varyings};
 use crate::texture::LodGranularity;
