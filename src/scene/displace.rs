@@ -82,7 +82,7 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-use super::mesh::check_indices;
+use super::mesh_checks::check_indices;
 use super::Mesh;
 use crate::math::{isqrt_u32, reciprocal_u32, Fx, Vec3};
 use crate::texture::HeightMap;

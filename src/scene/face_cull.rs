@@ -40,33 +40,8 @@ use crate::math::wide::{mul_wide, mul_wide_signed};
 use crate::math::{Mat4, Vec3};
 
 use super::face_planes::FacePlane;
+use super::mesh_checks::COORD_BITS;
 use super::Mesh;
-
-/// Magnitude bound of a model-space coordinate after the mesh's shift: `p >> shift` lies
-/// in `-2^13..2^13`, so edges are below 2^14 and the cross product's components below 2^29.
-const COORD_BITS: u32 = 13;
-
-/// The right shift that brings every coordinate of `positions` (I16F16 bits) into
-/// `-2^13..2^13`. One pass over the positions, in [`Mesh::new`] (and, at compile time, in
-/// [`face_planes`](super::face_planes)).
-pub(super) const fn coord_shift(positions: &[Vec3]) -> u8 {
-    // `b ^ (b >> 31)` is |b| for b >= 0 and |b| - 1 below: b lies in -2^k..2^k when the
-    // or of these is below 2^k.
-    let mut or = 0u32;
-    let mut i = 0;
-    while i < positions.len() {
-        let p = &positions[i];
-        let c = [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
-        let mut k = 0;
-        while k < 3 {
-            or |= (c[k] ^ (c[k] >> 31)) as u32;
-            k += 1;
-        }
-        i += 1;
-    }
-    let bits = u32::BITS - or.leading_zeros();
-    bits.saturating_sub(COORD_BITS) as u8
-}
 
 /// The camera's centre in homogeneous model coordinates, `(g, W)` (see the module docs),
 /// as `mant * 2^exp`: the exact 3x3 minors of the rows `x`, `y`, `w` of an MVP matrix
@@ -335,6 +310,7 @@ pub(super) fn test_camera() -> super::Camera {
 mod tests {
     use super::*;
     use crate::math::{Angle, Fx};
+    use crate::scene::mesh_checks::coord_shift;
     use crate::test_rng::Rng;
 
     /// `det[A P0, A P1, A P2]` exactly, `A` the rows x, y, w of `mvp`, `P = (p, 1)`.
@@ -469,35 +445,6 @@ mod tests {
             culled_big * 10 > back * 8,
             "culled {culled_big} of {back} facing away"
         );
-    }
-
-    /// The public test is the walker's, triangle by triangle; a triangle is never culled
-    /// both as a back and as a front face, and an index out of range is never culled.
-    #[test]
-    fn the_facing_test_is_the_walkers() {
-        let data = crate::test_scenes::sphere();
-        let mesh = data.mesh().unwrap();
-        let camera = crate::test_scenes::camera(0);
-        for frame in 0..4 {
-            let transform =
-                crate::scene::MeshTransform::new(&crate::test_scenes::sphere_model(frame), &camera);
-            let mvp = camera
-                .projection
-                .mul(&camera.view.mul(&crate::test_scenes::sphere_model(frame)));
-            let eye = camera_centre(&mvp);
-            let back = transform.facing_test(&mesh, Cull::Back).unwrap();
-            let front = transform.facing_test(&mesh, Cull::Front).unwrap();
-            let walker = FaceCull::new(&eye, &mesh, Cull::Back).unwrap();
-            let mut culled = 0;
-            for (t, idx) in mesh.indices().iter().enumerate() {
-                assert_eq!(back.culls(t), walker.culls(mesh.positions(), idx));
-                assert!(!(back.culls(t) && front.culls(t)));
-                culled += usize::from(back.culls(t));
-            }
-            assert!(culled * 2 > mesh.triangles());
-            assert!(!back.culls(mesh.triangles()) && !back.culls(usize::MAX));
-            assert!(transform.facing_test(&mesh, Cull::None).is_none());
-        }
     }
 
     #[test]

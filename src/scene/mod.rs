@@ -38,10 +38,14 @@
 mod camera;
 mod face_cull;
 mod face_planes;
+#[cfg(test)]
+mod face_tests;
 mod light;
 mod lit_mesh;
 mod matcap;
 mod mesh;
+mod mesh_checks;
+mod mesh_draw;
 mod open_sink;
 mod tangent;
 mod vertex_uv;
@@ -53,9 +57,10 @@ pub use face_planes::{face_planes, write_face_planes, FacePlane};
 pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
 pub use matcap::SphereMapUvs;
-pub(crate) use mesh::{check_indices, check_vertices};
-pub use mesh::{
-    draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity, Mesh,
+pub use mesh::Mesh;
+pub(crate) use mesh_checks::{check_indices, check_vertices};
+pub use mesh_draw::{
+    draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity,
 };
 pub use open_sink::triangles_to_sink;
 pub use tangent::{tangents, Tangent};

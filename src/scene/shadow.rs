@@ -12,7 +12,7 @@ use crate::pipeline::DepthOnlyDraw;
 use crate::shading::shadow::{LightKind, LightSpace};
 use crate::surface::DepthMap;
 
-use super::mesh::vertex;
+use super::mesh_draw::vertex;
 use super::{Camera, DirectionalLight, Mesh};
 
 /// Draws `mesh` (placed by `model`) into the shadow map `map` as seen by `light`; returns

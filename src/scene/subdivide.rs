@@ -63,7 +63,7 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-use super::mesh::check_indices;
+use super::mesh_checks::check_indices;
 use super::{Mesh, MeshStorage};
 use crate::math::{Fx, Vec3};
 use crate::Error;

@@ -395,7 +395,7 @@ pub fn map_mesh_with<'a, G: UvGenerator>(
             });
         }
     }
-    super::mesh::check_indices(indices, n)?;
+    super::mesh_checks::check_indices(indices, n)?;
     let m = generator.ready()?;
     let capacity = || map_mesh_capacity_with(generator, positions, normals, indices);
     let MeshStorage {

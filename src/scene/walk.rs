@@ -44,7 +44,7 @@ use crate::surface::{MeshSink, RenderTarget};
 
 use super::face_cull::{camera_centre, Eye, FaceCull, FacingTest};
 use super::face_planes::FacePlane;
-use super::mesh::{vertex, vertex_intensity};
+use super::mesh_draw::{vertex, vertex_intensity};
 use super::vertex_uv::{MeshUvs, VertexUv};
 use super::{Camera, DirectionalLight, Mesh};
 
