@@ -16,6 +16,7 @@ mod footprint;
 mod footprint_sized;
 #[cfg(fixel_dsp)]
 mod footprint_span_dsp;
+mod footprint_words;
 mod height;
 pub(crate) mod mip;
 mod palette;
@@ -24,9 +25,10 @@ pub(crate) mod sample;
 mod texture;
 mod wrap;
 
-pub use footprint::{footprint_texels, write_footprints, BilinearFootprint};
+pub use footprint::BilinearFootprint;
 pub(crate) use footprint_sized::check_level0_size;
 pub use footprint_sized::BilinearFootprintSized;
+pub use footprint_words::{footprint_texels, write_footprints};
 pub use height::{generate_height_mips, HeightMap};
 pub use mip::{
     chain_len, direction_lambda, full_levels, generate_mips, lambda_q8, lerp565, level_side,

@@ -16,8 +16,6 @@
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 
-use super::sample::{Bilinear, Filter, Nearest, Sampler};
-use super::wrap::{DynWrap, Wrap};
 use crate::Error;
 
 /// Largest supported `log2` of a texture side: sides are 1..=4096.
@@ -164,17 +162,6 @@ impl<'a> Texture<'a> {
         match self.texels.get(idx) {
             Some(c) => c.into_storage(),
             None => self.border,
-        }
-    }
-
-    /// Samples with a filter and wrap modes chosen at run time (host convenience; the
-    /// rasterizer uses the monomorphised [`Sampler::sample`]). `u`, `v` are raw I16F16 texel
-    /// coordinates. Returns raw RGB565.
-    pub fn sample_dyn(&self, filter: Filter, wrap_u: Wrap, wrap_v: Wrap, u: i32, v: i32) -> u16 {
-        let (wu, wv) = (DynWrap(wrap_u), DynWrap(wrap_v));
-        match filter {
-            Filter::Nearest => Nearest::sample(self, wu, wv, u, v),
-            Filter::Bilinear => Bilinear::sample(self, wu, wv, u, v),
         }
     }
 }

@@ -26,7 +26,7 @@ use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::Rgb565;
 
 use super::patterns::Pattern;
-use super::solid::Octaves;
+use super::turbulence::Octaves;
 use crate::math::{sin_cos, Angle, Fx};
 use crate::texture::{level_side, log2_q8, MipTexture};
 use crate::Error;

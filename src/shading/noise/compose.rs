@@ -12,7 +12,8 @@
 //! sampled at level 0 (bind a single-level texture).
 
 use super::patterns::Pattern;
-use super::solid::{Octaves, SolidTriangle};
+use super::solid::SolidTriangle;
+use super::turbulence::Octaves;
 use crate::color::{modulate_rgb, modulate_scalar};
 use crate::shading::builtin::q8;
 use crate::shading::{Fragment, Shader, TexBinding, TexTriangle};

@@ -9,7 +9,8 @@
 //! intensity at its centre (GL's texel centres), clamp-to-edge outside the cube.
 
 use super::patterns::Pattern;
-use super::solid::{Octaves, SolidTriangle};
+use super::solid::SolidTriangle;
+use super::turbulence::Octaves;
 use crate::color::modulate_scalar;
 use crate::shading::{Fragment, Shader};
 use crate::texture::LodGranularity;

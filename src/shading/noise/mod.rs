@@ -110,8 +110,8 @@ pub use patterns::{Granite, Marble, Pattern, Ramp, Wood};
 pub use presets::Ramps;
 pub use scene::{lattice_point, SolidMesh};
 pub use select::{Select, SELECT_OFFSET};
-pub use solid::{Fixed, Octaves, SolidShader, SolidTriangle};
-pub use turbulence::{turbulence, BandLimit, ABS_NOISE_MEAN_Q15, MAX_OCTAVES};
+pub use solid::{SolidShader, SolidTriangle};
+pub use turbulence::{turbulence, BandLimit, Fixed, Octaves, ABS_NOISE_MEAN_Q15, MAX_OCTAVES};
 
 /// The noise period in lattice cells, on each axis.
 pub const PERIOD: i32 = 256;

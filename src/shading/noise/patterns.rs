@@ -6,7 +6,7 @@
 //! for its turbulence, so the same pattern draws with a fixed number of octaves or
 //! band-limited by the pixel's footprint.
 
-use super::solid::Octaves;
+use super::turbulence::Octaves;
 use crate::color::rgb888_to_565;
 use crate::math::{isqrt_u32, Angle};
 use crate::Error;

@@ -17,7 +17,7 @@
 
 use super::noise3;
 use super::patterns::Pattern;
-use super::solid::Octaves;
+use super::turbulence::Octaves;
 use crate::texture::lerp565;
 use crate::Error;
 

@@ -21,40 +21,11 @@
 //! lattice cells).
 
 use super::patterns::Pattern;
-use super::turbulence::{turbulence, BandLimit};
+use super::turbulence::Octaves;
 use crate::color::modulate_scalar;
 use crate::shading::builtin::q8;
 use crate::shading::{Fragment, Shader};
 use crate::texture::LodGranularity;
-
-/// How many octaves of turbulence a pattern sums.
-pub trait Octaves: Copy + core::fmt::Debug {
-    /// True when the count depends on the pixel (the span loop then computes `lambda`).
-    const LOD: bool;
-    /// The turbulence at `p` (I16F16 lattice units) for a pixel of level of detail
-    /// `lambda` (Q8.8): Q15, `0..2^16`.
-    fn turbulence(&self, p: [i32; 3], lambda: i32) -> i32;
-}
-
-/// A fixed number of octaves (clamped to `0..=8`), whatever the pixel's size.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Fixed(pub u8);
-
-impl Octaves for Fixed {
-    const LOD: bool = false;
-    #[inline(always)]
-    fn turbulence(&self, p: [i32; 3], _lambda: i32) -> i32 {
-        turbulence(p, u32::from(self.0))
-    }
-}
-
-impl Octaves for BandLimit {
-    const LOD: bool = true;
-    #[inline(always)]
-    fn turbulence(&self, p: [i32; 3], lambda: i32) -> i32 {
-        BandLimit::turbulence(self, p, lambda)
-    }
-}
 
 /// The per-triangle rotation of the coordinates (see the module docs): slot `j` holds
 /// axis `(j + rot) % 3`.
@@ -106,7 +77,7 @@ impl SolidTriangle {
     }
 }
 
-/// A solid texture `P` with octaves `O` ([`Fixed`] or [`BandLimit`]), times the
+/// A solid texture `P` with octaves `O` ([`Fixed`](super::Fixed) or [`BandLimit`](super::BandLimit)), times the
 /// interpolated light intensity. Varyings `x, y, z, i` (see the module docs).
 #[derive(Clone, Copy, Debug)]
 pub struct SolidShader<P, O> {

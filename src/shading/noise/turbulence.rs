@@ -115,3 +115,32 @@ impl BandLimit {
         sum
     }
 }
+
+/// How many octaves of turbulence a pattern sums.
+pub trait Octaves: Copy + core::fmt::Debug {
+    /// True when the count depends on the pixel (the span loop then computes `lambda`).
+    const LOD: bool;
+    /// The turbulence at `p` (I16F16 lattice units) for a pixel of level of detail
+    /// `lambda` (Q8.8): Q15, `0..2^16`.
+    fn turbulence(&self, p: [i32; 3], lambda: i32) -> i32;
+}
+
+/// A fixed number of octaves (clamped to `0..=8`), whatever the pixel's size.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Fixed(pub u8);
+
+impl Octaves for Fixed {
+    const LOD: bool = false;
+    #[inline(always)]
+    fn turbulence(&self, p: [i32; 3], _lambda: i32) -> i32 {
+        turbulence(p, u32::from(self.0))
+    }
+}
+
+impl Octaves for BandLimit {
+    const LOD: bool = true;
+    #[inline(always)]
+    fn turbulence(&self, p: [i32; 3], lambda: i32) -> i32 {
+        BandLimit::turbulence(self, p, lambda)
+    }
+}

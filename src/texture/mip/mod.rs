@@ -116,7 +116,7 @@ impl<'a> MipTexture<'a> {
     /// - [`Error::FootprintMismatch`] at the first word that is not texel `i`'s footprint
     ///   (the check reads every word once).
     pub fn with_footprints(mut self, footprints: &'a [u64]) -> Result<Self, Error> {
-        super::footprint::check_footprints(self.base(), footprints)?;
+        super::footprint_words::check_footprints(self.base(), footprints)?;
         self.footprints = footprints;
         Ok(self)
     }

@@ -28,7 +28,7 @@
 //! (`a*(32-w) + b*w`, rounded) cost 6 multiplies; its error reaches 2 LSB.
 
 use super::texture::Texture;
-use super::wrap::WrapMode;
+use super::wrap::{DynWrap, Wrap, WrapMode};
 
 /// A filter as a value (for run-time selection, see [`Texture::sample_dyn`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -248,6 +248,19 @@ impl Sampler for BilinearFast {
         let (c, fu, fv) = gather(tex, wu, wv, u, v);
         // Round the 16-bit fractions to Q5 (0..=32).
         blend_q5(c, (fu + 0x400) >> 11, (fv + 0x400) >> 11)
+    }
+}
+
+impl Texture<'_> {
+    /// Samples with a filter and wrap modes chosen at run time (host convenience; the
+    /// rasterizer uses the monomorphised [`Sampler::sample`]). `u`, `v` are raw I16F16 texel
+    /// coordinates. Returns raw RGB565.
+    pub fn sample_dyn(&self, filter: Filter, wrap_u: Wrap, wrap_v: Wrap, u: i32, v: i32) -> u16 {
+        let (wu, wv) = (DynWrap(wrap_u), DynWrap(wrap_v));
+        match filter {
+            Filter::Nearest => Nearest::sample(self, wu, wv, u, v),
+            Filter::Bilinear => Bilinear::sample(self, wu, wv, u, v),
+        }
     }
 }
 
