@@ -424,48 +424,4 @@ mod tests {
             0xFFFF
         );
     }
-
-    /// Draws and bindings refuse the footprint filter on a chain without footprints, with an
-    /// error that says so; with footprints they accept it, and draw `Bilinear`'s pixels.
-    #[test]
-    fn bindings_refuse_missing_footprints() {
-        use crate::geometry::{Cull, Viewport};
-        use crate::pipeline::{Affine, Draw, NoDepth, Pipeline, Replace};
-        use crate::shading::{TexBinding, TexTriangle};
-        use crate::texture::Lod;
-        type Fp = Pipeline<Affine, BilinearFootprint, Repeat, Repeat, Replace, NoDepth>;
-        let t = texels(&[1, 2, 3, 4]);
-        let plain = Texture::new(&t, 2, 2).unwrap();
-        let vp = Viewport::new(0, 0, 8, 8).unwrap();
-        let needs = Error::BadMode(
-            "BilinearFootprint needs a texture with footprints (MipTexture::with_footprints)",
-        );
-        assert_eq!(
-            Draw::<Rgb565>::new::<Fp>(Some(plain), vp, Cull::None).unwrap_err(),
-            needs
-        );
-        let chain = MipTexture::single(plain);
-        assert_eq!(
-            Draw::<Rgb565>::new_mip::<Fp>(Some(chain), vp, Cull::None).unwrap_err(),
-            needs
-        );
-        assert_eq!(
-            TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).unwrap_err(),
-            needs
-        );
-        let mut fp = [0u64; 4];
-        write_footprints(&plain, &mut fp).unwrap();
-        let chain = chain.with_footprints(&fp).unwrap();
-        assert!(Draw::<Rgb565>::new_mip::<Fp>(Some(chain), vp, Cull::None).is_ok());
-        let b = TexBinding::new(&chain, BilinearFootprint, Repeat, Repeat, Lod::default()).unwrap();
-        let plain_b = TexBinding::new(&chain, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
-        let tri = TexTriangle::default();
-        for (u, v) in [(0x8000, 0x8000), (0x1_4000, 0x9000), (-0x2_0000, 0x7_FFFF)] {
-            assert_eq!(b.sample(tri, u, v, 0), plain_b.sample(tri, u, v, 0));
-            assert_eq!(
-                b.sample_scaled(tri, u, v, 0, 200),
-                plain_b.sample_scaled(tri, u, v, 0, 200)
-            );
-        }
-    }
 }

@@ -365,29 +365,6 @@ mod tests {
                 height: 4
             })
         );
-        // A typed draw checks the size as a binding does.
-        use crate::geometry::{Cull, Viewport};
-        use crate::pipeline::{DepthLess, Draw, Exact, ModulateIntensity, Pipeline};
-        type Lit<F> = Pipeline<Exact, F, Repeat, Repeat, ModulateIntensity, DepthLess>;
-        let vp = Viewport::new(0, 0, 8, 8).unwrap();
-        let ok = Draw::<Rgb565>::new_mip::<Lit<BilinearFootprintSized<2, 1>>>(
-            Some(chain),
-            vp,
-            Cull::None,
-        );
-        assert!(ok.is_ok());
-        let wrong = Draw::<Rgb565>::new_mip::<Lit<BilinearFootprintSized<1, 2>>>(
-            Some(chain),
-            vp,
-            Cull::None,
-        );
-        assert_eq!(
-            wrong.err(),
-            Some(Error::TextureSizeMismatch {
-                width: 2,
-                height: 4
-            })
-        );
         // Sizes beyond `u32` match no texture, and sampling with them never panics.
         type Huge = BilinearFootprintSized<40, 40>;
         assert_eq!((Huge::WIDTH, Huge::HEIGHT), (0, 0));

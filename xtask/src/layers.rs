@@ -14,7 +14,7 @@ pub(crate) const ORDER: [&str; 8] = [
 ];
 
 /// Upward references that remain: (file under `src/`, the higher stage it names).
-const KNOWN: [(&str, &str); 17] = [
+const KNOWN: [(&str, &str); 14] = [
     ("geometry/clip.rs", "raster"),
     ("geometry/vertex.rs", "raster"),
     ("geometry/viewport.rs", "raster"),
@@ -29,9 +29,6 @@ const KNOWN: [(&str, &str); 17] = [
     ("shading/shadow/mod.rs", "surface"),
     ("shading/triplanar.rs", "scene"),
     ("shading/uv_per_pixel.rs", "scene"),
-    ("texture/footprint.rs", "pipeline"),
-    ("texture/footprint.rs", "shading"),
-    ("texture/footprint_sized.rs", "pipeline"),
 ];
 
 fn rank(stage: &str) -> Option<usize> {
