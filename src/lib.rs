@@ -183,6 +183,7 @@
 
 pub mod color;
 pub mod error;
+pub(crate) mod fill;
 pub mod geometry;
 pub mod guide;
 pub mod math;

@@ -573,7 +573,7 @@ mod tests {
         ];
         let out = run(tri, Cull::None);
         assert!(!out.is_empty());
-        let lim = crate::raster::GUARD_BAND_PX * 16;
+        let lim = crate::geometry::GUARD_BAND_PX * 16;
         for t in &out {
             for s in t {
                 assert!(s.x.abs() <= lim && s.y.abs() <= lim, "{s:?}");

@@ -14,6 +14,7 @@
 pub(crate) mod clip;
 pub(crate) mod homography;
 mod project_recip;
+pub(crate) mod screen;
 pub(crate) mod vertex;
 pub(crate) mod viewport;
 
@@ -22,5 +23,9 @@ pub use clip::{
     prepare_without_depth, project_unclipped, project_unclipped_varyings, W_MIN_BITS,
 };
 pub use homography::{Homography, CORNER_TOLERANCE};
+pub use screen::{
+    Rect, ATTR_SUBPIXEL_BITS, DEPTH_CLEAR, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS,
+    SUBPIXEL_ONE,
+};
 pub use vertex::{ClipVertex, ScreenTriangle, ScreenVertex, Vertex, CLASSIC_VARYINGS, COLOR_ONE};
 pub use viewport::{Cull, Viewport};

@@ -126,7 +126,7 @@ impl<const N: usize> ScreenVertex<N> {
     /// `2^-ATTR_SUBPIXEL_BITS` pixel ([`crate::raster::ATTR_SUBPIXEL_BITS`]).
     #[inline]
     pub fn attr_position(&self) -> (i32, i32) {
-        use crate::raster::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
+        use super::screen::{ATTR_SUBPIXEL_BITS, SUBPIXEL_BITS};
         let fine = |p: i32, sub: i16| {
             p.wrapping_shl(ATTR_SUBPIXEL_BITS - SUBPIXEL_BITS)
                 .wrapping_add(i32::from(sub))

@@ -8,12 +8,12 @@
 //! `±GUARD_BAND_PX` (4096) pixels, which is what lets the raster set-up stay in `i64` and
 //! its per-row stepping in `i32`.
 
+use super::screen::{
+    Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
+};
 use crate::math::div::HW_DIVIDE;
 use crate::math::recip32::Recip32;
 use crate::math::{div_floor_i64, div_round_i64};
-use crate::raster::{
-    Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
-};
 use crate::Error;
 
 /// Which faces to skip. Front faces are counter-clockwise in NDC (OpenGL's default).

@@ -19,7 +19,7 @@
 use crate::geometry::{clip_and_project_varyings, Cull, ScreenTriangle, Vertex, Viewport};
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{rasterize, Plane, SpanSink};
-use crate::surface::DepthMap;
+use crate::texture::DepthMap;
 use crate::Error;
 
 /// A depth-only draw into a shadow map of a given size.

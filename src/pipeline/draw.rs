@@ -14,6 +14,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::*;
+use super::target::RenderTarget;
 use super::SetupSlot;
 use crate::color::TargetColor;
 use crate::geometry::{
@@ -21,7 +22,6 @@ use crate::geometry::{
 };
 use crate::shading::builtin::Classic;
 use crate::shading::TexBinding;
-use crate::surface::RenderTarget;
 use crate::texture::{
     Bilinear, DynMip, DynWrap, Lod, MipFilter, MipTexture, Nearest, TexSampler, Texture, WrapMode,
 };

@@ -19,6 +19,7 @@ mod setup_cache;
 mod shaded;
 mod span;
 pub(crate) mod stages;
+mod target;
 mod tri_setup;
 
 pub use depth_only::DepthOnlyDraw;
@@ -32,3 +33,4 @@ pub use stages::{
     ProjKind, Projection, ProjectionStage, Quadratic, QuadraticBy, Replace, Shading, ShadingStage,
     Stages, Subdivided, SubdividedBy,
 };
+pub use target::{RenderTarget, Row, Rows};

@@ -12,12 +12,12 @@ use super::setup::{centroid, setup, setup_inline};
 use super::setup_cache::SetupSlot;
 use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
+use super::target::{RenderTarget, Rows};
 use super::tri_setup::TriSetup;
 use crate::color::TargetColor;
 use crate::geometry::{ScreenTriangle, Viewport};
 use crate::raster::{rasterize_rows, rasterize_shared, Rect, SpanSink, SUBPIXEL_BITS};
 use crate::shading::{Shader, Varyings};
-use crate::surface::{RenderTarget, Rows};
 use crate::texture::LodGranularity;
 
 /// The per-draw numbers the rasterization of one triangle needs.

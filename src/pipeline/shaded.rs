@@ -28,13 +28,13 @@ use core::marker::PhantomData;
 
 use super::raster::{raster_shaded, RasterParams};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
+use super::target::RenderTarget;
 use super::SetupSlot;
 use crate::color::TargetColor;
 use crate::geometry::{
     clip_and_project_varyings, project_unclipped_varyings, Cull, ScreenTriangle, Vertex, Viewport,
 };
 use crate::shading::Shader;
-use crate::surface::RenderTarget;
 use crate::Error;
 
 /// A draw with a user shader `S`, projection `P` and depth stage `D` chosen as types: a

@@ -25,26 +25,10 @@ pub(crate) mod edge;
 pub(crate) mod gradient;
 pub(crate) mod triangle;
 
+pub use crate::geometry::{
+    Rect, ATTR_SUBPIXEL_BITS, GUARD_BAND_PX, MAX_VIEWPORT_PX, SUBPIXEL_BITS, SUBPIXEL_ONE,
+};
 pub use edge::EdgeWalker;
 pub use gradient::{Plane, PlaneSetup};
-pub use triangle::{first_row_at_or_below, rasterize, Rect, SpanSink, COUNT_IN_LOOP};
+pub use triangle::{first_row_at_or_below, rasterize, SpanSink, COUNT_IN_LOOP};
 pub(crate) use triangle::{rasterize_rows, rasterize_shared};
-
-/// Fractional bits of screen coordinates: 4, so one pixel is 16 sub-pixel units.
-pub const SUBPIXEL_BITS: u32 = 4;
-/// One pixel in sub-pixel units.
-pub const SUBPIXEL_ONE: i32 = 1 << SUBPIXEL_BITS;
-/// Fractional bits of the screen positions that attribute planes (texture coordinates,
-/// depth, every varying) are built from: 8, so attributes are interpolated from vertices
-/// within 1/512 pixel of their exact projections, while coverage uses the 1/16-pixel grid of
-/// [`SUBPIXEL_BITS`] (as GL: snapping moves the edges, not the texture).
-pub const ATTR_SUBPIXEL_BITS: u32 = 12;
-/// Largest absolute screen coordinate, in whole pixels, that the raster math accepts.
-///
-/// Geometry clips triangles to this guard band, so any vertex the rasterizer sees lies in
-/// `[-GUARD_BAND_PX, GUARD_BAND_PX]` on both axes. With 4 sub-pixel bits that is
-/// `|x| <= 2^16` sub-pixel units: edge and plane set-up products then stay below 2^63
-/// (see [`Plane`]) and per-row stepping fits `i32`.
-pub const GUARD_BAND_PX: i32 = 4096;
-/// Largest viewport side in pixels (the viewport must sit inside the guard band).
-pub const MAX_VIEWPORT_PX: u32 = 2048;

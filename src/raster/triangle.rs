@@ -9,45 +9,7 @@
 //! triangle starts above the clip rectangle), then two adds and a compare per edge per row.
 
 use super::{EdgeWalker, SUBPIXEL_ONE};
-
-/// A pixel rectangle, half-open: columns `x0..x1`, rows `y0..y1`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub struct Rect {
-    /// First column.
-    pub x0: i32,
-    /// First row.
-    pub y0: i32,
-    /// One past the last column.
-    pub x1: i32,
-    /// One past the last row.
-    pub y1: i32,
-}
-
-impl Rect {
-    /// The rectangle `0..width` by `0..height`.
-    pub const fn of_size(width: u32, height: u32) -> Rect {
-        Rect {
-            x0: 0,
-            y0: 0,
-            x1: width as i32,
-            y1: height as i32,
-        }
-    }
-
-    /// Rows `y0..y1` of this rectangle (clamped to it).
-    pub fn rows(self, y0: i32, y1: i32) -> Rect {
-        Rect {
-            y0: y0.max(self.y0),
-            y1: y1.min(self.y1),
-            ..self
-        }
-    }
-
-    /// True when the rectangle contains no pixel.
-    pub fn is_empty(self) -> bool {
-        self.x0 >= self.x1 || self.y0 >= self.y1
-    }
-}
+use crate::geometry::Rect;
 
 /// Receives the spans of covered pixels, one row at a time, top to bottom.
 pub trait SpanSink {

@@ -18,7 +18,7 @@
 //! | [`Pcf2x2`] | the 2 x 2 texels around the point | bilinear, 8-bit (GL `sampler2DShadow` with `LINEAR`) | 1 |
 //! | [`Pcf3x3`] | the 3 x 3 texels centred on the texel under the point | 1/9 each | 1.5 |
 
-use crate::surface::ShadowMap;
+use crate::texture::ShadowMap;
 
 /// A shadow-map filter: the lit fraction of one point.
 pub trait ShadowFilter: Copy + core::fmt::Debug + Default + 'static {

@@ -4,8 +4,7 @@ use super::RenderTarget;
 use crate::color::TargetColor;
 use crate::Error;
 
-/// Value a depth buffer is cleared to: the far plane (depth 1.0 = 65535).
-pub const DEPTH_CLEAR: u16 = u16::MAX;
+use crate::geometry::DEPTH_CLEAR;
 
 /// Rows `y0..y0 + height` of a `width`-pixel-wide frame, stored row-major in borrowed
 /// slices. Depth is optional: a scene that does not depth-test needs no depth memory.
@@ -71,7 +70,7 @@ impl<'a, C: TargetColor> Frame<'a, C> {
     pub fn with_depth(self, depth: &'a mut [u16]) -> Result<Self, Error> {
         let mut frame = self.with_depth_as_is(depth)?;
         if let Some(d) = frame.depth.as_deref_mut() {
-            super::fill::fill(d, DEPTH_CLEAR);
+            crate::fill::fill(d, DEPTH_CLEAR);
         }
         frame.depth_floor = DEPTH_CLEAR;
         frame.depth_filled = true;
@@ -119,10 +118,10 @@ impl<'a, C: TargetColor> Frame<'a, C> {
     /// is still as [`with_depth`](Self::with_depth) or the last `clear` filled it (not lent
     /// to a draw since) is not filled again.
     pub fn clear(&mut self, c: C) {
-        super::fill::fill(self.color, c);
+        crate::fill::fill(self.color, c);
         if let Some(d) = self.depth.as_deref_mut() {
             if !self.depth_filled {
-                super::fill::fill(d, DEPTH_CLEAR);
+                crate::fill::fill(d, DEPTH_CLEAR);
             }
             self.depth_filled = true;
         }

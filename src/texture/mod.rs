@@ -12,6 +12,7 @@
 //! ([`PaletteTexture`], [`PaletteMips`]: 8- or 4-bit indices into an RGB565 palette) sample
 //! through the same filters and wraps.
 
+pub(crate) mod depth_map;
 mod footprint;
 mod footprint_sized;
 #[cfg(fixel_dsp)]
@@ -25,6 +26,7 @@ pub(crate) mod sample;
 mod texture;
 mod wrap;
 
+pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use footprint::BilinearFootprint;
 pub(crate) use footprint_sized::check_level0_size;
 pub use footprint_sized::BilinearFootprintSized;

@@ -14,19 +14,9 @@ pub(crate) const ORDER: [&str; 8] = [
 ];
 
 /// Upward references that remain: (file under `src/`, the higher stage it names).
-const KNOWN: [(&str, &str); 14] = [
-    ("geometry/clip.rs", "raster"),
-    ("geometry/vertex.rs", "raster"),
-    ("geometry/viewport.rs", "raster"),
-    ("pipeline/depth_only.rs", "surface"),
-    ("pipeline/draw.rs", "surface"),
-    ("pipeline/raster.rs", "surface"),
-    ("pipeline/shaded.rs", "surface"),
-    ("pipeline/span/tests.rs", "surface"),
+const KNOWN: [(&str, &str); 4] = [
     ("shading/noise/scene.rs", "scene"),
-    ("shading/pcf.rs", "surface"),
     ("shading/shadow/light_space.rs", "pipeline"),
-    ("shading/shadow/mod.rs", "surface"),
     ("shading/triplanar.rs", "scene"),
     ("shading/uv_per_pixel.rs", "scene"),
 ];

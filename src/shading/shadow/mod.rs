@@ -103,7 +103,7 @@ use super::pcf::ShadowFilter;
 use super::{Fragment, Shader, Varyings};
 use crate::color::modulate_scalar;
 use crate::math::div_u64;
-use crate::surface::ShadowMap;
+use crate::texture::ShadowMap;
 use crate::Error;
 
 mod light_space;

@@ -7,7 +7,7 @@
 //! plane, 65535 = far plane, also the cleared "nothing here" value, so an empty texel lights
 //! everything in front of the far plane). A 64 x 64 map is 8 KiB.
 
-use crate::surface::DEPTH_CLEAR;
+use crate::geometry::DEPTH_CLEAR;
 use crate::Error;
 
 /// Smallest supported side (texels).
@@ -78,7 +78,7 @@ impl<'a> DepthMap<'a> {
 
     /// Fills the map with [`DEPTH_CLEAR`] (the far plane: nothing casts a shadow).
     pub fn clear(&mut self) {
-        super::fill::fill(self.texels, DEPTH_CLEAR);
+        crate::fill::fill(self.texels, DEPTH_CLEAR);
     }
 
     /// The texels, row-major.
