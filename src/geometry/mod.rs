@@ -11,13 +11,16 @@
 //! Clip space follows OpenGL: a point is visible when `-w <= x, y, z <= w`; NDC z in
 //! `[-1, 1]` maps to depth `[0, 1]`; NDC y up maps to screen y down.
 
+mod camera;
 pub(crate) mod clip;
 pub(crate) mod homography;
+pub(crate) mod mesh_checks;
 mod project_recip;
 pub(crate) mod screen;
 pub(crate) mod vertex;
 pub(crate) mod viewport;
 
+pub use camera::Camera;
 pub use clip::{
     clip_and_project, clip_and_project_varyings, complete_depth, keeps, prepare,
     prepare_without_depth, project_unclipped, project_unclipped_varyings, W_MIN_BITS,

@@ -41,6 +41,7 @@ pub(crate) mod div;
 pub(crate) mod mat;
 pub(crate) mod recip;
 pub(crate) mod recip32;
+pub mod recip_q30;
 pub(crate) mod trig;
 pub(crate) mod unit;
 pub(crate) mod vec;

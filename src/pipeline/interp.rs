@@ -11,9 +11,9 @@
 //! All three are inlined into the span loop, which is monomorphised per projection mode, so
 //! a draw pays only for the one it uses.
 
-use super::recip::{mul_q16, recip_q30};
 use super::stages::ProjKind;
 use super::tri_setup::TriSetup;
+use crate::math::recip_q30::{mul_q16, recip_q30};
 use crate::math::wide::mul_wide_signed;
 use crate::shading::{Shader, Varyings};
 use crate::texture::mip::{direction_lambda, lambda_q8};

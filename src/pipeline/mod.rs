@@ -13,7 +13,7 @@ mod in_range;
 mod interp;
 mod quadratic;
 mod raster;
-pub mod recip;
+
 mod setup;
 mod setup_cache;
 mod shaded;

@@ -13,13 +13,13 @@
 //! The shader's per-triangle hook has already rescaled and rebased the varyings (texture
 //! coordinates to texel units: see [`TexBinding`](crate::shading::TexBinding)).
 
-use super::recip::{Q_FLOOR, Q_ONE};
 use super::setup_cache::SetupSlot;
 use super::stages::ProjKind;
 use super::tri_setup::TriSetup;
 use crate::math::div::HW_DIVIDE;
 use crate::math::div_u64;
 use crate::math::recip32::Recip32;
+use crate::math::recip_q30::{Q_FLOOR, Q_ONE};
 use crate::math::wide::{mul_wide, mul_wide_signed};
 use crate::raster::gradient::PlaneSetup;
 use crate::raster::{Plane, Rect, ATTR_SUBPIXEL_BITS};

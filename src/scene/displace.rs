@@ -82,8 +82,8 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-use super::mesh_checks::check_indices;
 use super::Mesh;
+use crate::geometry::mesh_checks::check_indices;
 use crate::math::{isqrt_u32, reciprocal_u32, Fx, Vec3};
 use crate::texture::HeightMap;
 use crate::Error;

@@ -40,8 +40,8 @@ use crate::math::wide::{mul_wide, mul_wide_signed};
 use crate::math::{Mat4, Vec3};
 
 use super::face_planes::FacePlane;
-use super::mesh_checks::COORD_BITS;
 use super::Mesh;
+use crate::geometry::mesh_checks::COORD_BITS;
 
 /// The camera's centre in homogeneous model coordinates, `(g, W)` (see the module docs),
 /// as `mant * 2^exp`: the exact 3x3 minors of the rows `x`, `y`, `w` of an MVP matrix
@@ -309,8 +309,8 @@ pub(super) fn test_camera() -> super::Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::mesh_checks::coord_shift;
     use crate::math::{Angle, Fx};
-    use crate::scene::mesh_checks::coord_shift;
     use crate::test_rng::Rng;
 
     /// `det[A P0, A P1, A P2]` exactly, `A` the rows x, y, w of `mvp`, `P = (p, 1)`.

@@ -47,7 +47,7 @@
 use crate::math::Vec3;
 use crate::Error;
 
-use super::mesh_checks::coord_shift;
+use crate::geometry::mesh_checks::coord_shift;
 
 /// One triangle's baked model-space plane (see the module docs): its normal `n` from the
 /// mesh's shifted positions (`|n_i| < 2^29`), `n . p0` (`|n . p0| < 2^45`) and the bound
@@ -143,7 +143,7 @@ pub fn write_face_planes(
             actual: out.len(),
         });
     }
-    super::mesh_checks::check_indices(indices, positions.len())?;
+    crate::geometry::mesh_checks::check_indices(indices, positions.len())?;
     let shift = u32::from(coord_shift(positions));
     for (o, idx) in out.iter_mut().zip(indices) {
         *o = FacePlane::of_triangle(positions, idx, shift).unwrap_or_default();

@@ -4,7 +4,7 @@ use crate::math::{Fx, Vec3};
 use crate::Error;
 
 use super::face_planes::{check_face_planes, FacePlane};
-use super::mesh_checks::{check_indices, check_vertices};
+use crate::geometry::mesh_checks::{check_indices, check_vertices};
 
 /// An indexed triangle mesh borrowed from slices (flash or RAM).
 ///
@@ -53,7 +53,7 @@ impl<'a> Mesh<'a> {
             normals,
             uvs,
             indices,
-            coord_shift: super::mesh_checks::coord_shift(positions),
+            coord_shift: crate::geometry::mesh_checks::coord_shift(positions),
             face_planes: &[],
             face_e_max: 0,
         })

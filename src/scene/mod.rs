@@ -35,30 +35,26 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-mod camera;
 mod face_cull;
 mod face_planes;
 #[cfg(test)]
 mod face_tests;
-mod light;
 mod lit_mesh;
 mod matcap;
 mod mesh;
-mod mesh_checks;
 mod mesh_draw;
 mod open_sink;
 mod tangent;
 mod vertex_uv;
 mod walk;
 
-pub use camera::Camera;
+pub use crate::geometry::Camera;
+pub use crate::shading::DirectionalLight;
 pub use face_cull::FacingTest;
 pub use face_planes::{face_planes, write_face_planes, FacePlane};
-pub use light::DirectionalLight;
 pub use lit_mesh::{LitMesh, PixelLight};
 pub use matcap::SphereMapUvs;
 pub use mesh::Mesh;
-pub(crate) use mesh_checks::{check_indices, check_vertices};
 pub use mesh_draw::{
     draw_mesh, draw_mesh_cached, mesh_triangles, mesh_triangles_cached, vertex_intensity,
 };
@@ -78,6 +74,7 @@ mod shadow;
 mod subdivide;
 mod two_stage;
 mod uv_gen;
+pub use crate::shading::uv_mapping::{Axis, ReadyMapping, UvAt, UvGenerator, UvMapping};
 pub use displace::{displace, displace_positions, recompute_normals, Displacement};
 pub use quad::{draw_quad, quad_triangles, QuadTriangles, QUAD_TRIANGLES_MAX};
 pub use shadow::{light_pass_mesh, shadowed_mesh_triangles};
@@ -86,7 +83,4 @@ pub use subdivide::{
     SubdivideCapacity,
 };
 pub use two_stage::{Intermediate, OMapping, ReadyTwoStage, TwoStage};
-pub use uv_gen::{
-    map_mesh, map_mesh_capacity, map_mesh_capacity_with, map_mesh_with, Axis, MeshStorage,
-    ReadyMapping, UvAt, UvGenerator, UvMapping,
-};
+pub use uv_gen::{map_mesh, map_mesh_capacity, map_mesh_capacity_with, map_mesh_with, MeshStorage};

@@ -63,8 +63,8 @@
 //! # Ok::<(), fixel::Error>(())
 //! ```
 
-use super::mesh_checks::check_indices;
 use super::{Mesh, MeshStorage};
+use crate::geometry::mesh_checks::check_indices;
 use crate::math::{Fx, Vec3};
 use crate::Error;
 

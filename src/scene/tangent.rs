@@ -104,7 +104,7 @@ pub fn tangents(
             });
         }
     }
-    super::mesh_checks::check_indices(indices, n)?;
+    crate::geometry::mesh_checks::check_indices(indices, n)?;
     // Accumulate unit Pu in `direction` (saturating: a vertex has a handful of triangles)
     // and the handedness votes in `handedness`.
     for t in out.iter_mut() {

@@ -22,8 +22,8 @@
 //! hit beyond the I16F16 range, or a zero normal) gives the surface-normal rule's point
 //! instead, so every vertex gets coordinates.
 
-use super::uv_gen::{Axis, ReadyMapping, UvAt, UvGenerator, UvMapping};
 use crate::math::{Fx, Vec3};
+use crate::shading::uv_mapping::{Axis, ReadyMapping, UvAt, UvGenerator, UvMapping};
 use crate::Error;
 
 /// The intermediate surface and its S-mapping (model units, I16F16).

@@ -39,11 +39,13 @@
 
 pub(crate) mod builtin;
 pub mod facet;
+mod light;
 mod palette;
 mod texcoord;
 
 pub use builtin::{q8, Classic, Flat, Gouraud, Modulate, ModulateIntensity, Replace};
 pub use facet::ModulateFacet;
+pub use light::DirectionalLight;
 pub use palette::{PaletteBinding, PaletteModulateIntensity, PaletteReplace};
 pub use texcoord::{check_footprints_bound, TexBinding, TexTriangle};
 
@@ -296,4 +298,5 @@ pub mod noise;
 pub mod pcf;
 pub mod shadow;
 pub mod triplanar;
+pub mod uv_mapping;
 pub mod uv_per_pixel;

@@ -22,10 +22,11 @@
 //! blended per RGB565 channel with one rounding.
 
 use crate::color::modulate_scalar;
+use crate::geometry::Camera;
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
-use crate::scene::{Camera, DirectionalLight};
 use crate::shading::env::cube::recip16;
+use crate::shading::DirectionalLight;
 use crate::shading::{Fragment, Shader};
 use crate::texture::{Repeat, Sampler, Texture};
 

@@ -13,10 +13,12 @@
 //! Varyings (see [`PerPixelMesh`]): `0..3` the model-space point (I16F16 model units), `3`
 //! the Gouraud intensity (Q8.16). `u` repeats, `v` clamps to the edge.
 
+use super::uv_mapping::{ReadyMapping, UvAt, UvGenerator, UvMapping};
 use crate::color::modulate_scalar;
+use crate::geometry::Camera;
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
-use crate::scene::{Camera, DirectionalLight, ReadyMapping, UvAt, UvGenerator, UvMapping};
+use crate::shading::DirectionalLight;
 use crate::shading::{Fragment, Shader};
 use crate::texture::{ClampToEdge, Repeat, Sampler, Texture};
 use crate::Error;

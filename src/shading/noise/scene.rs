@@ -1,9 +1,11 @@
 //! Meshes to [`SolidShader`](super::SolidShader) vertices: the clip-space position, the
 //! object-space point in lattice units (varyings 0..3) and a Gouraud intensity (varying 3).
 
+use crate::geometry::mesh_checks::{check_indices, check_vertices};
+use crate::geometry::Camera;
 use crate::geometry::{Vertex, COLOR_ONE};
 use crate::math::{Fx, Mat4, Vec3};
-use crate::scene::{check_indices, check_vertices, Camera, DirectionalLight};
+use crate::shading::DirectionalLight;
 use crate::Error;
 
 /// The object-space point `p · scale` as I16F16 lattice-unit bits (saturating).
@@ -157,9 +159,6 @@ mod tests {
             vertices: 24,
         };
         assert_eq!(e, want);
-        let uvs = [[Fx::ZERO; 2]; 24];
-        let mesh = crate::scene::Mesh::new(&positions, Some(&normals), &uvs, &indices);
-        assert_eq!(mesh.unwrap_err(), want);
         assert_eq!(
             SolidMesh::new(&positions, Some(&normals[..3]), &[], Fx::ONE).unwrap_err(),
             Error::WrongLength {

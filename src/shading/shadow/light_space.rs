@@ -3,8 +3,8 @@
 //! carries, and a pixel's map position and depth from them ([`LightKind`]).
 
 use super::{DEPTH_STEP, ST_ONE};
+use crate::math::recip_q30::{mul_q16, recip_q30};
 use crate::math::{Angle, Fx, Mat4, Vec3};
-use crate::pipeline::recip::{mul_q16, recip_q30};
 use crate::Error;
 
 /// Values of light-space varyings saturate here (their differences must fit `i32`).

@@ -21,7 +21,7 @@
 //! All are linear in the world position, so the lit pass's perspective-correct
 //! interpolation gives them exactly at each pixel; the spot light divides per pixel
 //! (`s = a / w`, with the span loop's table reciprocal
-//! [`recip_q30`](crate::pipeline::recip::recip_q30)) into the directional formats.
+//! [`recip_q30`](crate::math::recip_q30::recip_q30)) into the directional formats.
 //! Values saturate at `±2^30`, far outside any map.
 //!
 //! # The compare

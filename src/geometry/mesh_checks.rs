@@ -42,12 +42,12 @@ pub(crate) fn check_indices(indices: &[[u16; 3]], n: usize) -> Result<(), Error>
 
 /// Magnitude bound of a model-space coordinate after the mesh's shift: `p >> shift` lies
 /// in `-2^13..2^13`, so edges are below 2^14 and the cross product's components below 2^29.
-pub(super) const COORD_BITS: u32 = 13;
+pub(crate) const COORD_BITS: u32 = 13;
 
 /// The right shift that brings every coordinate of `positions` (I16F16 bits) into
-/// `-2^13..2^13`. One pass over the positions, in [`Mesh::new`](super::Mesh::new) (and, at compile time, in
-/// [`face_planes`](super::face_planes)).
-pub(super) const fn coord_shift(positions: &[Vec3]) -> u8 {
+/// `-2^13..2^13`. One pass over the positions, in [`Mesh::new`](crate::scene::Mesh::new) (and, at compile time, in
+/// [`face_planes`](crate::scene::face_planes)).
+pub(crate) const fn coord_shift(positions: &[Vec3]) -> u8 {
     // `b ^ (b >> 31)` is |b| for b >= 0 and |b| - 1 below: b lies in -2^k..2^k when the
     // or of these is below 2^k.
     let mut or = 0u32;
