@@ -101,8 +101,8 @@ fn longitude(right: i32, front: i32) -> i32 {
     ((turns + 32768) & 0xFFFF) as i32
 }
 
-/// A source of texture coordinates per vertex, for [`map_mesh_with`]: a [`UvMapping`], a
-/// [`TwoStage`](super::TwoStage) mapping, or your own.
+/// A source of texture coordinates per vertex, for [`map_mesh_with`](crate::scene::map_mesh_with): a [`UvMapping`], a
+/// [`TwoStage`](crate::scene::TwoStage) mapping, or your own.
 pub trait UvGenerator {
     /// The checked generator with its per-call constants.
     type Ready: UvAt;
@@ -218,14 +218,14 @@ impl ReadyMapping {
 
 impl UvMapping {
     /// The texture coordinates of one model-space position (no seam or pole handling: see
-    /// [`map_mesh`]). Errors if the mapping is degenerate (a cylinder with `top == bottom`).
+    /// [`map_mesh`](crate::scene::map_mesh)). Errors if the mapping is degenerate (a cylinder with `top == bottom`).
     pub fn uv(&self, p: Vec3) -> Result<[Fx; 2], Error> {
         Ok(ReadyMapping::new(self)?.at(p).0)
     }
 
     /// Writes the texture coordinates of `positions` into `uvs` (same length), per vertex
     /// with no seam or pole handling: right for planar mappings and for meshes that stay
-    /// clear of the seam; [`map_mesh`] otherwise.
+    /// clear of the seam; [`map_mesh`](crate::scene::map_mesh) otherwise.
     pub fn generate(&self, positions: &[Vec3], uvs: &mut [[Fx; 2]]) -> Result<(), Error> {
         if uvs.len() != positions.len() {
             return Err(Error::WrongLength {

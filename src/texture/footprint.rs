@@ -60,7 +60,7 @@ use super::wrap::WrapMode;
 ///
 /// A [`TexSampler`] for level 0 only (not a [`Sampler`], so it cannot be
 /// part of a [`Mipmapped`](super::Mipmapped) one). Bindings and draws refuse a chain without
-/// footprints ([`Error::BadMode`]). Its [`TexSampler::FILTER`] is
+/// footprints ([`Error::BadMode`](crate::Error::BadMode)). Its [`TexSampler::FILTER`] is
 /// [`Filter::Bilinear`](super::Filter::Bilinear).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BilinearFootprint;
@@ -80,7 +80,7 @@ impl BilinearFootprint {
     }
 
     /// Samples `tex` (level 0) at raw I16F16 texel coordinates `(u, v)` with wrap modes
-    /// `wu`, `wv`, reading `footprints` (`tex`'s, see [`write_footprints`]) when both wraps
+    /// `wu`, `wv`, reading `footprints` (`tex`'s, see [`write_footprints`](super::write_footprints)) when both wraps
     /// repeat. Returns raw RGB565, [`Bilinear`]'s pixel. Never panics: footprints of the
     /// wrong length read as black (bindings refuse them before a draw gets here).
     #[inline(always)]
