@@ -20,12 +20,8 @@
 //! on the viewport, never on the band, so a frame drawn in bands is bit-identical to the
 //! frame drawn whole (tested).
 
-use embedded_graphics_core::draw_target::DrawTarget;
-use embedded_graphics_core::geometry::{Point, Size};
-use embedded_graphics_core::primitives::Rectangle;
-
 use super::band_draw::{AnyTriangle, BandDraw, Binnable};
-use super::overlap::{check_ring, BandBuffers, BandSender, Blocking};
+use super::band_link::{check_ring, BandBuffers, BandSender, Blocking};
 use super::{Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
@@ -557,24 +553,5 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
             }
             pixels
         }
-    }
-}
-
-/// Flushes bands to an embedded-graphics [`DrawTarget`] through `fill_contiguous`, so a
-/// display driver can stream a whole band in one transaction.
-#[derive(Debug)]
-pub struct DrawTargetFlush<'d, D>(pub &'d mut D);
-
-impl<D: DrawTarget> DrawTargetFlush<'_, D>
-where
-    D::Color: TargetColor,
-{
-    /// Writes `band` at its rows.
-    pub fn flush(&mut self, band: &Frame<'_, D::Color>) -> Result<(), D::Error> {
-        let area = Rectangle::new(
-            Point::new(0, band.first_row()),
-            Size::new(band.width(), band.height()),
-        );
-        self.0.fill_contiguous(&area, band.pixels().iter().copied())
     }
 }

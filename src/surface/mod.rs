@@ -20,6 +20,7 @@
 pub(crate) mod accum_bands;
 pub(crate) mod band;
 mod band_draw;
+mod band_link;
 
 pub(crate) mod frame;
 pub mod overlap;
@@ -35,8 +36,9 @@ pub mod spi_send;
 pub use crate::geometry::DEPTH_CLEAR;
 pub use crate::pipeline::{RenderTarget, Row, Rows};
 pub use crate::texture::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
-pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
+pub use band::{BandError, BandRenderer, BandStats, Binned, TriangleSink};
 pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
+pub use band_link::DrawTargetFlush;
 pub use frame::Frame;
 pub use overlap::{BandSender, Blocking, Dma};
 pub use overlap_async::AsyncBandSender;

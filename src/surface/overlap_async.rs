@@ -58,7 +58,7 @@ use core::task::Poll;
 
 use super::band::{BandError, BandRenderer, BandStats, Binned, TriangleSink};
 use super::band_draw::BandDraw;
-use super::overlap::BandBuffers;
+use super::band_link::BandBuffers;
 use super::Frame;
 use crate::color::TargetColor;
 

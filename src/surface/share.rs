@@ -63,7 +63,7 @@
 
 use super::band::{BandError, BandRenderer, BandStats, Binned, TriangleSink};
 use super::band_draw::BandDraw;
-use super::overlap::BandSender;
+use super::band_link::BandSender;
 use crate::color::TargetColor;
 use crate::Error;
 
