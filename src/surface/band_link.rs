@@ -31,7 +31,7 @@ where
 }
 
 /// Where finished bands go: started one at a time, in band order, each finished (waited
-/// for) before its buffer is drawn into again. See the [module docs](self) for the
+/// for) before its buffer is drawn into again. See the [`overlap` module docs](super::overlap) for the
 /// contract, which a DMA sender relies on.
 pub trait BandSender<C> {
     /// What a failed transfer reports (a bus error, say); it stops the frame.
@@ -47,7 +47,7 @@ pub trait BandSender<C> {
 }
 
 /// A sender that has sent the band when `start` returns: a closure over the band (a
-/// display driver's blocking write, a checksum). The sender of [`BandRenderer::render`].
+/// display driver's blocking write, a checksum). The sender of [`BandRenderer::render`](super::BandRenderer::render).
 #[derive(Clone, Copy, Debug)]
 pub struct Blocking<F>(pub F);
 
@@ -67,7 +67,7 @@ impl<C, E, F: FnMut(&Frame<'_, C>) -> Result<(), E>> BandSender<C> for Blocking<
 
 /// A sender driven by the caller's DMA: `start` begins a transfer of the band's pixels
 /// (and returns at once), `wait` returns when the oldest transfer running has finished.
-/// The renderer keeps to the contract of the [module docs](self), which is what makes it
+/// The renderer keeps to the contract of the [`overlap` module docs](super::overlap), which is what makes it
 /// sound to hand `band.pixels().as_ptr()` to a DMA channel in `start`.
 #[derive(Clone, Copy, Debug)]
 pub struct Dma<S, W> {

@@ -18,7 +18,7 @@
 //!
 //! Senders:
 //! * [`Blocking`]: a closure that sends the band before it returns (the plain
-//!   [`BandRenderer::render`] flush; also [`DrawTargetFlush`] for any embedded-graphics
+//!   [`BandRenderer::render`] flush; also [`DrawTargetFlush`](super::DrawTargetFlush) for any embedded-graphics
 //!   `DrawTarget`, and `SpiSender` for an `embedded-hal` 1.0
 //!   `SpiDevice`, feature `embedded-hal`);
 //! * [`Dma`]: a pair of closures, `start` (point a DMA channel at the band's pixels and
