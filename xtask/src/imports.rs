@@ -161,7 +161,7 @@ fn file_paths(rel: &str, text: &str) -> Vec<Vec<String>> {
 }
 
 /// Reads every `.rs` file under `src` (path relative to `src`, text).
-fn read_tree(src: &Path) -> Result<BTreeMap<String, String>, String> {
+pub(crate) fn read_tree(src: &Path) -> Result<BTreeMap<String, String>, String> {
     let mut files = BTreeMap::new();
     let mut dirs = vec![src.to_path_buf()];
     while let Some(dir) = dirs.pop() {

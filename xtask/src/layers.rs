@@ -3,7 +3,6 @@
 //! (`crate::stage` in code, comments aside) only its own stage or a lower one; and no two
 //! files name each other ([`crate::imports`]). Both tests run in CI (`cargo test`).
 
-use std::fs;
 use std::path::Path;
 
 /// The stages, lowest first. Top-level files (`error.rs`, `color.rs`, `fill.rs`, `lib.rs`) are below
@@ -47,30 +46,13 @@ fn named(line: &str) -> Vec<String> {
 /// Every upward reference under `src`: (path relative to `src`, the stage named), sorted.
 pub(crate) fn upward(src: &Path) -> Result<Vec<(String, String)>, String> {
     let mut found = Vec::new();
-    let mut dirs = vec![src.to_path_buf()];
-    while let Some(dir) = dirs.pop() {
-        for entry in fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
-            let path = entry.map_err(|e| e.to_string())?.path();
-            if path.is_dir() {
-                dirs.push(path);
-                continue;
-            }
-            if path.extension().is_none_or(|e| e != "rs") {
-                continue;
-            }
-            let rel = path
-                .strip_prefix(src)
-                .map_err(|e| e.to_string())?
-                .to_string_lossy()
-                .replace('\\', "/");
-            let stage = rel.split('/').next().unwrap_or("").trim_end_matches(".rs");
-            let Some(own) = rank(stage) else { continue };
-            let text = fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-            for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
-                for name in named(line) {
-                    if rank(&name).is_some_and(|r| r > own) {
-                        found.push((rel.clone(), name));
-                    }
+    for (rel, text) in crate::imports::read_tree(src)? {
+        let stage = rel.split('/').next().unwrap_or("").trim_end_matches(".rs");
+        let Some(own) = rank(stage) else { continue };
+        for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
+            for name in named(line) {
+                if rank(&name).is_some_and(|r| r > own) {
+                    found.push((rel.clone(), name));
                 }
             }
         }
