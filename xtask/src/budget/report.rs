@@ -15,13 +15,21 @@ pub const BAR: f64 = 0.15;
 
 /// Everything the report shows.
 pub struct Inputs<'a> {
+    /// The part.
     pub chip: &'static Chip,
+    /// What the frame does.
     pub counts: &'a Counts,
+    /// Each band's pixels and pieces.
     pub loads: &'a [BandLoad],
+    /// The baked model (`None` for a benchmark scene).
     pub model: Option<&'a Model>,
+    /// The fitted unit costs of the part's instruction set.
     pub costs: &'a Costs,
+    /// The benchmark frames they were fitted to.
     pub samples: &'a [Sample],
+    /// `docs/mcu.md`'s rows.
     pub measured: &'a HashMap<(String, String), Measured>,
+    /// `--coverage`, when given.
     pub coverage: Option<f64>,
 }
 
@@ -310,7 +318,8 @@ whole), times what this frame does as the host draws it: the model scenes' draw 
 vertex, bilinear, perspective exact every 64 pixels, depth-tested, back faces culled), \
 bands of 8 rows through band ranges, a 64-entry vertex cache and 36 kept set-ups. The fit \
 has 9 costs for 12 frames per instruction set: it is checked on the frames it was fitted \
-to, not on unseen ones. A glTF model is baked as `cargo xtask bake-gltf --center` does, \
+to, not on unseen ones. The binning pass (before the first band) has its own rough fit per \
+mesh vertex and triangle to the measured passes; it places work in time, not in the total. A glTF model is baked as `cargo xtask bake-gltf --center` does, \
 scaled to 3.1 units on its longest side, its texture 128 texels on its longer side with \
 the full mip chain, and seen as the Fox is in its firmware scene (turned 60 degrees, 5.2 \
 units away, 45 degree field of view). Cycles: the static cycle model's cycles per \
