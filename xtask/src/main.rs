@@ -11,10 +11,12 @@ mod bake_displaced;
 mod bake_gltf;
 mod bake_obj;
 mod bake_palette;
+mod budget;
 mod ci;
 mod cmd;
 mod count;
 mod fps;
+mod frame_model;
 mod fuzz;
 mod images;
 #[cfg(test)]
@@ -138,6 +140,19 @@ enum Command {
     /// hidden and the assumptions. --docs writes docs/fps.md.
     #[command(verbatim_doc_comment)]
     Fps(fps::FpsArgs),
+    /// Flash, RAM and frame time of a model on a part, before flashing it
+    ///
+    /// MODEL is a glTF 2.0 file (.glb/.gltf: baked in memory as bake-gltf
+    /// --center bakes it, scaled to 3.1 units, drawn on the host as the fox
+    /// firmware draws the Fox, to count its pixels, triangles and band pieces) or
+    /// a benchmark scene (cube, sphere, teapot, floor, fox, cesium_man). Prints
+    /// the model's flash and the firmware's, the RAM, the predicted instructions
+    /// (unit costs fitted to docs/mcu.md: per pixel of the draw's mode, per
+    /// vertex, per drawn triangle, per band and band piece), the frame times of
+    /// the fps frame model, the fit against every benchmark frame (fails above
+    /// 15 %) and the assumptions.
+    #[command(verbatim_doc_comment)]
+    Budget(budget::BudgetArgs),
     /// One frame on two cores under QEMU (RISC-V virt -smp 2): per-hart exact counts
     ///
     /// Builds the cores_cube, cores_sphere and cores_teapot firmwares (RV32IMC) and
@@ -272,6 +287,7 @@ fn main() -> ExitCode {
         Command::Mcu(a) => mcu::mcu(&a),
         Command::Size(a) => mcu::size(&a),
         Command::Fps(a) => fps::fps(&a),
+        Command::Budget(a) => budget::budget(&a),
         Command::Cores { no_install } => mcu::cores(!no_install),
         Command::Report(a) => report::report(&a),
         Command::BakeLight3d(a) => match light3d::run(&a) {

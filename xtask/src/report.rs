@@ -34,7 +34,7 @@ pub(crate) struct ReportArgs {
 /// The host report binaries of host-tests, run in this order, each with `--out` (the
 /// report directory) and, with the microcontrollers, `--mcu` (their counts); `true`: the
 /// binary also takes `--runs`.
-const HOST_REPORTS: [(&str, bool); 7] = [
+const HOST_REPORTS: [(&str, bool); 8] = [
     // Every benchmark scene and mode: report.md and the plots.
     ("report", true),
     // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
@@ -49,6 +49,9 @@ const HOST_REPORTS: [(&str, bool); 7] = [
     ("aa_report", true),
     // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
     ("surface_report", true),
+    // Palette textures on the floor and cube against RGB565 (flash, speed, error):
+    // palette.md, its instructions from docs/mcu.md.
+    ("palette_report", true),
 ];
 
 pub(crate) fn report(args: &ReportArgs) -> ExitCode {

@@ -2,11 +2,9 @@
 //!
 //! Each benchmark scene's frame is counted band by band under QEMU (`mcu::band_counts`:
 //! exact instructions of the binning pass and of each band, the cycle estimate of the
-//! static model), then [`model::frame_times`] turns the cycles and a display link into
+//! static model), then [`crate::frame_model::frame_times`] turns the cycles and a display link into
 //! frame times: one core serial (draw a band, send it), one core overlapped (two band
 //! buffers, DMA), two cores overlapped. `--docs` writes the table to `docs/fps.md`.
-
-pub mod model;
 
 use std::fmt::Write as _;
 use std::fs;
@@ -15,8 +13,9 @@ use std::process::ExitCode;
 use clap::Args;
 
 use crate::cmd::root;
+use crate::frame_model::chips::CHIPS;
+use crate::frame_model::{frame_times, Work};
 use crate::mcu::{band_counts, BandCounts};
-use model::{frame_times, Chip, Link, Work};
 
 /// The scenes modelled: the benchmark cube, sphere and teapot.
 const SCENES: [&str; 3] = ["cube", "sphere", "teapot"];
@@ -25,52 +24,6 @@ const SCENES: [&str; 3] = ["cube", "sphere", "teapot"];
 const WIDTH: u64 = 320;
 const HEIGHT: u64 = 240;
 const ROWS: u64 = 8;
-
-/// An ST7789-class display over SPI at `mhz`: RGB565, a window command per band.
-const fn spi(mhz: f64) -> Link {
-    Link {
-        clock_hz: mhz * 1e6,
-        bytes_per_px: 2.0,
-        command_bytes: 11.0,
-        band_overhead_s: 2e-6,
-    }
-}
-
-/// The parts modelled.
-pub const CHIPS: [Chip; 4] = [
-    Chip {
-        name: "RP2040",
-        counts_from: "Cortex-M0+",
-        core: "2 x Cortex-M0+, 133 MHz",
-        cpu_hz: 133e6,
-        cores: 2,
-        link: spi(62.5),
-    },
-    Chip {
-        name: "RP2350",
-        counts_from: "Cortex-M4F",
-        core: "2 x Cortex-M33, 150 MHz",
-        cpu_hz: 150e6,
-        cores: 2,
-        link: spi(62.5),
-    },
-    Chip {
-        name: "STM32F4",
-        counts_from: "Cortex-M4F",
-        core: "1 x Cortex-M4F, 168 MHz",
-        cpu_hz: 168e6,
-        cores: 1,
-        link: spi(42.0),
-    },
-    Chip {
-        name: "ESP32-C3",
-        counts_from: "RV32IMC",
-        core: "1 x RV32IMC, 160 MHz",
-        cpu_hz: 160e6,
-        cores: 1,
-        link: spi(40.0),
-    },
-];
 
 /// What the table assumes, printed beside it.
 pub const ASSUMPTIONS: &str = "\

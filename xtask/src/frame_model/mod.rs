@@ -14,8 +14,10 @@
 //! transfer (which it could: a conservative figure). Everything else (wait states, bus
 //! contention, the cycles per instruction) is in the cycle figures given to it.
 //!
-//! A later `budget` command (how many triangles a glTF model may have for a frame rate)
-//! reuses [`Link`], [`Chip`], [`Work`] and [`frame_times`].
+//! `cargo xtask fps` (the benchmark scenes' measured work) and `cargo xtask budget` (a
+//! model's predicted work) share it, and the parts of [`chips`].
+
+pub mod chips;
 
 /// A display link: an SPI bus (or any serial link) to the display controller.
 #[derive(Clone, Copy, Debug)]
