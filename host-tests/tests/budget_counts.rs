@@ -37,7 +37,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::prelude::*;
 use fixel::scene::Mesh;
 use fixel::surface::BandRange;

@@ -37,7 +37,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel::demo;
+use fixel_scenes as demo;
 use fixel::geometry::Vertex;
 use fixel::pipeline::{DepthLess, ProjectionStage, QuadraticBy, ShadedDraw, SubdividedBy};
 use fixel::prelude::*;
