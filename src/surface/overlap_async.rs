@@ -106,7 +106,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
 
     /// [`each_band`](Self::each_band) for an [`AsyncBandSender`]: two buffers of the ring
     /// in turn, the band in one sent while the next is drawn into the other.
-    async fn each_band_async<S: AsyncBandSender<C>>(
+    pub(super) async fn each_band_async<S: AsyncBandSender<C>>(
         &mut self,
         stats: &mut BandStats,
         clear: C,
