@@ -69,30 +69,57 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
         ranges: &'f mut [BandRange],
         rows: u32,
         height: u32,
-        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+        geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
     ) -> Result<Self, Error> {
-        if draws.len() > usize::from(u8::MAX) + 1 {
+        let mut frame = SpansFrame::empty(draws, rows, height);
+        frame.bin(bins, ranges, geometry)?;
+        Ok(frame)
+    }
+
+    /// A frame with nothing binned yet.
+    fn empty(draws: &'f [&'d dyn BandDraw<C>], rows: u32, height: u32) -> Self {
+        let rows = rows.max(1);
+        SpansFrame {
+            draws,
+            windows: Windows {
+                ids: [(usize::MAX, 0); WINDOWS],
+                group: FrameDivisor::new(height.div_ceil(rows).div_ceil(WINDOWS as u32)),
+            },
+            bins: &[],
+            bins_full: false,
+            ranges: &[],
+            ranges_short: false,
+            triangles: 0,
+            rows,
+            height,
+        }
+    }
+
+    /// The binning pass (see [`new`](Self::new)) into this frame, in place: the frame
+    /// (its id windows are 512 bytes on a 32-bit part) is on the stack once.
+    fn bin(
+        &mut self,
+        bins: &'f mut [Binned],
+        ranges: &'f mut [BandRange],
+        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
+    ) -> Result<(), Error> {
+        if self.draws.len() > usize::from(u8::MAX) + 1 {
             return Err(Error::CapacityExceeded { capacity: 256 });
         }
         ranges.fill(BandRange::EMPTY);
-        let rows = rows.max(1);
-        let mut windows = Windows {
-            ids: [(usize::MAX, 0); WINDOWS],
-            group: FrameDivisor::new(height.div_ceil(rows).div_ceil(WINDOWS as u32)),
-        };
         // The pass borrows the storage; the frame keeps it afterwards, read only.
         let mut sink = MeshSink {
             pass: Pass::Bin {
-                windows: &mut windows,
+                windows: &mut self.windows,
                 bins: &mut *bins,
                 len: 0,
                 bins_full: false,
                 ranges: &mut *ranges,
                 ranges_short: false,
-                rows: FrameDivisor::new(rows),
-                height,
+                rows: FrameDivisor::new(self.rows),
+                height: self.height,
                 triangles: 0,
-                draws,
+                draws: self.draws,
                 check: PushCheck::NEW,
             },
             attributes: true,
@@ -113,17 +140,10 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
             return Err(e);
         }
         let (bins, ranges): (&'f [Binned], &'f [BandRange]) = (bins, ranges);
-        Ok(SpansFrame {
-            draws,
-            windows,
-            bins: bins.get(..len).unwrap_or(&[]),
-            bins_full,
-            ranges,
-            ranges_short,
-            triangles,
-            rows,
-            height,
-        })
+        self.bins = bins.get(..len).unwrap_or(&[]);
+        self.ranges = ranges;
+        (self.bins_full, self.ranges_short, self.triangles) = (bins_full, ranges_short, triangles);
+        Ok(())
     }
 
     /// Screen triangles the binning pass saw.
@@ -237,7 +257,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         sender: &mut S,
     ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
-        let frame = SpansFrame::new(draws, bins, ranges, self.rows, self.height, &mut geometry)?;
+        let mut frame = SpansFrame::empty(draws, self.rows, self.height);
+        frame.bin(bins, ranges, &mut geometry)?;
         let mut stats = frame.stats();
         // Lent out of the renderer for the band passes (`each_band` borrows it), emptied:
         // what an earlier frame kept is not this frame's.
@@ -315,7 +336,8 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         sender: &mut S,
     ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
-        let frame = SpansFrame::new(draws, bins, ranges, self.rows, self.height, &mut geometry)?;
+        let mut frame = SpansFrame::empty(draws, self.rows, self.height);
+        frame.bin(bins, ranges, &mut geometry)?;
         let mut stats = frame.stats();
         let setups = core::mem::take(&mut self.setups);
         setup_queue::clear(setups);

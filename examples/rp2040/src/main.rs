@@ -333,6 +333,8 @@ impl Link<'_> {
     fn memory_write(&mut self) {
         self.finish();
         if let Some((_, spi)) = self.dma.as_mut() {
+            // The last frame's final words may still be shifting out of the FIFO.
+            let _ = spi.flush();
             let _ = self.dc.set_low();
             let _ = spi.write(&[0x002C]);
             let _ = spi.flush();
