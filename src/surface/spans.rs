@@ -429,6 +429,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::setup_queue::QueueState;
     use super::*;
 
     #[test]

@@ -1,7 +1,8 @@
-//! A frame of meshes of any size ([`spans`](super::spans)) in every form of the band path:
-//! one binning pass ([`SpansFrame::new`]: screen triangles into the bins while they fit,
-//! the band range of every triangle id), then the band passes, drawn from the bins or by
-//! re-running the geometry for the triangles that meet each band.
+//! A frame of meshes of any size (a [`BandRange`] of two bytes per triangle, the geometry
+//! re-run through a [`MeshSink`] for the triangles each band meets) in every form of the
+//! band path: one binning pass ([`SpansFrame::new`]: screen triangles into the bins while
+//! they fit, the band range of every triangle id), then the band passes, drawn from the
+//! bins or by re-running the geometry for the triangles that meet each band.
 //!
 //! The forms, the same bands with the same pixels (tested bit for bit):
 //! * [`BandRenderer::render_spans`] (a blocking flush) and
@@ -223,7 +224,7 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
 }
 
 impl<C: TargetColor> BandRenderer<'_, C> {
-    /// Draws one frame of meshes of any size (see the [`spans`](super::spans) module docs).
+    /// Draws one frame of meshes of any size (two bytes of storage per triangle id).
     /// `geometry` is called once for binning and then once per band; it must push the same
     /// screen triangles in the same order each time (for each triangle id it
     /// [`wants`](MeshSink::wants)), usually through [`crate::scene::mesh_to_sink`]. `bins`
