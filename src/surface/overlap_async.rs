@@ -1,7 +1,8 @@
 //! The `async` frame (feature `embedded-hal-async`): band `k` is sent by an
 //! [`AsyncBandSender`] (an async SPI bus with DMA under an executor, say) while band
 //! `k + 1` is drawn; the frame awaits band `k`'s transfer only when it needs the buffer
-//! back.
+//! back. Every draw of the band path has this form: [`BandRenderer::render_async`],
+//! [`BandRenderer::render_spans_async`] and [`BandRenderer::render_accumulated_async`].
 //!
 //! The sender's future for band `k` is polled once (which starts the transfer), band
 //! `k + 1` is drawn into the other buffer of the ring, then the future is awaited. The

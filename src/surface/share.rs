@@ -1,7 +1,10 @@
 //! One frame's bands drawn by two (or more) cores: the frame is binned once
 //! ([`BinnedFrame::new`], on one core), then each core draws its share of the bands
 //! ([`BandRenderer::render_share_to`]) from the same bins, read only, into its own band
-//! buffers, with its own depth band and sender.
+//! buffers, with its own depth band and sender. The other draws of the band path split the
+//! same way: the accumulated frame from a [`BinnedFrame`]
+//! ([`BandRenderer::render_accumulated_share_to`]), the frame of meshes of any size from a
+//! [`SpansFrame`](super::SpansFrame) ([`BandRenderer::render_spans_share_to`]).
 //!
 //! The split is static and interleaved ([`BandShare`]: core `c` of `n` draws the bands `k`
 //! with `k mod n = c`), for three reasons:
