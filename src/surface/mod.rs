@@ -10,7 +10,8 @@
 //!   framebuffer; with fewer rows it is a *band* (see [`BandRenderer`]).
 //! * [`BandRenderer::render`]: draws a frame as horizontal bands through a small buffer and flushes each to
 //!   any embedded-graphics `DrawTarget` through `fill_contiguous`.
-//! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle.
+//! * [`BandRenderer::render_spans`]: bands for meshes of any size, with two bytes of storage per triangle
+//!   ([`spans_frame`]: its binning pass, [`SpansFrame`], and its forms: sender, `async`, cores).
 //! * [`overlap`]: a ring of band buffers and a [`BandSender`] (a DMA channel, say): band `k`
 //!   is sent while band `k + 1` is drawn; [`overlap_async`]: the same as an `async` frame;
 //!   [`share`]: one frame's bands drawn by two cores from bins built once;
@@ -30,6 +31,7 @@ mod setup_queue;
 pub mod share;
 pub(crate) mod smooth;
 pub(crate) mod spans;
+pub mod spans_frame;
 #[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
 pub mod spi_send;
 
@@ -46,5 +48,6 @@ pub use resample::{resolve_box, Accumulator};
 pub use share::{BandShare, BinnedFrame};
 pub use smooth::smooth_edges;
 pub use spans::{BandRange, MeshSink};
+pub use spans_frame::SpansFrame;
 #[cfg(any(feature = "embedded-hal", feature = "embedded-hal-async"))]
 pub use spi_send::SpiSender;

@@ -1,7 +1,8 @@
 //! The `async` frame (feature `embedded-hal-async`): band `k` is sent by an
 //! [`AsyncBandSender`] (an async SPI bus with DMA under an executor, say) while band
 //! `k + 1` is drawn; the frame awaits band `k`'s transfer only when it needs the buffer
-//! back.
+//! back. Every draw of the band path has this form: [`BandRenderer::render_async`],
+//! [`BandRenderer::render_spans_async`] and [`BandRenderer::render_accumulated_async`].
 //!
 //! The sender's future for band `k` is polled once (which starts the transfer), band
 //! `k + 1` is drawn into the other buffer of the ring, then the future is awaited. The
@@ -106,7 +107,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
 
     /// [`each_band`](Self::each_band) for an [`AsyncBandSender`]: two buffers of the ring
     /// in turn, the band in one sent while the next is drawn into the other.
-    async fn each_band_async<S: AsyncBandSender<C>>(
+    pub(super) async fn each_band_async<S: AsyncBandSender<C>>(
         &mut self,
         stats: &mut BandStats,
         clear: C,

@@ -1,7 +1,10 @@
 //! One frame's bands drawn by two (or more) cores: the frame is binned once
 //! ([`BinnedFrame::new`], on one core), then each core draws its share of the bands
 //! ([`BandRenderer::render_share_to`]) from the same bins, read only, into its own band
-//! buffers, with its own depth band and sender.
+//! buffers, with its own depth band and sender. The other draws of the band path split the
+//! same way: the accumulated frame from a [`BinnedFrame`]
+//! ([`BandRenderer::render_accumulated_share_to`]), the frame of meshes of any size from a
+//! [`SpansFrame`](super::SpansFrame) ([`BandRenderer::render_spans_share_to`]).
 //!
 //! The split is static and interleaved ([`BandShare`]: core `c` of `n` draws the bands `k`
 //! with `k mod n = c`), for three reasons:
@@ -169,6 +172,12 @@ impl<'f, 'd, C: TargetColor> BinnedFrame<'f, 'd, C> {
     pub fn triangles(&self) -> usize {
         self.bins.len() + self.later.len()
     }
+
+    /// The draws, and the binned triangles in drawing order (the first part, then the
+    /// joined one).
+    pub(super) fn parts(&self) -> (&'f [&'d dyn BandDraw<C>], [&'f [Binned]; 2]) {
+        (self.draws, [self.bins, self.later])
+    }
 }
 
 impl<C: TargetColor> BandRenderer<'_, C> {
@@ -186,14 +195,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         share: BandShare,
         sender: &mut S,
     ) -> Result<BandStats, BandError<S::Error>> {
-        self.check_draws(frame.draws)?;
-        let bands = self.height.div_ceil(self.rows.max(1));
-        if bands < share.cores() {
-            return Err(BandError::Input(Error::TooFewBands {
-                bands,
-                cores: share.cores(),
-            }));
-        }
+        self.check_share(frame, share)?;
         let mut stats = BandStats {
             triangles: frame.triangles() as u32,
             ..BandStats::default()
@@ -212,5 +214,23 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         })
         .map_err(BandError::Flush)?;
         Ok(stats)
+    }
+
+    /// What every form of a share refuses: draws this renderer cannot draw (as `render`),
+    /// fewer bands than `share` has cores ([`Error::TooFewBands`]).
+    pub(super) fn check_share(
+        &self,
+        frame: &BinnedFrame<'_, '_, C>,
+        share: BandShare,
+    ) -> Result<(), Error> {
+        self.check_draws(frame.draws)?;
+        let bands = self.height.div_ceil(self.rows.max(1));
+        if bands < share.cores() {
+            return Err(Error::TooFewBands {
+                bands,
+                cores: share.cores(),
+            });
+        }
+        Ok(())
     }
 }

@@ -1,16 +1,16 @@
 //! Band rendering for meshes of any size: two bytes per triangle instead of a screen
 //! triangle per bin.
 //!
-//! [`BandRenderer::render`] keeps every screen triangle of the frame (168 bytes each);
+//! [`BandRenderer::render`](super::BandRenderer::render) keeps every screen triangle of the frame (168 bytes each);
 //! a mesh of a thousand visible triangles does not fit a small part's RAM, and the fallback
-//! runs the whole geometry once per band. [`BandRenderer::render_spans`] keeps, per mesh
+//! runs the whole geometry once per band. [`BandRenderer::render_spans`](super::BandRenderer::render_spans) keeps, per mesh
 //! triangle, only the range of bands it touches ([`BandRange`], 2 bytes), found by one
 //! geometry pass over the frame; each band then runs the geometry again for the triangles
 //! whose range covers it and skips the others *before transforming anything* (the
 //! geometry asks [`MeshSink::next_wanted`] for the next triangle that meets the band, a
 //! scan of the ranges). With 8-row bands a small triangle is
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
-//! instead of one per band; with [`BandRenderer::with_setup_cache`] the raster set-up of a
+//! instead of one per band; with [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache) the raster set-up of a
 //! triangle crossing into the next band is built once for both (on Cortex-M0+ that saves
 //! about 9 % of the benchmark sphere in bands, which then costs about 1.2 times the whole
 //! frame; measure with `cargo xtask mcu`).
@@ -18,17 +18,17 @@
 //! Ladder of storage (same pixels on every rung, tested):
 //!
 //! 1. the frame's screen triangles fit `bins`: they are drawn from the bins, the geometry runs
-//!    once (as [`BandRenderer::render`]);
+//!    once (as [`BandRenderer::render`](super::BandRenderer::render));
 //! 2. they do not, but every triangle id has a [`BandRange`]: one binning pass, then each
-//!    band re-projects the triangles it meets ([`BandStats::reprojected`]);
+//!    band re-projects the triangles it meets ([`BandStats::reprojected`](super::BandStats::reprojected));
 //! 3. triangle ids past the end of `ranges` have no stored range: they are projected in
-//!    every band ([`BandStats::rewalked`]); with empty `ranges` this is the plain per-band
+//!    every band ([`BandStats::rewalked`](super::BandStats::rewalked)); with empty `ranges` this is the plain per-band
 //!    re-walk.
 //!
 //! Storage (bytes; 32-bit targets): a screen triangle in `bins` 168, a [`BandRange`] 2, a
 //! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, a kept set-up
 //! ([`KeptSetup`](crate::pipeline::KeptSetup), optional, see
-//! [`BandRenderer::with_setup_cache`]) 88, plus 512 on the stack for the per-band id
+//! [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache)) 88, plus 512 on the stack for the per-band id
 //! windows. For a 320 x 8 band with 16-bit depth (10,240):
 //!
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
@@ -43,11 +43,10 @@
 //! mesh; ties in the depth test resolve the same way), and the raster set-up depends on the
 //! viewport only.
 
-use super::band::{rows_of, BandError, BandStats, Binned, PushCheck};
+use super::band::{rows_of, Binned, PushCheck};
 use super::band_draw::{BandDraw, Binnable};
-use super::overlap::{BandSender, Blocking};
-use super::setup_queue::{self, QueueState, SetupQueue};
-use super::{BandRenderer, Frame, RenderTarget};
+use super::setup_queue::{self, SetupQueue};
+use super::{Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::geometry::ScreenTriangle;
 
@@ -68,7 +67,7 @@ impl Default for BandRange {
 }
 
 /// Largest band index a range stores; later bands share it.
-const LAST_BAND: u32 = 254;
+pub(super) const LAST_BAND: u32 = 254;
 
 impl BandRange {
     /// No band (culled, clipped away or outside the frame's rows).
@@ -107,9 +106,9 @@ impl BandRange {
 /// Receives the screen triangles of a frame's geometry, tagged with a triangle id (the
 /// triangle's index in its mesh plus the mesh's first id) and the index of their draw.
 pub struct MeshSink<'s, 'f, 'd, C: TargetColor> {
-    pass: Pass<'s, 'f, 'd, C>,
+    pub(super) pass: Pass<'s, 'f, 'd, C>,
     /// What [`MeshSink::attributes`] says (false once the binning pass's bins are full).
-    attributes: bool,
+    pub(super) attributes: bool,
 }
 
 impl<C: TargetColor> core::fmt::Debug for MeshSink<'_, '_, '_, C> {
@@ -121,7 +120,7 @@ impl<C: TargetColor> core::fmt::Debug for MeshSink<'_, '_, '_, C> {
     }
 }
 
-enum Pass<'s, 'f, 'd, C: TargetColor> {
+pub(super) enum Pass<'s, 'f, 'd, C: TargetColor> {
     /// The binning pass: screen triangles to `bins` while they fit, band ranges always.
     Bin {
         windows: &'s mut Windows,
@@ -156,9 +155,9 @@ enum Pass<'s, 'f, 'd, C: TargetColor> {
 /// Per group of bands, the lowest and highest triangle id that meets it (so a band pass
 /// need not ask about the ids outside). 64 groups of `group` consecutive bands.
 #[derive(Debug)]
-struct Windows {
-    ids: [(usize, usize); WINDOWS],
-    group: FrameDivisor,
+pub(super) struct Windows {
+    pub(super) ids: [(usize, usize); WINDOWS],
+    pub(super) group: FrameDivisor,
 }
 
 /// `x / d` for a divisor fixed for the frame (rows per band, bands per window group): a
@@ -166,14 +165,14 @@ struct Windows {
 /// triangle for each, and on Cortex-M0+ a 32-bit division is a library call of about 100
 /// instructions.
 #[derive(Clone, Copy, Debug)]
-struct FrameDivisor {
+pub(super) struct FrameDivisor {
     d: u32,
     shift: u32,
     pow2: bool,
 }
 
 impl FrameDivisor {
-    fn new(d: u32) -> Self {
+    pub(super) fn new(d: u32) -> Self {
         let d = d.max(1);
         FrameDivisor {
             d,
@@ -192,10 +191,10 @@ impl FrameDivisor {
     }
 }
 
-const WINDOWS: usize = 64;
+pub(super) const WINDOWS: usize = 64;
 
 impl Windows {
-    fn window(&self, band: u32) -> (usize, usize) {
+    pub(super) fn window(&self, band: u32) -> (usize, usize) {
         self.ids
             .get(self.group.div(band) as usize)
             .copied()
@@ -428,149 +427,9 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     }
 }
 
-impl<C: TargetColor> BandRenderer<'_, C> {
-    /// Draws one frame of meshes of any size (see the module docs). `geometry` is called
-    /// once for binning and then once per band; it must push the same screen triangles in
-    /// the same order each time (for each triangle id it [`wants`](MeshSink::wants)),
-    /// usually through [`crate::scene::mesh_to_sink`]. `bins` holds screen triangles while
-    /// they fit (may be empty); `ranges` one [`BandRange`] per triangle id (may be shorter
-    /// than the frame: see [`BandStats::rewalked`]). Each band is cleared to `clear`, drawn
-    /// and passed to `flush`; the first flush error stops the frame and is returned. Input
-    /// errors are refused before any band is drawn, as for [`render`](Self::render).
-    pub fn render_spans<E>(
-        &mut self,
-        draws: &[&dyn BandDraw<C>],
-        bins: &mut [Binned],
-        ranges: &mut [BandRange],
-        clear: C,
-        geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
-        flush: impl FnMut(&Frame<'_, C>) -> Result<(), E>,
-    ) -> Result<BandStats, BandError<E>> {
-        self.render_spans_to(draws, bins, ranges, clear, geometry, &mut Blocking(flush))
-    }
-
-    /// [`render_spans`](Self::render_spans) through a [`BandSender`], as
-    /// [`render_to`](Self::render_to) is [`render`](Self::render) through one: the same
-    /// bands, the next drawn while the last is sent when the renderer has a ring of buffers.
-    pub fn render_spans_to<S: BandSender<C>>(
-        &mut self,
-        draws: &[&dyn BandDraw<C>],
-        bins: &mut [Binned],
-        ranges: &mut [BandRange],
-        clear: C,
-        mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
-        sender: &mut S,
-    ) -> Result<BandStats, BandError<S::Error>> {
-        self.check_draws(draws)?;
-        ranges.fill(BandRange::EMPTY);
-        let rows = self.rows.max(1);
-        let mut windows = Windows {
-            ids: [(usize::MAX, 0); WINDOWS],
-            group: FrameDivisor::new(self.height.div_ceil(rows).div_ceil(WINDOWS as u32)),
-        };
-        let mut sink = MeshSink {
-            pass: Pass::Bin {
-                windows: &mut windows,
-                bins,
-                len: 0,
-                bins_full: false,
-                ranges,
-                ranges_short: false,
-                rows: FrameDivisor::new(rows),
-                height: self.height,
-                triangles: 0,
-                draws,
-                check: PushCheck::NEW,
-            },
-            attributes: true,
-        };
-        geometry(&mut sink);
-        let Pass::Bin {
-            windows,
-            bins,
-            len,
-            bins_full,
-            ranges,
-            ranges_short,
-            triangles,
-            check,
-            ..
-        } = sink.pass
-        else {
-            return Ok(BandStats::default());
-        };
-        if let Some(e) = check.error() {
-            return Err(BandError::Input(e));
-        }
-        let mut stats = BandStats {
-            triangles,
-            reprojected: bins_full,
-            rewalked: bins_full && ranges_short,
-            ..BandStats::default()
-        };
-        let ranges: &[BandRange] = ranges;
-        let windows: &Windows = windows;
-        // Lent out of the renderer for the band passes (`each_band` borrows it), emptied:
-        // what an earlier frame kept is not this frame's.
-        let setups = core::mem::take(&mut self.setups);
-        setup_queue::clear(setups);
-        let mut queue = QueueState::default();
-        let result = self.each_band(&mut stats, clear, sender, |band, index| {
-            if bins_full {
-                let mut s = MeshSink {
-                    pass: Pass::Band {
-                        // Ids without a stored range are wanted in every band.
-                        window: if ranges_short {
-                            (0, usize::MAX)
-                        } else {
-                            windows.window(index)
-                        },
-                        draws,
-                        band,
-                        ranges,
-                        index: index.min(LAST_BAND) as u8,
-                        pixels: 0,
-                        // The band counted modulo 256.
-                        setups: SetupQueue::new(&mut *setups, queue, index as u8),
-                        last: (usize::MAX, 0),
-                    },
-                    attributes: true,
-                };
-                geometry(&mut s);
-                match s.pass {
-                    Pass::Band { pixels, setups, .. } => {
-                        queue = setups.state();
-                        pixels
-                    }
-                    Pass::Bin { .. } => 0,
-                }
-            } else {
-                let (r0, r1) = band.row_range();
-                let mut pixels = 0;
-                // Bins in index order in every band: the index is the set-up key.
-                let mut kept = SetupQueue::new(&mut *setups, queue, index as u8);
-                for (i, b) in bins[..len].iter().enumerate() {
-                    if !b.meets(r0, r1) {
-                        continue;
-                    }
-                    if let Some(d) = draws.get(usize::from(b.draw)) {
-                        let slot = setup_queue::key(i, 0)
-                            .and_then(|key| kept.slot(key, b.draw, i32::from(b.rows.1) > r1));
-                        pixels += d.draw_piece(b.tri.as_ref(), band, slot);
-                    }
-                }
-                queue = kept.state();
-                pixels
-            }
-        });
-        self.setups = setups;
-        result.map_err(BandError::Flush)?;
-        Ok(stats)
-    }
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::setup_queue::QueueState;
     use super::*;
 
     #[test]

@@ -1,6 +1,6 @@
 //! `cargo xtask ci`: the check steps (toolchain, fmt, clippy, tests, fuzz, the pictures of
-//! docs/images, docs, the dry-run publish, the preview window under Xvfb, cross builds,
-//! firmware clippy, `mcu`), run fail-fast, and the summary table.
+//! docs/images, docs, the dry-run publish, the preview window under Xvfb, cross builds, the
+//! board examples' builds, firmware clippy, `mcu`), run fail-fast, and the summary table.
 
 use std::env;
 use std::fmt::Write as _;
@@ -17,6 +17,13 @@ const CROSS_TARGETS: [&str; 3] = [
     "thumbv6m-none-eabi",
     "thumbv7em-none-eabihf",
     "riscv32imc-unknown-none-elf",
+];
+
+/// The board examples (crates of their own, outside the workspace) and their targets: built,
+/// not run. Each builds its HAL from scratch on a fresh machine (about 3 minutes each).
+const BOARDS: [(&str, &str); 2] = [
+    ("rp2040", "thumbv6m-none-eabi"),
+    ("esp32c3", "riscv32imc-unknown-none-elf"),
 ];
 
 /// The target the firmware clippy step checks every firmware binary for.
@@ -137,6 +144,21 @@ pub(crate) fn ci(args: &CiArgs) -> ExitCode {
         } else {
             step(name, move || {
                 cargo(&["build", "-p", "fixel", "--release", "--target", t]).run()
+            })
+        });
+    }
+
+    // The board examples (RP2040 on two cores, ESP32-C3 with the async frame) build with
+    // their pinned HALs.
+    for (board, t) in BOARDS {
+        let name = format!("build examples/{board}");
+        steps.push(if no_cross {
+            skipped(name, "--no-cross")
+        } else {
+            step(name, move || {
+                cargo(&["build", "--release", "--target", t])
+                    .in_dir(&format!("examples/{board}"))
+                    .run()
             })
         });
     }
