@@ -19,7 +19,6 @@ use std::task::{Context, Poll, Waker};
 
 use common::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes as demo;
 use fixel::geometry::Viewport;
 use fixel::math::Fx;
 use fixel::pipeline::{Draw, DrawMode, KeptSetup, Shading};
@@ -31,6 +30,7 @@ use fixel::surface::{
     Blocking, Frame, MeshSink, SpansFrame, TriangleSink,
 };
 use fixel::Error;
+use fixel_scenes as demo;
 use proptest::prelude::*;
 
 /// One band as it reached the display: its first row and pixels.

@@ -37,11 +37,11 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes as demo;
 use fixel::prelude::*;
 use fixel::scene::Mesh;
 use fixel::surface::BandRange;
 use fixel::texture::MipTexture;
+use fixel_scenes as demo;
 use model_scene::{ModelBuffers, ModelTarget};
 use scenes::{Buffers, FrameResult, SmallBuffers, SphereBuffers, Target};
 

@@ -1,4 +1,4 @@
-//! The `async` frame (feature `embedded-hal-async`): band `k` is sent by an
+//! The `async` frame (no feature needed; the `embedded-hal-async` feature adds `SpiSender`): band `k` is sent by an
 //! [`AsyncBandSender`] (an async SPI bus with DMA under an executor, say) while band
 //! `k + 1` is drawn; the frame awaits band `k`'s transfer only when it needs the buffer
 //! back. Every draw of the band path has this form: [`BandRenderer::render_async`],

@@ -37,7 +37,6 @@ use std::path::Path;
 use std::time::Instant;
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
-use fixel_scenes as demo;
 use fixel::geometry::Vertex;
 use fixel::pipeline::{DepthLess, ProjectionStage, QuadraticBy, ShadedDraw, SubdividedBy};
 use fixel::prelude::*;
@@ -48,6 +47,7 @@ use fixel::shading::{
 use fixel::texture::{
     Bilinear, Index4, Index8, IndexFormat, Lod, MipTexture, Nearest, PaletteTexture, Repeat,
 };
+use fixel_scenes as demo;
 use host_tests::report_args::ReportArgs;
 use scenes::{Fnv1a, FrameResult, SmallBuffers};
 
