@@ -166,6 +166,14 @@ pub trait Shader: Copy {
     /// [`Shader::LOD`]. Default `None`.
     const LOD_DIRECTION: Option<usize> = None;
 
+    /// The first of six varyings holding a normal `n` then an eye vector `v` (any scale
+    /// each), when [`Fragment::lambda`] is to be GL's cube-map level of detail of their
+    /// reflection `r = 2 (n·v) n − (n·n) v`, from its exact screen derivatives at the pixel
+    /// ([`reflection_lambda`](crate::shading::env::reflection_lambda); units as
+    /// [`Shader::LOD_DIRECTION`]). Only with [`Shader::LOD`], and not with
+    /// [`Shader::LOD_DIRECTION`] (which wins). Default `None`.
+    const LOD_REFLECTION: Option<usize> = None;
+
     /// Where [`Fragment::lambda`] is computed (only when [`Shader::LOD`]).
     #[inline(always)]
     fn lod_granularity(&self) -> crate::texture::LodGranularity {

@@ -6,7 +6,7 @@
 //!   major axis through a reciprocal table, nearest or bilinear within a face;
 //!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges (nearest stays
 //!   nearest); [`cube_mip`]: [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per
-//!   face with GL's LOD ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
+//!   face with GL's LOD per pixel ([`reflect_lod`]) ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
 //!   filters kept).
 //! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
 //!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
@@ -62,6 +62,7 @@ pub mod cube_mip;
 pub mod direction;
 pub mod latlong;
 pub mod reflect;
+pub mod reflect_lod;
 pub mod seamless;
 pub mod sphere_bake;
 
@@ -71,6 +72,7 @@ pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
 pub use direction::{Direction, DirectionMip, WHITE};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+pub use reflect_lod::reflection_lambda;
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};
 pub use sphere::SphereMap;
 pub use sphere_bake::{bake_sphere_map, sphere_texel_direction};
