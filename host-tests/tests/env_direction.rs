@@ -481,7 +481,7 @@ fn hard_cases() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: common::cases(256), ..ProptestConfig::default() })]
 
     /// Wild vertices never panic and never write outside the frame.
     #[test]

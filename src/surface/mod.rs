@@ -34,7 +34,7 @@ pub(crate) mod spans;
 pub mod spi_send;
 
 pub use band::{BandError, BandRenderer, BandStats, Binned, DrawTargetFlush, TriangleSink};
-pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
+pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable, BINNED_VARYINGS};
 pub use depth_map::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use frame::{Frame, DEPTH_CLEAR};
 pub use overlap::{BandSender, Blocking, Dma};

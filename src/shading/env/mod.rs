@@ -18,7 +18,8 @@
 //!   ([`convolve_face`]) and [`EnvLit`]: base texture × diffuse + glossy.
 //! * [`reflect`]: the reflection per pixel ([`ReflectPerPixel`], from interpolated `n` and
 //!   `v`, no square root) or per vertex ([`ReflectPerVertex`], interpolated `r`), and
-//!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals.
+//!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals;
+//!   [`tinted`]: [`Tinted`], the per-pixel reflections times a vertex colour.
 //!
 //! Every lookup implements [`EnvLookup`]: a colour for a direction given as three `i32` of
 //! any scale. Nothing here is linked by a draw that does not use it.
@@ -65,6 +66,7 @@ pub mod reflect;
 pub mod reflect_lod;
 pub mod seamless;
 pub mod sphere_bake;
+pub mod tinted;
 
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
@@ -76,5 +78,6 @@ pub use reflect_lod::reflection_lambda;
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};
 pub use sphere::SphereMap;
 pub use sphere_bake::{bake_sphere_map, sphere_texel_direction};
+pub use tinted::Tinted;
 pub mod sky;
 pub mod sphere;
