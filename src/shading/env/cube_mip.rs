@@ -14,7 +14,7 @@
 //! # Formats
 //!
 //! Varyings: `nx, ny, nz, vx, vy, vz` as [`ReflectPerPixel`](super::ReflectPerPixel) (any
-//! scale per vector, [`EnvVertices::per_pixel`]).
+//! scale per vector, [`EnvVertices::per_pixel`](super::EnvVertices::per_pixel)).
 //!
 //! # Example
 //!
