@@ -241,7 +241,8 @@ fn main() {
     }
 
     // Trilinear mip chains per face (`generate_mips`, 7 levels), LOD per pixel from the
-    // projected pair, against the reference's GL cube LOD (central differences of r).
+    // reflection's derivatives, against the reference's GL cube LOD (central differences
+    // of r).
     {
         let levels = fixel::texture::full_levels(SIZE, SIZE);
         let chains = host_tests::env_scene::sky_chains(SIZE);
