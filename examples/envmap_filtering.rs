@@ -132,7 +132,7 @@ fn main() -> Result<(), fixel::Error> {
     let cube256 = CubeMap::new(core::array::from_fn(|i| *mips[i].base()), Bilinear)?;
     let model = Mat4::translation(Vec3::from_num(0, 0, -14));
     let far6 = sphere(&model, &proj, EnvVertices::per_pixel);
-    let far8 = sphere(&model, &proj, EnvVertices::per_pixel_mip);
+    let far8 = sphere(&model, &proj, EnvVertices::per_pixel);
     let level0 = frame(&cube256, ReflectPerPixel(cube256), &far6)?;
     place(&mut pic, &zoom3(&level0), 0, 1);
     let shader = ReflectPerPixelMip {

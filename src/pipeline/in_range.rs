@@ -110,6 +110,7 @@ impl<S: Shader> Shader for InRange<S> {
     const SMALL: bool = S::SMALL;
     const LOD: bool = S::LOD;
     const LOD_DIRECTION: Option<usize> = S::LOD_DIRECTION;
+    const LOD_REFLECTION: Option<usize> = S::LOD_REFLECTION;
     const RANGE_VARYING: Option<usize> = S::RANGE_VARYING;
 
     #[inline(always)]

@@ -15,6 +15,7 @@ use super::stages::ProjKind;
 use super::tri_setup::TriSetup;
 use crate::math::recip_q30::{mul_q16, recip_q30};
 use crate::math::wide::mul_wide_signed;
+use crate::shading::env::reflection_lambda;
 use crate::shading::{Shader, Varyings};
 use crate::texture::mip::{direction_lambda, lambda_q8};
 
@@ -31,14 +32,22 @@ fn add<V: Varyings>(v: &mut V, d: &V) {
     }
 }
 
+/// The second index of the pair [`lod_pair`] gives for a reflection: `(a, REFLECTION)`
+/// names `n` at varyings `a..a + 3` and `v` at `a + 3..a + 6` ([`Shader::LOD_REFLECTION`]).
+/// Past every varying, so code that reads the pair as texel coordinates reads 0 there.
+pub(crate) const REFLECTION: usize = usize::MAX;
+
 /// The varying pair whose level of detail the span loop computes for shader `S`: its
-/// [`Shader::TEXCOORDS`] pair, or `(a, a)` for a direction at varyings `a..a + 3`
-/// ([`Shader::LOD_DIRECTION`]). A pair of equal indices always names a direction.
+/// [`Shader::TEXCOORDS`] pair, `(a, a)` for a direction at varyings `a..a + 3`
+/// ([`Shader::LOD_DIRECTION`]), or `(a, REFLECTION)` for a reflection of `n` and `v` from
+/// varying `a` ([`Shader::LOD_REFLECTION`]). A pair of equal indices always names a
+/// direction.
 #[inline(always)]
 pub(crate) fn lod_pair<S: Shader>() -> Option<(usize, usize)> {
-    match S::LOD_DIRECTION {
-        Some(a) => Some((a, a)),
-        None => S::TEXCOORDS,
+    match (S::LOD_DIRECTION, S::LOD_REFLECTION) {
+        (Some(a), _) => Some((a, a)),
+        (None, Some(a)) => Some((a, REFLECTION)),
+        (None, None) => S::TEXCOORDS,
     }
 }
 
@@ -46,6 +55,19 @@ pub(crate) fn lod_pair<S: Shader>() -> Option<(usize, usize)> {
 #[inline(always)]
 fn get3<V: Varyings>(v: &V, a: usize) -> [i32; 3] {
     [get(v, a), get(v, a + 1), get(v, a + 2)]
+}
+
+/// [`reflection_lambda`] of `n`, `v` at varyings `a..a + 6` of `at` (values or perspective
+/// numerators) with the set-up's steps `dx`, `dy` of the same.
+#[inline(always)]
+fn reflection_at<V: Varyings>(at: &V, dx: &V, dy: &V, a: usize) -> i32 {
+    let b = a.wrapping_add(3);
+    reflection_lambda(
+        get3(at, a),
+        get3(at, b),
+        [get3(dx, a), get3(dx, b)],
+        [get3(dy, a), get3(dy, b)],
+    )
 }
 
 /// `lambda` of an affine mapping: constant derivatives, straight from the planes. A
@@ -60,6 +82,9 @@ pub(crate) fn affine_lambda<V: Varyings>(
     if a == b {
         return direction_lambda(get3(&at(), a), get3(&s.dx, a), get3(&s.dy, a));
     }
+    if b == REFLECTION {
+        return reflection_at(&at(), &s.dx, &s.dy, a);
+    }
     lambda_q8(get(&s.dx, a), get(&s.dx, b), get(&s.dy, a), get(&s.dy, b))
 }
 
@@ -71,6 +96,9 @@ pub(crate) fn affine_lambda<V: Varyings>(
 pub(super) fn hyper_lambda<V: Varyings>(s: &TriSetup<V>, h: &Hyper<V>, a: usize, b: usize) -> i32 {
     if a == b {
         return direction_lambda(get3(&h.s, a), get3(&s.dx, a), get3(&s.dy, a));
+    }
+    if b == REFLECTION {
+        return reflection_at(&h.s, &s.dx, &s.dy, a);
     }
     let r32 = recip_q30(h.q);
     let r = i64::from(r32);

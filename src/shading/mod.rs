@@ -50,9 +50,11 @@ pub use palette::{PaletteBinding, PaletteModulateIntensity, PaletteReplace};
 pub use texcoord::{check_footprints_bound, TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)
-/// and the span loop one running value and one step each; 8 covers a texture pair, a
-/// colour and a light vector.
-pub const MAX_VARYINGS: usize = 8;
+/// and the span loop one running value and one step each, sized by the shader's own count,
+/// so the limit costs nothing to a shader that declares fewer; 9 covers a normal, an eye
+/// vector and a colour ([`env::Tinted`]). The band renderer's bins hold triangles of at
+/// most [`BINNED_VARYINGS`](crate::surface::BINNED_VARYINGS) (8).
+pub const MAX_VARYINGS: usize = 9;
 
 /// A shader's interpolated attributes: `[i32; N]` with `N <= MAX_VARYINGS`.
 ///
@@ -61,7 +63,7 @@ pub const MAX_VARYINGS: usize = 8;
 ///
 /// ```compile_fail
 /// use fixel::shading::Varyings;
-/// const TOO_MANY: usize = <[i32; 9] as Varyings>::N;
+/// const TOO_MANY: usize = <[i32; 10] as Varyings>::N;
 /// ```
 pub trait Varyings: Copy + core::fmt::Debug + 'static {
     /// The number of varyings, at most [`MAX_VARYINGS`].
@@ -78,7 +80,7 @@ impl<const N: usize> Varyings for [i32; N] {
     const N: usize = {
         assert!(
             N <= MAX_VARYINGS,
-            "a shader declares more varyings than fixel's set-up supports (MAX_VARYINGS = 8)"
+            "a shader declares more varyings than fixel's set-up supports (MAX_VARYINGS = 9)"
         );
         N
     };
@@ -167,6 +169,14 @@ pub trait Shader: Copy {
     /// ([`direction_lambda`](crate::texture::direction_lambda)). Only with
     /// [`Shader::LOD`]. Default `None`.
     const LOD_DIRECTION: Option<usize> = None;
+
+    /// The first of six varyings holding a normal `n` then an eye vector `v` (any scale
+    /// each), when [`Fragment::lambda`] is to be GL's cube-map level of detail of their
+    /// reflection `r = 2 (n·v) n − (n·n) v`, from its exact screen derivatives at the pixel
+    /// ([`reflection_lambda`](crate::shading::env::reflection_lambda); units as
+    /// [`Shader::LOD_DIRECTION`]). Only with [`Shader::LOD`], and not with
+    /// [`Shader::LOD_DIRECTION`] (which wins). Default `None`.
+    const LOD_REFLECTION: Option<usize> = None;
 
     /// Where [`Fragment::lambda`] is computed (only when [`Shader::LOD`]).
     #[inline(always)]

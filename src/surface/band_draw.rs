@@ -7,11 +7,14 @@
 //! triangle piece, with no heap.
 //!
 //! Screen triangles carry the varyings their draw declares (`N` of [`ScreenTriangle<N>`],
-//! 0 to [`MAX_VARYINGS`]). The bins store them as an [`AnyTriangle`], an enum with one
-//! variant per `N`: a bin is as large as a triangle of 8 varyings (168 bytes on 32-bit
+//! 0 to [`BINNED_VARYINGS`], one less than a shader may declare, [`MAX_VARYINGS`]). The
+//! bins store them as an [`AnyTriangle`], an enum with one variant per `N`: a bin is as
+//! large as a triangle of 8 varyings (168 bytes on 32-bit
 //! targets, against 128 for a classic triangle alone), and a band reads a binned triangle
 //! in place, without copying it. A caller-provided word arena with a size per draw would
-//! save up to 40 bytes per classic bin, at the price of a copy per triangle and band.
+//! save up to 40 bytes per classic bin, at the price of a copy per triangle and band; a
+//! variant of 9 varyings would cost every bin 12 bytes more, so a 9-varying draw
+//! ([`Tinted`](crate::shading::env::Tinted)) fills whole frames or a frame per band.
 //!
 //! ```
 //! use fixel::prelude::*;
@@ -52,6 +55,11 @@ use crate::geometry::{ScreenTriangle, ScreenVertex};
 use crate::pipeline::{DepthStage, Draw, KeptSetup, ProjectionStage, ShadedDraw};
 use crate::shading::{Shader, MAX_VARYINGS};
 
+/// The most varyings of a triangle the band renderer's bins hold ([`AnyTriangle`] has a
+/// variant per count up to it): one less than [`MAX_VARYINGS`], so that a bin stays the
+/// size of a triangle of 8 varyings.
+pub const BINNED_VARYINGS: usize = 8;
+
 mod sealed {
     /// Only fixel's draws and screen triangles implement the band traits.
     pub trait Sealed {}
@@ -60,10 +68,10 @@ mod sealed {
 /// A draw as the band renderer sees it: how many varyings its screen triangles carry,
 /// whether it tests depth, and how it draws one screen triangle into a band. Implemented by
 /// [`Draw`] (5 varyings: `u, v, r, g, b`) and by every [`ShadedDraw`] whose shader has at
-/// most [`MAX_VARYINGS`]; object-safe, so draws of different shader types share one
+/// most [`BINNED_VARYINGS`]; object-safe, so draws of different shader types share one
 /// `&[&dyn BandDraw<C>]`.
 pub trait BandDraw<C: TargetColor>: sealed::Sealed {
-    /// Varyings per vertex of this draw's screen triangles (`0..=MAX_VARYINGS`).
+    /// Varyings per vertex of this draw's screen triangles (`0..=BINNED_VARYINGS`).
     fn varyings(&self) -> usize;
 
     /// Whether the draw tests depth (it then needs a depth band).
@@ -81,7 +89,7 @@ pub trait BandDraw<C: TargetColor>: sealed::Sealed {
     ) -> u32;
 }
 
-/// A screen triangle of any varying count from 0 to [`MAX_VARYINGS`], as stored in a
+/// A screen triangle of any varying count from 0 to [`BINNED_VARYINGS`], as stored in a
 /// band renderer's bins.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(missing_docs)] // one variant per varying count
@@ -133,7 +141,7 @@ pub enum AnyTriangleRef<'t> {
 }
 
 /// A screen triangle the band renderer can take: [`ScreenTriangle<N>`] for `N` in
-/// `0..=MAX_VARYINGS`.
+/// `0..=BINNED_VARYINGS`.
 pub trait Binnable: sealed::Sealed + Sized {
     /// Its varyings per vertex.
     const VARYINGS: usize;
@@ -270,7 +278,7 @@ where
 }
 
 const _: () = assert!(
-    MAX_VARYINGS == 8,
+    BINNED_VARYINGS == 8 && BINNED_VARYINGS <= MAX_VARYINGS,
     "AnyTriangle has a variant per varying count"
 );
 

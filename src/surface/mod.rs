@@ -39,7 +39,7 @@ pub use crate::geometry::DEPTH_CLEAR;
 pub use crate::pipeline::{RenderTarget, Row, Rows};
 pub use crate::texture::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use band::{BandError, BandRenderer, BandStats, Binned, TriangleSink};
-pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable};
+pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable, BINNED_VARYINGS};
 pub use band_link::DrawTargetFlush;
 pub use frame::Frame;
 pub use overlap::{BandSender, Blocking, Dma};

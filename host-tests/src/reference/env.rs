@@ -164,8 +164,22 @@ pub fn render_varyings_with_derivatives<const N: usize>(
     tris: &[[Vertex<N>; 3]],
     width: u32,
     height: u32,
+    shade: impl FnMut(u32, u32, [f64; N], [[f64; N]; 4]) -> [f64; 3],
+) -> (Vec<u16>, Vec<bool>) {
+    render_varyings_around(tris, width, height, 1.0, shade)
+}
+
+/// [`render_varyings_with_derivatives`] with the four neighbours `step / 2` pixels from the
+/// centre instead of half a pixel: a small `step` (say 1/256) makes their differences
+/// divided by `step` the analytic screen derivatives, to within `step^2`.
+pub fn render_varyings_around<const N: usize>(
+    tris: &[[Vertex<N>; 3]],
+    width: u32,
+    height: u32,
+    step: f64,
     mut shade: impl FnMut(u32, u32, [f64; N], [[f64; N]; 4]) -> [f64; 3],
 ) -> (Vec<u16>, Vec<bool>) {
+    let h = step / 2.0;
     let n = (width * height) as usize;
     let (mut rgb, mut cov, mut depth) = (vec![0u16; n], vec![false; n], vec![f64::MAX; n]);
     for tri in tris {
@@ -213,10 +227,10 @@ pub fn render_varyings_with_derivatives<const N: usize>(
             depth[i] = z;
             let (cx, cy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
             let around = [
-                interp(bary(cx - 0.5, cy)),
-                interp(bary(cx + 0.5, cy)),
-                interp(bary(cx, cy - 0.5)),
-                interp(bary(cx, cy + 0.5)),
+                interp(bary(cx - h, cy)),
+                interp(bary(cx + h, cy)),
+                interp(bary(cx, cy - h)),
+                interp(bary(cx, cy + h)),
             ];
             rgb[i] = rgb565_from_f64(shade(x, y, interp(l), around));
             cov[i] = true;

@@ -2,34 +2,19 @@
 //! of the reflection's face coordinates (OpenGL ES 3.2's rules for cube maps).
 //!
 //! GL takes the LOD of a cube-map lookup from the screen derivatives of the face
-//! coordinates `s`, `t` on the face the pixel's direction selects. fixel gets them from
-//! the span loop's existing level-of-detail machinery ([`Fragment::lambda`]) instead of
-//! differentiating the per-pixel reflection: per triangle, [`ReflectPerPixelMip`]'s hook
-//! reflects at the three vertices and projects the three `r` onto the face plane of their
-//! sum's major axis (`sc / ma`, `tc / ma` on that face's axes, extended beyond the face
-//! edges), in texel units. These two extra varyings are interpolated like any other and
-//! the span loop computes `lambda` from their derivatives (Heckbert's `log2` of the longer
-//! derivative, Q8.8), at each pixel, per span or per triangle as
-//! [`Lod::granularity`](crate::texture::Lod) says. The lookup itself still uses the exact
-//! per-pixel reflection; only the LOD comes from the projected pair.
-//!
-//! This is a first-order model of `r`'s face coordinates across the triangle, on one face
-//! plane per triangle: good on small triangles (on the benchmark sphere within a fraction
-//! of a level of the reference's `lambda`, see `host-tests`), wrong on wide ones (a
-//! 127-degree view as two triangles: 4.7 levels off on average). If the three reflections
-//! of a triangle span more than about 80° (`ma` of a vertex at most 1/8 of its largest
-//! component, or behind the face plane), the triangle's pair spreads over `2^13` texels:
-//! the coarsest level. Where `r` is linear across a triangle (a flat mirror, or a sky:
-//! the direction per vertex), [`DirectionMip`](super::DirectionMip) with the reflection
-//! per vertex ([`EnvVertices::per_vertex`]) has GL's exact per-pixel level of detail at
-//! any angle; the per-pixel reflection of a curved surface needs 9 varyings for that (`n`,
-//! `v` and a direction), one more than a shader has.
+//! coordinates `sc / ma`, `tc / ma` on the face the pixel's direction selects.
+//! [`ReflectPerPixelMip`] has the span loop compute them at every pixel (or span, or
+//! triangle, as [`Lod::granularity`](crate::texture::Lod) says) from the exact screen
+//! derivatives of its reflection `r = 2 (n·v) n − (n·n) v`, through the interpolated `n`
+//! and `v` and their constant steps ([`Shader::LOD_REFLECTION`],
+//! [`reflection_lambda`](super::reflection_lambda)): GL's rule at any angle the
+//! reflections of a triangle span, a full-screen mirror of two triangles included.
+//! [`DirectionMip`](super::DirectionMip) does the same for a direction per vertex.
 //!
 //! # Formats
 //!
 //! Varyings: `nx, ny, nz, vx, vy, vz` as [`ReflectPerPixel`](super::ReflectPerPixel) (any
-//! scale per vector), then two slots the hook fills (`s`, `t` in I16F16 texel units of
-//! level 0; give 0 in the vertex, as [`EnvVertices::per_pixel_mip`] does).
+//! scale per vector, [`EnvVertices::per_pixel`](super::EnvVertices::per_pixel)).
 //!
 //! # Example
 //!
@@ -55,7 +40,7 @@
 //! let setup = EnvVertices::new(&Mat4::IDENTITY, &proj, Vec3::ZERO);
 //! let n = Vec3::from_num(0, 0.5, 0.866);
 //! let tri = [(-1, -1), (1, -1), (0, 1)].map(|(x, y)| {
-//!     setup.per_pixel_mip(Vec3::from_num(x, y, -4), n).unwrap()
+//!     setup.per_pixel(Vec3::from_num(x, y, -4), n).unwrap()
 //! });
 //! let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, Viewport::new(0, 0, 32, 32)?, Cull::Back)?;
 //! let (mut color, mut depth) = ([Rgb565::default(); 32 * 32], [0u16; 32 * 32]);
@@ -65,9 +50,7 @@
 //! ```
 
 use super::cube::{face_coords, EnvLookup};
-use super::reflect::{fit_group, reflect_fit, EnvVertices, FIT_BITS, VARYING_BITS};
-use crate::geometry::Vertex;
-use crate::math::Vec3;
+use super::reflect::{fit_group, reflect_fit, FIT_BITS, VARYING_BITS};
 use crate::shading::{Fragment, Shader};
 use crate::texture::{ClampToEdge, Lod, LodGranularity, MipTexture, TexSampler};
 use crate::Error;
@@ -167,47 +150,9 @@ impl<S: TexSampler> EnvLookup for MipCubeMap<'_, S> {
     }
 }
 
-/// Largest magnitude of the projected pair, I16F16 texels (`2^13` texels): differences of
-/// two stay within `i32`.
-const PAIR_LIMIT: i64 = 1 << 29;
-
-/// `(sc / ma + 1) size / 2` in I16F16 texels on the face `(axis, sign)` (GL's table), the
-/// face plane extended; `None` when `ma` is at most 1/8 of the largest component (or
-/// behind the plane).
-#[inline]
-fn plane_coords(r: [i32; 3], face: u8, log2_size: u32) -> Option<(i64, i64)> {
-    let [x, y, z] = r.map(i64::from);
-    let (sc, tc, ma) = match face {
-        0 => (-z, -y, x),
-        1 => (z, -y, -x),
-        2 => (x, z, y),
-        3 => (x, -z, -y),
-        4 => (x, -y, z),
-        _ => (-x, -y, -z),
-    };
-    let big = x.abs().max(y.abs()).max(z.abs());
-    if ma <= 0 || ma * 8 <= big {
-        return None;
-    }
-    // 1 / ma through the cube lookup's reciprocal (no divide: a 64-bit division is a long
-    // library call on Cortex-M): ma (below 2^32) normalised to a 16-bit mantissa d, then
-    // c / ma = (c << n >> 16) (2^31 / d) / 2^31, within 2^-15 relative.
-    let n = (ma as u32).leading_zeros();
-    let d = ((ma as u32) << n) >> 16;
-    let r = i64::from(super::cube::recip16(d));
-    // |c| <= 8 ma, so (c << n) >> 16 < 2^19 and the product < 2^36; the result is
-    // c / ma in Q16, then scaled to half the face in I16F16 texels.
-    let half = 1i64 << (15 + log2_size);
-    let q = |c: i64| {
-        let ratio = (((c << n) >> 16) * r) >> 15; // Q16
-        (((ratio * half) >> 16) + half).clamp(-PAIR_LIMIT, PAIR_LIMIT)
-    };
-    Some((q(sc), q(tc)))
-}
-
 /// Environment mapping with the reflection per pixel and mipmapped cube faces (trilinear
-/// or any [`TexSampler`]). Varyings: `n`, `v` (as [`ReflectPerPixel`](super::ReflectPerPixel))
-/// and the two slots the hook fills; see the module docs.
+/// or any [`TexSampler`]), GL's level of detail per pixel. Varyings: `n`, `v` (as
+/// [`ReflectPerPixel`](super::ReflectPerPixel)); see the module docs.
 #[derive(Clone, Copy, Debug)]
 pub struct ReflectPerPixelMip<M> {
     /// The mipmapped cube map ([`MipCubeMap`] or its [`seamless`](MipCubeMap::seamless)
@@ -217,11 +162,24 @@ pub struct ReflectPerPixelMip<M> {
     pub lod: Lod,
 }
 
+impl<M: EnvLookupLod> ReflectPerPixelMip<M> {
+    /// The level of detail (Q8.8, after bias and clamps) for the span loop's `lambda` of
+    /// the reflection (half-face units): the face size's `log2 - 1` levels added.
+    #[inline(always)]
+    pub fn lambda(&self, reflection_lambda: i32) -> i32 {
+        let l = self.map.log2_size() as i32 - 1;
+        reflection_lambda
+            .saturating_add(l * 256)
+            .saturating_add(self.lod.bias)
+            .clamp(self.lod.min, self.lod.max.max(self.lod.min))
+    }
+}
+
 impl<M: EnvLookupLod> Shader for ReflectPerPixelMip<M> {
-    type Varyings = [i32; 8];
+    type Varyings = [i32; 6];
     type Triangle = ();
-    const TEXCOORDS: Option<(usize, usize)> = Some((6, 7));
     const LOD: bool = true;
+    const LOD_REFLECTION: Option<usize> = Some(0);
 
     #[inline(always)]
     fn lod_granularity(&self) -> LodGranularity {
@@ -229,85 +187,16 @@ impl<M: EnvLookupLod> Shader for ReflectPerPixelMip<M> {
     }
 
     #[inline]
-    fn triangle(&self, v: &mut [[i32; 8]; 3]) {
-        fit_group::<8, VARYING_BITS>(v, 0);
-        fit_group::<8, VARYING_BITS>(v, 3);
-        const S: u32 = VARYING_BITS - FIT_BITS;
-        let r = v.map(|a| {
-            reflect_fit(
-                [a[0] >> S, a[1] >> S, a[2] >> S],
-                [a[3] >> S, a[4] >> S, a[5] >> S],
-            )
-        });
-        // The face of the triangle's mean reflection (each r below 2^30: the sum fits i32
-        // after halving), so the projection is centred on the triangle.
-        let mean: [i32; 3] =
-            core::array::from_fn(|c| (r[0][c] >> 2) + (r[1][c] >> 2) + (r[2][c] >> 2));
-        let face = face_coords(mean).face;
-        let l = self.map.log2_size();
-        // A vertex whose r leaves the face plane's useful range (the triangle's reflections
-        // more than about 80 degrees apart): the largest spread of the pair over the whole
-        // triangle, so the coarsest level.
-        let pairs = match r.map(|ri| plane_coords(ri, face, l)) {
-            [Some(a), Some(b), Some(c)] => [a, b, c],
-            _ => [(0, 0), (PAIR_LIMIT, 0), (0, PAIR_LIMIT)],
-        };
-        for (vert, (s, t)) in v.iter_mut().zip(pairs) {
-            vert[6] = s as i32;
-            vert[7] = t as i32;
-        }
+    fn triangle(&self, v: &mut [[i32; 6]; 3]) {
+        fit_group::<6, VARYING_BITS>(v, 0);
+        fit_group::<6, VARYING_BITS>(v, 3);
     }
 
     #[inline(always)]
-    fn shade(&self, f: &Fragment<[i32; 8], ()>) -> Option<u16> {
+    fn shade(&self, f: &Fragment<[i32; 6], ()>) -> Option<u16> {
         const S: u32 = VARYING_BITS - FIT_BITS;
-        let a = f.varyings;
-        let r = reflect_fit(
-            [a[0] >> S, a[1] >> S, a[2] >> S],
-            [a[3] >> S, a[4] >> S, a[5] >> S],
-        );
-        let lod = &self.lod;
-        let lambda = f
-            .lambda
-            .saturating_add(lod.bias)
-            .clamp(lod.min, lod.max.max(lod.min));
-        Some(self.map.lookup_lod(r, lambda))
-    }
-}
-
-impl EnvVertices {
-    /// A vertex for [`ReflectPerPixelMip`]: [`EnvVertices::per_pixel`]'s six varyings and two
-    /// zero slots for the projected face coordinates. `None` when a component overflows.
-    pub fn per_pixel_mip(&self, p: Vec3, n: Vec3) -> Option<Vertex<8>> {
-        let v = self.per_pixel(p, n)?;
-        let a = v.varyings;
-        Some(Vertex::new(
-            v.position,
-            [a[0], a[1], a[2], a[3], a[4], a[5], 0, 0],
-        ))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn plane_coords_match_face_coords_on_the_face() {
-        for d in [
-            [1000, 200, -300],
-            [-50, 900, 10],
-            [7, -8, -1000],
-            [300, 300, 1000],
-        ] {
-            let c = face_coords(d);
-            let (s, t) = plane_coords(d, c.face, 6).unwrap();
-            // face_coords is Q16 of [0, 1]; the plane pair is I16F16 texels of a 64 face.
-            assert!((s - (i64::from(c.s) << 6)).abs() <= 256, "{d:?}");
-            assert!((t - (i64::from(c.t) << 6)).abs() <= 256, "{d:?}");
-        }
-        // Behind the plane, or grazing it: no coordinates.
-        assert_eq!(plane_coords([-5, 1, 1], 0, 6), None);
-        assert_eq!(plane_coords([1, 100, 0], 0, 6), None);
+        let [nx, ny, nz, vx, vy, vz] = f.varyings.map(|c| c >> S);
+        let r = reflect_fit([nx, ny, nz], [vx, vy, vz]);
+        Some(self.map.lookup_lod(r, self.lambda(f.lambda)))
     }
 }

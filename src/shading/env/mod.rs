@@ -6,7 +6,7 @@
 //!   major axis through a reciprocal table, nearest or bilinear within a face;
 //!   [`seamless`]: [`SeamlessCubeMap`], bilinear across face edges (nearest stays
 //!   nearest); [`cube_mip`]: [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per
-//!   face with GL's LOD ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
+//!   face with GL's LOD per pixel ([`reflect_lod`]) ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
 //!   filters kept).
 //! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
 //!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
@@ -18,7 +18,8 @@
 //!   ([`convolve_face`]) and [`EnvLit`]: base texture × diffuse + glossy.
 //! * [`reflect`]: the reflection per pixel ([`ReflectPerPixel`], from interpolated `n` and
 //!   `v`, no square root) or per vertex ([`ReflectPerVertex`], interpolated `r`), and
-//!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals.
+//!   [`EnvVertices`], which builds their vertices from a mesh's positions and normals;
+//!   [`tinted`]: [`Tinted`], the per-pixel reflections times a vertex colour.
 //!
 //! Every lookup implements [`EnvLookup`]: a colour for a direction given as three `i32` of
 //! any scale. Nothing here is linked by a draw that does not use it.
@@ -62,8 +63,10 @@ pub mod cube_mip;
 pub mod direction;
 pub mod latlong;
 pub mod reflect;
+pub mod reflect_lod;
 pub mod seamless;
 pub mod sphere_bake;
+pub mod tinted;
 
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
@@ -71,8 +74,10 @@ pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
 pub use direction::{Direction, DirectionMip, WHITE};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+pub use reflect_lod::reflection_lambda;
 pub use seamless::{SeamlessCubeMap, SeamlessMipCubeMap};
 pub use sphere::SphereMap;
 pub use sphere_bake::{bake_sphere_map, sphere_texel_direction};
+pub use tinted::Tinted;
 pub mod sky;
 pub mod sphere;

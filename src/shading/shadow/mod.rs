@@ -312,6 +312,7 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
     const SMALL: bool = S::SMALL;
     const LOD: bool = S::LOD;
     const LOD_DIRECTION: Option<usize> = S::LOD_DIRECTION;
+    const LOD_REFLECTION: Option<usize> = S::LOD_REFLECTION;
 
     #[inline(always)]
     fn lod_granularity(&self) -> crate::texture::LodGranularity {

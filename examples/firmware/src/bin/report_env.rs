@@ -176,13 +176,13 @@ fn mip_mode<M: fixel::shading::env::EnvLookupLod>(
 ) -> bool {
     let s = core::hint::black_box(&data::SPHERE);
     mode(name, |pause, resume| {
-        env::env_frame::<_, Exact, 8>(
+        env::env_frame::<_, Exact, 6>(
             buf,
             shader,
             &s.positions,
             &s.normals,
             &s.indices,
-            EnvVertices::per_pixel_mip,
+            EnvVertices::per_pixel,
             pause,
             resume,
         )
