@@ -297,9 +297,9 @@ fn smoothed(view: &View<'_>, r: isize, x: usize, lo: isize, bottom: isize, t: u1
 mod tests {
     extern crate std;
     use super::*;
+    use embedded_graphics_core::pixelcolor::RgbColor;
     use std::vec;
     use std::vec::Vec;
-    use embedded_graphics_core::pixelcolor::RgbColor;
 
     /// The frame smoothed whole (one band) and in bands of `rows`, concatenated.
     fn run(c: &[Rgb565], d: &[u16], w: usize, rows: usize) -> Vec<Rgb565> {
