@@ -18,6 +18,7 @@ use fixel_scenes as demo;
 mod aa_scene;
 
 #[path = "../../examples/firmware/src/edge_scene.rs"]
+#[allow(dead_code)] // EDGE_RAM: the aa report's
 mod edge_scene;
 
 #[path = "../../examples/firmware/src/alpha_scene.rs"]
@@ -180,9 +181,9 @@ fn mcu_frames() {
         let mut aa =
             fixel::surface::EdgeAa::new(scenes::W, edge_scene::THRESHOLD, &mut hc, &mut hd)
                 .unwrap();
-        let mut out = vec![Rgb565::new(0, 0, 0); frame.pixels().len()];
+        let mut out = vec![Rgb565::new(0, 0, 0); frame.pixels().len() + w];
         let n = aa
-            .band(frame.pixels(), frame.depth().unwrap(), true, &mut out)
+            .band_into(frame.pixels(), frame.depth().unwrap(), true, &mut out)
             .unwrap();
         let mut f = Fnv1a::default();
         f.pixels(&out[..n]);

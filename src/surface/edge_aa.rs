@@ -20,13 +20,14 @@
 //! **Bands.** A pixel needs the row below it, which a band's last row finds only in the next
 //! band, so [`EdgeAa`] holds each band's last row back: [`EdgeAa::band`] writes the held row
 //! of the previous band (now smoothed) followed by every row of this band but its last,
-//! and the frame's last band in full. Fed in order, the bands give the frame a whole-frame
+//! and the frame's last band in full, each row finished in one row of scratch and handed
+//! to the caller (to send or hash). Fed in order, the bands give the frame a whole-frame
 //! pass gives, bit for bit. The state between bands is the previous band's last two rows,
-//! colour and depth (8 bytes per column).
+//! colour and depth (8 bytes per column), plus the row of scratch (2 bytes per column).
 //!
-//! **Cost.** The scan reads each pixel's depth and compares it with its east and south
-//! neighbours (the colour rows are copied whole); only the pixels of a discontinuous pair
-//! are blended. Nothing runs in draws that do not call it. Measured by `cargo xtask mcu`
+//! **Cost.** The scan reads each pixel's depth and compares it with its east, north and
+//! south neighbours (the colour rows are copied whole); only the pixels of a
+//! discontinuous pair are blended. Nothing runs in draws that do not call it. Measured by `cargo xtask mcu`
 //! (scene `aa_edge` against `cube`) and against a 16 x 16 supersampled reference by
 //! `cargo xtask report` (`docs/report/aa.md`).
 //!
@@ -40,11 +41,19 @@
 //! let depth = [1000u16, 1000, 60000, 60000];
 //! let (mut held_c, mut held_d) = ([Rgb565::BLACK; 8], [0u16; 8]);
 //! let mut aa = EdgeAa::new(4, 256, &mut held_c, &mut held_d)?;
-//! let mut out = [Rgb565::BLACK; 8];
+//! let mut row = [Rgb565::BLACK; 4];
+//! let mut sent = [Rgb565::BLACK; 8];
+//! let mut at = 0;
+//! let mut send = |r: &[Rgb565]| {
+//!     sent[at..at + 4].copy_from_slice(r);
+//!     at += 4;
+//!     Ok::<(), fixel::Error>(())
+//! };
 //! // The first band's only row is held back: nothing to send yet.
-//! assert_eq!(aa.band(&colour, &depth, false, &mut out)?, 0);
+//! assert_eq!(aa.band(&colour, &depth, false, &mut row, &mut send)?, 0);
 //! // The last band: the held row, then this one.
-//! assert_eq!(aa.band(&colour, &depth, true, &mut out)?, 8);
+//! assert_eq!(aa.band(&colour, &depth, true, &mut row, &mut send)?, 8);
+//! let out = sent;
 //! assert_eq!(out[0], Rgb565::RED);
 //! // Across the edge: a quarter of the other side.
 //! assert_eq!(out[1], Rgb565::new(23, 0, 8));
@@ -145,41 +154,73 @@ impl<'s> EdgeAa<'s> {
         (held + rows - usize::from(!last && rows > 0)) * self.width
     }
 
-    /// Smooths the next band of the frame, top to bottom: `colour` and `depth` are its
-    /// pixels (whole rows, as drawn); `last` says it is the frame's last band. Writes into
-    /// `out` the previous band's held last row, smoothed, then this band's rows but its
-    /// last (all of them when `last`), and returns how many pixels it wrote
-    /// ([`out_len`](Self::out_len)); a new frame starts after a `last` band. Errors if
-    /// `colour` is not whole rows, `depth` is not as long, or `out` is short.
-    pub fn band(
+    /// Smooths the next band of the frame into `out`: [`band`](Self::band) with the rows
+    /// copied there in order, and the row of scratch after them (`out`: at least
+    /// [`out_len`](Self::out_len) plus one row). Returns the pixels written.
+    pub fn band_into(
         &mut self,
         colour: &[Rgb565],
         depth: &[u16],
         last: bool,
         out: &mut [Rgb565],
     ) -> Result<usize, Error> {
+        let rows = colour.len() / self.width;
+        let n = self.out_len(rows, last);
+        if out.len() < n + self.width {
+            return Err(Error::WrongLength {
+                expected: n + self.width,
+                actual: out.len(),
+            });
+        }
+        let (done, row) = out.split_at_mut(n);
+        let mut at = 0;
+        self.band(colour, depth, last, row, |r: &[Rgb565]| {
+            done[at..at + r.len()].copy_from_slice(r);
+            at += r.len();
+            Ok::<(), Error>(())
+        })
+    }
+
+    /// Smooths the next band of the frame, top to bottom: `colour` and `depth` are its
+    /// pixels (whole rows, as drawn); `last` says it is the frame's last band. Hands
+    /// `emit` the previous band's held last row, smoothed, then this band's rows but its
+    /// last (all of them when `last`), each finished in `row` (one row of scratch), and
+    /// returns how many pixels it handed on ([`out_len`](Self::out_len)); a new frame
+    /// starts after a `last` band. Errors if `colour` is not whole rows, `depth` is not as
+    /// long, or `row` is short (nothing is handed on), or with `emit`'s error.
+    pub fn band<E: From<Error>>(
+        &mut self,
+        colour: &[Rgb565],
+        depth: &[u16],
+        last: bool,
+        row: &mut [Rgb565],
+        mut emit: impl FnMut(&[Rgb565]) -> Result<(), E>,
+    ) -> Result<usize, E> {
         let w = self.width;
         if colour.is_empty() || colour.len() % w != 0 {
             return Err(Error::WrongLength {
                 expected: (colour.len() / w).max(1) * w,
                 actual: colour.len(),
-            });
+            }
+            .into());
         }
         if depth.len() != colour.len() {
             return Err(Error::WrongLength {
                 expected: colour.len(),
                 actual: depth.len(),
-            });
+            }
+            .into());
         }
+        if row.len() < w {
+            return Err(Error::WrongLength {
+                expected: w,
+                actual: row.len(),
+            }
+            .into());
+        }
+        let dst = &mut row[..w];
         let h = colour.len() / w;
         let n = self.out_len(h, last);
-        if out.len() < n {
-            return Err(Error::WrongLength {
-                expected: n,
-                actual: out.len(),
-            });
-        }
-        let out = &mut out[..n];
         let view = View {
             width: w,
             held_c: self.colour,
@@ -187,50 +228,34 @@ impl<'s> EdgeAa<'s> {
             colour,
             depth,
         };
-        // Output rows `first..=end` (band rows; -1 is the held row); rows from `lo` exist.
+        // Output rows `first..=end` (band rows; -1 is the held row); rows `lo..=bottom`
+        // exist.
         let lo = -(self.held as isize);
         let first = lo.max(-1);
         let end = h as isize - if last { 1 } else { 2 };
-        let t = self.threshold;
-        // Every output pixel as drawn, then the pixels at an edge re-made.
-        for (r, dst) in (first..=end).zip(out.chunks_exact_mut(w)) {
-            dst.copy_from_slice(view.row(r).0);
-        }
         let bottom = h as isize - 1;
-        let patch = |out: &mut [Rgb565], r: isize, x: usize| {
-            let at = (r - first) as usize * w + x;
-            out[at] = smoothed(&view, r, x, lo, bottom, t);
-        };
-        // The pair across the top of the first output row, whose upper pixel is not output.
-        if first > lo {
-            let (up, here) = (view.row(first - 1).1, view.row(first).1);
-            for (x, (&a, &b)) in up.iter().zip(here).enumerate() {
-                if a.abs_diff(b) > t {
-                    patch(out, first, x);
-                }
-            }
-        }
+        let t = self.threshold;
         for r in first..=end {
-            let d = view.row(r).1;
-            // East pairs.
+            let (c, d) = view.row(r);
+            // The row as drawn, then its pixels at an edge re-made.
+            dst.copy_from_slice(c);
             for (x, pair) in d.windows(2).enumerate() {
                 if pair[0].abs_diff(pair[1]) > t {
-                    patch(out, r, x);
-                    patch(out, r, x + 1);
+                    dst[x] = smoothed(&view, r, x, lo, bottom, t);
+                    dst[x + 1] = smoothed(&view, r, x + 1, lo, bottom, t);
                 }
             }
-            // South pairs (the lower pixel is output unless it is the band's held row).
-            if r < bottom {
-                let below = view.row(r + 1).1;
-                for (x, (&a, &b)) in d.iter().zip(below).enumerate() {
-                    if a.abs_diff(b) > t {
-                        patch(out, r, x);
-                        if r < end {
-                            patch(out, r + 1, x);
+            for k in [-1, 1] {
+                if (lo..=bottom).contains(&(r + k)) {
+                    let other = view.row(r + k).1;
+                    for (x, (&a, &b)) in d.iter().zip(other).enumerate() {
+                        if a.abs_diff(b) > t {
+                            dst[x] = smoothed(&view, r, x, lo, bottom, t);
                         }
                     }
                 }
             }
+            emit(dst)?;
         }
         // Keep this band's last two rows (originals) for the next band.
         if last {
@@ -311,9 +336,11 @@ mod tests {
         while y < h {
             let r = rows.min(h - y);
             let last = y + r == h;
-            let mut out = vec![Rgb565::BLACK; (r + 1) * w];
+            let mut out = vec![Rgb565::BLACK; (r + 2) * w];
             let band = y * w..(y + r) * w;
-            let n = aa.band(&c[band.clone()], &d[band], last, &mut out).unwrap();
+            let n = aa
+                .band_into(&c[band.clone()], &d[band], last, &mut out)
+                .unwrap();
             all.extend_from_slice(&out[..n]);
             y += r;
         }
@@ -349,11 +376,14 @@ mod tests {
         assert!(EdgeAa::new(0, 1, &mut hc, &mut hd).is_err());
         let mut hd = [0u16; 8];
         let mut aa = EdgeAa::new(4, 1, &mut hc, &mut hd).unwrap();
-        let mut out = [Rgb565::BLACK; 8];
+        let mut out = [Rgb565::BLACK; 12];
         let c = [Rgb565::BLACK; 8];
-        assert!(aa.band(&c[..7], &[0; 7], false, &mut out).is_err());
-        assert!(aa.band(&c, &[0; 7], false, &mut out).is_err());
-        assert!(aa.band(&c, &[0; 8], true, &mut out[..7]).is_err());
-        assert!(aa.band(&[], &[], true, &mut out).is_err());
+        assert!(aa.band_into(&c[..7], &[0; 7], false, &mut out).is_err());
+        assert!(aa.band_into(&c, &[0; 7], false, &mut out).is_err());
+        assert!(aa.band_into(&c, &[0; 8], true, &mut out[..11]).is_err());
+        assert!(aa.band_into(&[], &[], true, &mut out).is_err());
+        let mut row = [Rgb565::BLACK; 3];
+        let r = aa.band(&c, &[0; 8], true, &mut row, |_| Ok::<(), Error>(()));
+        assert!(r.is_err());
     }
 }

@@ -21,12 +21,12 @@ use fixel_scenes as demo;
 /// the cleared depth (65535) by several thousand.
 pub const THRESHOLD: u16 = 1024;
 
-/// The pass's own buffers: the two rows held between bands (colour and depth) and the
-/// output band (one row more than a band: the held row and the frame's last band).
+/// The pass's own buffers: the two rows held between bands (colour and depth) and the row
+/// each output row is finished in.
 pub struct EdgeBuffers {
     held_c: [Rgb565; 2 * W as usize],
     held_d: [u16; 2 * W as usize],
-    out: [Rgb565; ((ROWS + 1) * W) as usize],
+    row: [Rgb565; W as usize],
 }
 
 impl EdgeBuffers {
@@ -35,7 +35,7 @@ impl EdgeBuffers {
         EdgeBuffers {
             held_c: [Rgb565::new(0, 0, 0); 2 * W as usize],
             held_d: [0; 2 * W as usize],
-            out: [Rgb565::new(0, 0, 0); ((ROWS + 1) * W) as usize],
+            row: [Rgb565::new(0, 0, 0); W as usize],
         }
     }
 }
@@ -47,11 +47,12 @@ impl Default for EdgeBuffers {
 }
 
 /// Bytes of RAM the pass adds to the `cube` scene's.
-pub const EDGE_RAM: u32 = 2 * W * 4 + (ROWS + 1) * W * 2;
+pub const EDGE_RAM: u32 = 2 * W * 4 + W * 2;
 
 /// The cube, frame `i` (`texture`: `T(128, 128)` with its footprints, `data::T128_FP`),
-/// in 8-row bands, each smoothed at depth discontinuities before it is hashed; checksum of
-/// the smoothed frame, whose rows are also copied into `frame` when given (the host report).
+/// in 8-row bands, each smoothed at depth discontinuities before it is hashed (row by row,
+/// one row behind the bands); checksum of the smoothed frame, whose rows are also copied
+/// into `frame` when given (the host report).
 pub fn aa_edge(
     buf: &mut SmallBuffers,
     edge: &mut EdgeBuffers,
@@ -70,7 +71,7 @@ pub fn aa_edge(
         .with_depth(&mut buf.depth)?
         .with_setup_cache(&mut buf.setups);
     let cache = &mut buf.cache;
-    let out = &mut edge.out;
+    let row = &mut edge.row;
     let mut aa = EdgeAa::new(W, THRESHOLD, &mut edge.held_c, &mut edge.held_d)?;
     let mut sum = Fnv1a::default();
     let mut at = 0usize;
@@ -88,16 +89,18 @@ pub fn aa_edge(
         |band| {
             let last = band.first_row() as u32 + band.height() >= H;
             let depth = band.depth().ok_or(Error::NoDepthBuffer)?;
-            let n = aa.band(band.pixels(), depth, last, out)?;
-            pause();
-            sum.pixels(&out[..n]);
-            if let Some(f) = frame.as_deref_mut() {
-                if let Some(dst) = f.get_mut(at..at + n) {
-                    dst.copy_from_slice(&out[..n]);
+            aa.band(band.pixels(), depth, last, row, |r: &[Rgb565]| {
+                pause();
+                sum.pixels(r);
+                if let Some(f) = frame.as_deref_mut() {
+                    if let Some(dst) = f.get_mut(at..at + r.len()) {
+                        dst.copy_from_slice(r);
+                    }
                 }
-            }
-            at += n;
-            resume();
+                at += r.len();
+                resume();
+                Ok::<(), Error>(())
+            })?;
             Ok::<(), Error>(())
         },
     );

@@ -4,6 +4,7 @@
 #![no_main]
 
 #[path = "../edge_scene.rs"]
+#[allow(dead_code)] // EDGE_RAM: the host report's
 mod edge_scene;
 
 use fixel_firmware::{data, report};
