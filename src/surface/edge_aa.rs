@@ -235,25 +235,31 @@ impl<'s> EdgeAa<'s> {
         let end = h as isize - if last { 1 } else { 2 };
         let bottom = h as isize - 1;
         let t = self.threshold;
+        // A quick test first: pixels whose depth agrees with its four neighbours' in every
+        // bit from `2^k` up (`2^k <= threshold + 1`) differ from them by less than `2^k`,
+        // so are at no edge; the rest (edges, and the few interior pixels on either side
+        // of a multiple of `2^k`) take the exact rule.
+        let k = 31 - (u32::from(t) + 1).leading_zeros();
+        let mask = !((1u32 << k) - 1) as u16;
         for r in first..=end {
             let (c, d) = view.row(r);
+            let up = if r > lo { view.row(r - 1).1 } else { d };
+            let down = if r < bottom { view.row(r + 1).1 } else { d };
+            let (d, up, down) = (&d[..w], &up[..w], &down[..w]);
             // The row as drawn, then its pixels at an edge re-made.
             dst.copy_from_slice(c);
-            for (x, pair) in d.windows(2).enumerate() {
-                if pair[0].abs_diff(pair[1]) > t {
+            let mut west = d[0];
+            for x in 0..w - 1 {
+                let p = d[x];
+                if ((p ^ west) | (p ^ d[x + 1]) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
                     dst[x] = smoothed(&view, r, x, lo, bottom, t);
-                    dst[x + 1] = smoothed(&view, r, x + 1, lo, bottom, t);
                 }
+                west = p;
             }
-            for k in [-1, 1] {
-                if (lo..=bottom).contains(&(r + k)) {
-                    let other = view.row(r + k).1;
-                    for (x, (&a, &b)) in d.iter().zip(other).enumerate() {
-                        if a.abs_diff(b) > t {
-                            dst[x] = smoothed(&view, r, x, lo, bottom, t);
-                        }
-                    }
-                }
+            let x = w - 1;
+            let p = d[x];
+            if ((p ^ west) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
+                dst[x] = smoothed(&view, r, x, lo, bottom, t);
             }
             emit(dst)?;
         }
