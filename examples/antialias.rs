@@ -65,10 +65,9 @@ fn render(
             vec![Rgb565::new(0, 0, 0); 2 * W as usize],
             vec![0u16; 2 * W as usize],
         );
-        let mut aa = EdgeAa::new(W, 1024, &mut hc, &mut hd)?;
-        let mut out = vec![Rgb565::new(0, 0, 0); (W * (H + 1)) as usize];
+        let mut aa = EdgeAa::new(W, 2047, &mut hc, &mut hd)?;
+        let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
         aa.band_into(&c, &d, true, &mut out)?;
-        out.truncate((W * H) as usize);
         return Ok(out);
     }
     if k == 1 {

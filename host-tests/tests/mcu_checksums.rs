@@ -181,7 +181,7 @@ fn mcu_frames() {
         let mut aa =
             fixel::surface::EdgeAa::new(scenes::W, edge_scene::THRESHOLD, &mut hc, &mut hd)
                 .unwrap();
-        let mut out = vec![Rgb565::new(0, 0, 0); frame.pixels().len() + w];
+        let mut out = vec![Rgb565::new(0, 0, 0); frame.pixels().len()];
         let n = aa
             .band_into(frame.pixels(), frame.depth().unwrap(), true, &mut out)
             .unwrap();

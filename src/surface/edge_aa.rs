@@ -20,14 +20,15 @@
 //! **Bands.** A pixel needs the row below it, which a band's last row finds only in the next
 //! band, so [`EdgeAa`] holds each band's last row back: [`EdgeAa::band`] writes the held row
 //! of the previous band (now smoothed) followed by every row of this band but its last,
-//! and the frame's last band in full, each row finished in one row of scratch and handed
-//! to the caller (to send or hash). Fed in order, the bands give the frame a whole-frame
+//! and the frame's last band in full, handed to the caller (to send or hash) in raster
+//! order as runs. Fed in order, the bands give the frame a whole-frame
 //! pass gives, bit for bit. The state between bands is the previous band's last two rows,
-//! colour and depth (8 bytes per column), plus the row of scratch (2 bytes per column).
+//! colour and depth (8 bytes per column).
 //!
-//! **Cost.** The scan reads each pixel's depth and compares it with its east, north and
-//! south neighbours (the colour rows are copied whole); only the pixels of a
-//! discontinuous pair are blended. Nothing runs in draws that do not call it. Measured by `cargo xtask mcu`
+//! **Cost.** The scan reads each pixel's depth and its four neighbours' and tests the bits
+//! at and above the threshold's highest (a few instructions); only the pixels that test
+//! may be at an edge take the exact rule, and only those at an edge are blended. The
+//! colours are not copied: the runs between re-made pixels are slices of the band. Nothing runs in draws that do not call it. Measured by `cargo xtask mcu`
 //! (scene `aa_edge` against `cube`) and against a 16 x 16 supersampled reference by
 //! `cargo xtask report` (`docs/report/aa.md`).
 //!
@@ -41,18 +42,17 @@
 //! let depth = [1000u16, 1000, 60000, 60000];
 //! let (mut held_c, mut held_d) = ([Rgb565::BLACK; 8], [0u16; 8]);
 //! let mut aa = EdgeAa::new(4, 256, &mut held_c, &mut held_d)?;
-//! let mut row = [Rgb565::BLACK; 4];
 //! let mut sent = [Rgb565::BLACK; 8];
 //! let mut at = 0;
-//! let mut send = |r: &[Rgb565]| {
-//!     sent[at..at + 4].copy_from_slice(r);
-//!     at += 4;
+//! let mut send = |run: &[Rgb565]| {
+//!     sent[at..at + run.len()].copy_from_slice(run);
+//!     at += run.len();
 //!     Ok::<(), fixel::Error>(())
 //! };
 //! // The first band's only row is held back: nothing to send yet.
-//! assert_eq!(aa.band(&colour, &depth, false, &mut row, &mut send)?, 0);
+//! assert_eq!(aa.band(&colour, &depth, false, &mut send)?, 0);
 //! // The last band: the held row, then this one.
-//! assert_eq!(aa.band(&colour, &depth, true, &mut row, &mut send)?, 8);
+//! assert_eq!(aa.band(&colour, &depth, true, &mut send)?, 8);
 //! let out = sent;
 //! assert_eq!(out[0], Rgb565::RED);
 //! // Across the edge: a quarter of the other side.
@@ -154,9 +154,9 @@ impl<'s> EdgeAa<'s> {
         (held + rows - usize::from(!last && rows > 0)) * self.width
     }
 
-    /// Smooths the next band of the frame into `out`: [`band`](Self::band) with the rows
-    /// copied there in order, and the row of scratch after them (`out`: at least
-    /// [`out_len`](Self::out_len) plus one row). Returns the pixels written.
+    /// Smooths the next band of the frame into `out` (at least
+    /// [`out_len`](Self::out_len) pixels): [`band`](Self::band) with the pixels copied
+    /// there in order. Returns the pixels written.
     pub fn band_into(
         &mut self,
         colour: &[Rgb565],
@@ -166,16 +166,15 @@ impl<'s> EdgeAa<'s> {
     ) -> Result<usize, Error> {
         let rows = colour.len() / self.width;
         let n = self.out_len(rows, last);
-        if out.len() < n + self.width {
+        if out.len() < n {
             return Err(Error::WrongLength {
-                expected: n + self.width,
+                expected: n,
                 actual: out.len(),
             });
         }
-        let (done, row) = out.split_at_mut(n);
         let mut at = 0;
-        self.band(colour, depth, last, row, |r: &[Rgb565]| {
-            done[at..at + r.len()].copy_from_slice(r);
+        self.band(colour, depth, last, |r: &[Rgb565]| {
+            out[at..at + r.len()].copy_from_slice(r);
             at += r.len();
             Ok::<(), Error>(())
         })
@@ -184,16 +183,17 @@ impl<'s> EdgeAa<'s> {
     /// Smooths the next band of the frame, top to bottom: `colour` and `depth` are its
     /// pixels (whole rows, as drawn); `last` says it is the frame's last band. Hands
     /// `emit` the previous band's held last row, smoothed, then this band's rows but its
-    /// last (all of them when `last`), each finished in `row` (one row of scratch), and
-    /// returns how many pixels it handed on ([`out_len`](Self::out_len)); a new frame
-    /// starts after a `last` band. Errors if `colour` is not whole rows, `depth` is not as
-    /// long, or `row` is short (nothing is handed on), or with `emit`'s error.
+    /// last (all of them when `last`), in raster order as runs: slices of the band as
+    /// drawn between the re-made pixels, each of those a run of one (no copy, no scratch;
+    /// a sender streaming into a display's window takes them as they come). Returns how
+    /// many pixels it handed on ([`out_len`](Self::out_len)); a new frame starts after a
+    /// `last` band. Errors if `colour` is not whole rows or `depth` is not as long
+    /// (nothing is handed on), or with `emit`'s error.
     pub fn band<E: From<Error>>(
         &mut self,
         colour: &[Rgb565],
         depth: &[u16],
         last: bool,
-        row: &mut [Rgb565],
         mut emit: impl FnMut(&[Rgb565]) -> Result<(), E>,
     ) -> Result<usize, E> {
         let w = self.width;
@@ -211,14 +211,6 @@ impl<'s> EdgeAa<'s> {
             }
             .into());
         }
-        if row.len() < w {
-            return Err(Error::WrongLength {
-                expected: w,
-                actual: row.len(),
-            }
-            .into());
-        }
-        let dst = &mut row[..w];
         let h = colour.len() / w;
         let n = self.out_len(h, last);
         let view = View {
@@ -246,22 +238,26 @@ impl<'s> EdgeAa<'s> {
             let up = if r > lo { view.row(r - 1).1 } else { d };
             let down = if r < bottom { view.row(r + 1).1 } else { d };
             let (d, up, down) = (&d[..w], &up[..w], &down[..w]);
-            // The row as drawn, then its pixels at an edge re-made.
-            dst.copy_from_slice(c);
+            // The row as drawn up to each re-made pixel, then that pixel.
+            let mut start = 0;
             let mut west = d[0];
-            for x in 0..w - 1 {
+            for x in 0..w {
                 let p = d[x];
-                if ((p ^ west) | (p ^ d[x + 1]) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
-                    dst[x] = smoothed(&view, r, x, lo, bottom, t);
+                let east = if x + 1 < w { d[x + 1] } else { p };
+                if ((p ^ west) | (p ^ east) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
+                    if let Some(q) = smoothed(&view, r, x, lo, bottom, t) {
+                        if start < x {
+                            emit(&c[start..x])?;
+                        }
+                        emit(&[q])?;
+                        start = x + 1;
+                    }
                 }
                 west = p;
             }
-            let x = w - 1;
-            let p = d[x];
-            if ((p ^ west) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
-                dst[x] = smoothed(&view, r, x, lo, bottom, t);
+            if start < w {
+                emit(&c[start..])?;
             }
-            emit(dst)?;
         }
         // Keep this band's last two rows (originals) for the next band.
         if last {
@@ -282,11 +278,19 @@ impl<'s> EdgeAa<'s> {
     }
 }
 
-/// The pixel at (`x`, band row `r`) by the rule of the module docs; rows `lo..=bottom`
-/// exist (outside them, and outside the row, a neighbour is the pixel itself).
+/// The pixel at (`x`, band row `r`) by the rule of the module docs, `None` when it has no
+/// neighbour across an edge; rows `lo..=bottom` exist (outside them, and outside the row, a
+/// neighbour is the pixel itself).
 #[cold]
 #[inline(never)]
-fn smoothed(view: &View<'_>, r: isize, x: usize, lo: isize, bottom: isize, t: u16) -> Rgb565 {
+fn smoothed(
+    view: &View<'_>,
+    r: isize,
+    x: usize,
+    lo: isize,
+    bottom: isize,
+    t: u16,
+) -> Option<Rgb565> {
     let w = view.width;
     let (c, d) = view.row(r);
     let (p, dp) = (c[x], d[x]);
@@ -315,13 +319,16 @@ fn smoothed(view: &View<'_>, r: isize, x: usize, lo: isize, bottom: isize, t: u1
         let (cs, ds) = view.row(r + 1);
         take(cs[x], ds[x]);
     }
+    if k == 0 {
+        return None;
+    }
     let v = raw(p);
     let ch = |s: u32, own: u32| ((4 - k) * own + s + 2) >> 2;
-    Rgb565::new(
+    Some(Rgb565::new(
         ch(sum[0], v >> 11) as u8,
         ch(sum[1], (v >> 5) & 63) as u8,
         ch(sum[2], v & 31) as u8,
-    )
+    ))
 }
 
 #[cfg(test)]
@@ -342,7 +349,7 @@ mod tests {
         while y < h {
             let r = rows.min(h - y);
             let last = y + r == h;
-            let mut out = vec![Rgb565::BLACK; (r + 2) * w];
+            let mut out = vec![Rgb565::BLACK; (r + 1) * w];
             let band = y * w..(y + r) * w;
             let n = aa
                 .band_into(&c[band.clone()], &d[band], last, &mut out)
@@ -382,14 +389,11 @@ mod tests {
         assert!(EdgeAa::new(0, 1, &mut hc, &mut hd).is_err());
         let mut hd = [0u16; 8];
         let mut aa = EdgeAa::new(4, 1, &mut hc, &mut hd).unwrap();
-        let mut out = [Rgb565::BLACK; 12];
+        let mut out = [Rgb565::BLACK; 8];
         let c = [Rgb565::BLACK; 8];
         assert!(aa.band_into(&c[..7], &[0; 7], false, &mut out).is_err());
         assert!(aa.band_into(&c, &[0; 7], false, &mut out).is_err());
-        assert!(aa.band_into(&c, &[0; 8], true, &mut out[..11]).is_err());
+        assert!(aa.band_into(&c, &[0; 8], true, &mut out[..7]).is_err());
         assert!(aa.band_into(&[], &[], true, &mut out).is_err());
-        let mut row = [Rgb565::BLACK; 3];
-        let r = aa.band(&c, &[0; 8], true, &mut row, |_| Ok::<(), Error>(()));
-        assert!(r.is_err());
     }
 }

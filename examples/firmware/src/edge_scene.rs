@@ -17,16 +17,15 @@ use fixel::Error;
 use fixel_scenes as demo;
 
 /// Depth difference (window depth, `0..=65535`) above which two neighbours are across an
-/// edge. The cube's faces change by at most a few hundred per pixel; a silhouette against
-/// the cleared depth (65535) by several thousand.
-pub const THRESHOLD: u16 = 1024;
+/// edge. The cube's depths are 52,987..=60,449 and change by at most 609 between
+/// neighbours; a silhouette against the cleared depth (65535) by 5,086 or more. `2^11 - 1`:
+/// the quick test reads the top five bits.
+pub const THRESHOLD: u16 = 2047;
 
-/// The pass's own buffers: the two rows held between bands (colour and depth) and the row
-/// each output row is finished in.
+/// The pass's own buffers: the two rows held between bands (colour and depth).
 pub struct EdgeBuffers {
     held_c: [Rgb565; 2 * W as usize],
     held_d: [u16; 2 * W as usize],
-    row: [Rgb565; W as usize],
 }
 
 impl EdgeBuffers {
@@ -35,7 +34,6 @@ impl EdgeBuffers {
         EdgeBuffers {
             held_c: [Rgb565::new(0, 0, 0); 2 * W as usize],
             held_d: [0; 2 * W as usize],
-            row: [Rgb565::new(0, 0, 0); W as usize],
         }
     }
 }
@@ -47,10 +45,10 @@ impl Default for EdgeBuffers {
 }
 
 /// Bytes of RAM the pass adds to the `cube` scene's.
-pub const EDGE_RAM: u32 = 2 * W * 4 + W * 2;
+pub const EDGE_RAM: u32 = 2 * W * 4;
 
 /// The cube, frame `i` (`texture`: `T(128, 128)` with its footprints, `data::T128_FP`),
-/// in 8-row bands, each smoothed at depth discontinuities before it is hashed (row by row,
+/// in 8-row bands, each smoothed at depth discontinuities before it is hashed (in runs,
 /// one row behind the bands); checksum of the smoothed frame, whose rows are also copied
 /// into `frame` when given (the host report).
 pub fn aa_edge(
@@ -71,7 +69,6 @@ pub fn aa_edge(
         .with_depth(&mut buf.depth)?
         .with_setup_cache(&mut buf.setups);
     let cache = &mut buf.cache;
-    let row = &mut edge.row;
     let mut aa = EdgeAa::new(W, THRESHOLD, &mut edge.held_c, &mut edge.held_d)?;
     let mut sum = Fnv1a::default();
     let mut at = 0usize;
@@ -89,7 +86,7 @@ pub fn aa_edge(
         |band| {
             let last = band.first_row() as u32 + band.height() >= H;
             let depth = band.depth().ok_or(Error::NoDepthBuffer)?;
-            aa.band(band.pixels(), depth, last, row, |r: &[Rgb565]| {
+            aa.band(band.pixels(), depth, last, |r: &[Rgb565]| {
                 pause();
                 sum.pixels(r);
                 if let Some(f) = frame.as_deref_mut() {
