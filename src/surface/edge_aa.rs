@@ -244,7 +244,13 @@ impl<'s> EdgeAa<'s> {
             for x in 0..w {
                 let p = d[x];
                 let east = if x + 1 < w { d[x + 1] } else { p };
-                if ((p ^ west) | (p ^ east) | (p ^ up[x]) | (p ^ down[x])) & mask != 0 {
+                let (n, s) = (up[x], down[x]);
+                if ((p ^ west) | (p ^ east) | (p ^ n) | (p ^ s)) & mask != 0
+                    && (p.abs_diff(west) > t
+                        || p.abs_diff(east) > t
+                        || p.abs_diff(n) > t
+                        || p.abs_diff(s) > t)
+                {
                     if let Some(q) = smoothed(&view, r, x, lo, bottom, t) {
                         if start < x {
                             emit(&c[start..x])?;
