@@ -197,7 +197,7 @@ impl<'s> EdgeAa<'s> {
         mut emit: impl FnMut(&[Rgb565]) -> Result<(), E>,
     ) -> Result<usize, E> {
         let w = self.width;
-        if colour.is_empty() || colour.len() % w != 0 {
+        if colour.is_empty() || !colour.len().is_multiple_of(w) {
             return Err(Error::WrongLength {
                 expected: (colour.len() / w).max(1) * w,
                 actual: colour.len(),
