@@ -17,6 +17,7 @@ use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln};
 
 #[cfg(fixel_fw_report)]
 #[path = "../edge_scene.rs"]
+#[allow(dead_code)] // EDGE_RAM: the host report's
 mod edge_scene;
 // `edge_scene.rs` names the shared scene helpers `crate::scenes`.
 #[cfg(fixel_fw_report)]
