@@ -1,4 +1,5 @@
-//! Anti-aliasing on the benchmark cube and sphere: no anti-aliasing, 2 x 2
+//! Anti-aliasing on the benchmark cube and sphere: no anti-aliasing, silhouette
+//! anti-aliasing from depth (`fixel::surface::EdgeAa`, the `aa_edge` firmware's pass), 2 x 2
 //! regular-grid supersampling (a 2-times frame resolved by `fixel::surface::resolve_box`),
 //! 2 x 2 stratified jitter and the 4-sample rotated grid accumulated from jittered frames
 //! (`fixel::scene::jittered`, `fixel::surface::Accumulator`), and 4 x 4 supersampling, side
@@ -15,7 +16,7 @@ use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{DepthTest, Draw, DrawMode, Projection};
 use fixel::scene::{draw_mesh, jittered, Camera, DirectionalLight, Mesh, SamplePattern};
-use fixel::surface::{resolve_box, Accumulator, Frame};
+use fixel::surface::{resolve_box, Accumulator, EdgeAa, Frame};
 use fixel::texture::{Filter, Texture};
 use fixel::Error;
 use fixel_scenes as demo;
@@ -26,8 +27,11 @@ const ZOOM: u32 = 7;
 const CW: u32 = 24;
 const CH: u32 = 18;
 
+/// The frame at `k` times the resolution, box-resolved; at `k = 1` with `edge`, smoothed at
+/// its depth discontinuities (one band holding the frame).
 fn render(
     k: u32,
+    edge: bool,
     camera: &Camera,
     mesh: &Mesh<'_>,
     model: &Mat4,
@@ -56,6 +60,16 @@ fn render(
         Some(&DirectionalLight::default()),
         &mut frame,
     )?;
+    if k == 1 && edge {
+        let (mut hc, mut hd) = (
+            vec![Rgb565::new(0, 0, 0); 2 * W as usize],
+            vec![0u16; 2 * W as usize],
+        );
+        let mut aa = EdgeAa::new(W, 2047, &mut hc, &mut hd)?;
+        let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        aa.band_into(&c, &d, true, &mut out)?;
+        return Ok(out);
+    }
     if k == 1 {
         return Ok(c);
     }
@@ -82,7 +96,7 @@ fn accumulated(
             view: cam.view,
             projection: jittered(&cam.projection, *o, &vp),
         };
-        acc.add(&render(1, &c, mesh, model, tex)?)?;
+        acc.add(&render(1, false, &c, mesh, model, tex)?)?;
     }
     let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
     acc.resolve(&mut out)?;
@@ -118,18 +132,19 @@ fn main() -> Result<(), Error> {
             150u32,
         ),
     ];
-    let cols = 5u32;
+    let cols = 6u32;
     let (pw, ph) = (CW * ZOOM, CH * ZOOM);
     let (ow, oh) = (cols * pw + (cols - 1) * 4, 2 * ph + 4);
     let mut out = vec![Rgb565::new(31, 63, 31); (ow * oh) as usize];
     for (row, (mesh, model, tex, y)) in objects.iter().enumerate() {
         let cam = demo::camera(20);
         let images = [
-            render(1, &cam, mesh, model, *tex)?,
-            render(2, &cam, mesh, model, *tex)?,
+            render(1, false, &cam, mesh, model, *tex)?,
+            render(1, true, &cam, mesh, model, *tex)?,
+            render(2, false, &cam, mesh, model, *tex)?,
             accumulated(SamplePattern::Jittered { n: 4, seed: 7 }, mesh, model, *tex)?,
             accumulated(SamplePattern::RotatedGrid4, mesh, model, *tex)?,
-            render(4, &cam, mesh, model, *tex)?,
+            render(4, false, &cam, mesh, model, *tex)?,
         ];
         let cx = edge(&images[0], *y).clamp(CW / 2, W - CW / 2);
         let (x0, y0) = (cx - CW / 2, (*y).clamp(CH / 2, H - CH / 2) - CH / 2);
@@ -146,7 +161,7 @@ fn main() -> Result<(), Error> {
     let path = common::out_dir().join("antialias.png");
     common::write_png(&path, ow, oh, &out);
     println!(
-        "wrote {} (columns: 1x, 2x2 grid, 2x2 jittered, rotated grid 4, 4x4 grid)",
+        "wrote {} (columns: 1x, 1x + edge AA from depth, 2x2 grid, 2x2 jittered, rotated grid 4, 4x4 grid)",
         path.display()
     );
     motion_blur(&objects[0].0, objects[0].2)
@@ -158,7 +173,14 @@ fn motion_blur(mesh: &Mesh<'_>, tex: Texture<'_>) -> Result<(), Error> {
     let mut sums = vec![[0u16; 3]; (W * H) as usize];
     let mut acc = Accumulator::new(&mut sums)?;
     for i in 0..16 {
-        acc.add(&render(1, &cam, mesh, &demo::cube_model(2 * i), tex)?)?;
+        acc.add(&render(
+            1,
+            false,
+            &cam,
+            mesh,
+            &demo::cube_model(2 * i),
+            tex,
+        )?)?;
     }
     let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
     acc.resolve(&mut out)?;

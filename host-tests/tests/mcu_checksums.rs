@@ -17,6 +17,10 @@ use fixel_scenes as demo;
 #[path = "../../examples/firmware/src/aa_scene.rs"]
 mod aa_scene;
 
+#[path = "../../examples/firmware/src/edge_scene.rs"]
+#[allow(dead_code)] // EDGE_RAM: the aa report's
+mod edge_scene;
+
 #[path = "../../examples/firmware/src/alpha_scene.rs"]
 mod alpha_scene;
 
@@ -142,6 +146,52 @@ fn mcu_frames() {
     .unwrap();
     print_whole("cube", &r, &wr);
     assert!(!r.stats.rewalked);
+    // The cube with silhouette anti-aliasing on each band: the same pass over the whole
+    // frame gives the same pixels.
+    let mut edge = Box::new(edge_scene::EdgeBuffers::new());
+    let ra =
+        edge_scene::aa_edge(&mut small, &mut edge, tex, 0, None, &mut nop1, &mut nop2).unwrap();
+    print("aa_edge", &ra);
+    assert_eq!(ra.stats.pixels, r.stats.pixels);
+    {
+        let mut frame = Frame::new(&mut whole_buf.color, scenes::W, scenes::H)
+            .unwrap()
+            .with_depth(&mut whole_buf.depth)
+            .unwrap();
+        frame.clear(Rgb565::new(0, 0, 0));
+        let cube = demo::cube();
+        let draw = Draw::new_mip::<scenes::LitFootprint>(
+            Some(tex),
+            Viewport::new(0, 0, scenes::W, scenes::H).unwrap(),
+            Cull::Back,
+        )
+        .unwrap();
+        let light = DirectionalLight::default();
+        draw_mesh(
+            &draw,
+            &cube.mesh().unwrap(),
+            &demo::cube_model(0),
+            &demo::camera(20),
+            Some(&light),
+            &mut frame,
+        )
+        .unwrap();
+        let w = scenes::W as usize;
+        let (mut hc, mut hd) = (vec![Rgb565::new(0, 0, 0); 2 * w], vec![0u16; 2 * w]);
+        let mut aa =
+            fixel::surface::EdgeAa::new(scenes::W, edge_scene::THRESHOLD, &mut hc, &mut hd)
+                .unwrap();
+        let mut out = vec![Rgb565::new(0, 0, 0); frame.pixels().len()];
+        let n = aa
+            .band_into(frame.pixels(), frame.depth().unwrap(), true, &mut out)
+            .unwrap();
+        let mut f = Fnv1a::default();
+        f.pixels(&out[..n]);
+        assert_eq!(
+            f.0, ra.checksum,
+            "aa_edge: bands differ from the whole frame"
+        );
+    }
     let cube = demo::cube();
     // `Lit` reads the plain texels: the footprint draw gives its pixels.
     let w = whole::<scenes::Lit>(plain, &cube.mesh().unwrap(), &demo::cube_model(0), 20, true);

@@ -22,6 +22,7 @@ pub(crate) mod accum_bands;
 pub(crate) mod band;
 mod band_draw;
 mod band_link;
+pub(crate) mod edge_aa;
 
 pub(crate) mod frame;
 pub mod overlap;
@@ -41,6 +42,7 @@ pub use crate::texture::{DepthMap, ShadowMap, MAX_MAP_SIZE, MIN_MAP_SIZE};
 pub use band::{BandError, BandRenderer, BandStats, Binned, TriangleSink};
 pub use band_draw::{AnyTriangle, AnyTriangleRef, BandDraw, Binnable, BINNED_VARYINGS};
 pub use band_link::DrawTargetFlush;
+pub use edge_aa::EdgeAa;
 pub use frame::Frame;
 pub use overlap::{BandSender, Blocking, Dma};
 pub use overlap_async::AsyncBandSender;

@@ -1,7 +1,9 @@
 //! `cargo xtask report`, anti-aliasing: the benchmark cube (frame 0) at 1x,
 //! regular-grid 2 x 2 and 4 x 4 supersampling in bands, and the rotated grid of 4 and 16
 //! stratified jittered samples accumulated through bands (`examples/firmware/src/aa.rs`, the
-//! firmware's code), and 1x with post-process edge smoothing.
+//! firmware's code), 1x with post-process edge smoothing, and the `aa_edge` firmware's frame
+//! (the `cube` scene's draw, each band smoothed at depth discontinuities,
+//! `examples/firmware/src/edge_scene.rs`).
 //!
 //! ```text
 //! aa_report --out DIR [--runs N] [--mcu mcu.tsv]
@@ -20,6 +22,9 @@ mod scenes;
 #[path = "../../../examples/firmware/src/aa.rs"]
 #[allow(dead_code)]
 mod aa;
+
+#[path = "../../../examples/firmware/src/edge_scene.rs"]
+mod edge_scene;
 
 #[path = "../../../examples/firmware/src/alpha.rs"]
 #[allow(dead_code)]
@@ -251,6 +256,52 @@ fn main() {
             ns: times[times.len() / 2] * 1e9 / display_px(&img),
             mcu: host_tests::report_mcu::of(&mcu, "cube-smoothed", checksum),
             ram: format!("{:.1} KB", f64::from(aa::SMOOTH_RAM) / 1024.0),
+            edge_mean: e.0,
+            edge_max: e.1,
+            frame_mean: e.2,
+            psnr: e.3,
+        });
+    }
+    {
+        // The `aa_edge` scene: the `cube` scene's draw from the texture's footprints.
+        let mut fp = vec![0u64; t.len()];
+        fixel::texture::write_footprints(&tex, &mut fp).unwrap();
+        let mip = fixel::texture::MipTexture::single(tex)
+            .with_footprints(&fp)
+            .unwrap();
+        let mut small = Box::new(scenes::SmallBuffers::with_storage());
+        let mut edge = Box::new(edge_scene::EdgeBuffers::new());
+        let mut img = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
+        let mut times = Vec::new();
+        let mut checksum = 0;
+        for _ in 0..runs.max(1) {
+            let t0 = Instant::now();
+            let r = edge_scene::aa_edge(
+                &mut small,
+                &mut edge,
+                mip,
+                0,
+                Some(&mut img),
+                &mut || {},
+                &mut || {},
+            )
+            .unwrap();
+            times.push(t0.elapsed().as_secs_f64());
+            checksum = r.checksum;
+        }
+        let e = errors(&img, &refr, &cov);
+        times.sort_by(f64::total_cmp);
+        rows.push(Row {
+            name: format!(
+                "1x + silhouettes from depth (`aa_edge`, threshold {}), bands",
+                edge_scene::THRESHOLD
+            ),
+            ns: times[times.len() / 2] * 1e9 / display_px(&img),
+            mcu: host_tests::report_mcu::of(&mcu, "cube-edge", checksum),
+            ram: format!(
+                "{:.1} KB",
+                f64::from(2 * W * 8 * 2 + edge_scene::EDGE_RAM) / 1024.0
+            ),
             edge_mean: e.0,
             edge_max: e.1,
             frame_mean: e.2,

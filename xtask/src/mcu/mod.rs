@@ -72,8 +72,11 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 32] = [
+const SCENES: [&str; 33] = [
     "cube",
+    // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
+    // compared with.
+    "aa_edge",
     "sphere",
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
     // draw, beside the sphere it is compared with.

@@ -1,7 +1,8 @@
 //! `cargo xtask report`: regular-grid supersampling of the benchmark cube in bands
 //! (`aa::cube`): 1x, 2 x 2 and 4 x 4, then the rotated grid of 4 and 16 jittered samples
 //! accumulated through 8-row bands (`aa::cube_accumulated`), then 1x with post-process
-//! edge smoothing (`aa::cube_smoothed`) (report memory layout only: the 4 x 4 band takes
+//! edge smoothing (`aa::cube_smoothed`), then the `aa_edge` scene's frame (silhouettes
+//! smoothed from depth, `edge_scene.rs`) (report memory layout only: the 4 x 4 band takes
 //! 160 KB; in the default layout this binary only has to link).
 #![no_std]
 #![no_main]
@@ -15,11 +16,21 @@ use fixel_firmware::report_begin;
 use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln};
 
 #[cfg(fixel_fw_report)]
+#[path = "../edge_scene.rs"]
+#[allow(dead_code)] // EDGE_RAM: the host report's
+mod edge_scene;
+// `edge_scene.rs` names the shared scene helpers `crate::scenes`.
+#[cfg(fixel_fw_report)]
+use fixel_firmware::scenes;
+
+#[cfg(fixel_fw_report)]
 static mut BUF: aa::AaBuffers = aa::AaBuffers::new();
 #[cfg(fixel_fw_report)]
 static mut ACC: aa::AccumBuffers = aa::AccumBuffers::new();
 #[cfg(fixel_fw_report)]
 static mut SMOOTH: aa::SmoothBuffers = aa::SmoothBuffers::new();
+#[cfg(fixel_fw_report)]
+static mut EDGE: edge_scene::EdgeBuffers = edge_scene::EdgeBuffers::new();
 
 fn run() -> bool {
     report_begin();
@@ -110,6 +121,32 @@ fn run() -> bool {
             ),
             Err(e) => {
                 outln!("mode scene=aa mode=cube-smoothed error={:?}", e);
+                ok = false;
+            }
+        }
+        // SAFETY: the only reference to EDGE, taken once in this single-threaded firmware.
+        let edge = unsafe { &mut *core::ptr::addr_of_mut!(EDGE) };
+        let mut small = scenes::SmallBuffers::with_storage();
+        bench_start();
+        let r = edge_scene::aa_edge(
+            &mut small,
+            edge,
+            data::T128_FP,
+            core::hint::black_box(0),
+            None,
+            &mut || bench_end(),
+            &mut || bench_start(),
+        );
+        bench_end();
+        bench_mark();
+        match r {
+            Ok(r) => outln!(
+                "mode scene=aa mode=cube-edge checksum=0x{:08x} pixels={} rewalked=false",
+                r.checksum,
+                r.stats.pixels
+            ),
+            Err(e) => {
+                outln!("mode scene=aa mode=cube-edge error={:?}", e);
                 ok = false;
             }
         }
