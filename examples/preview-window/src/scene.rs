@@ -7,13 +7,13 @@
 use std::convert::Infallible;
 
 use embedded_graphics_core::draw_target::DrawTarget;
-use fixel_scenes::{self as demo, MeshData};
 use fixel::math::Fx;
 use fixel::pipeline::KeptSetup;
 use fixel::prelude::*;
 use fixel::scene::{mesh_to_sink, CachedVertex, DirectionalLight, Mesh, MeshTransform};
 use fixel::surface::{BandRange, BandRenderer, BandStats, Binned, DrawTargetFlush};
 use fixel::texture::{write_footprints, MipTexture};
+use fixel_scenes::{self as demo, MeshData};
 
 use crate::modes::{Filt, Mode, Proj};
 
