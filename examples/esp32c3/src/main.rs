@@ -26,12 +26,12 @@ use esp_hal::gpio::{Level, Output, OutputConfig};
 use esp_hal::spi::master::{Config as SpiConfig, Spi};
 use esp_hal::spi::Mode;
 use esp_hal::time::Rate;
-use fixel_scenes as demo;
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
 use fixel::surface::{BandDraw, BandError, Binned, SpiSender};
 use fixel::texture::{Bilinear, Repeat};
+use fixel_scenes as demo;
 
 esp_bootloader_esp_idf::esp_app_desc!();
 

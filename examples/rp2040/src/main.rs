@@ -28,12 +28,12 @@ use core::convert::Infallible;
 
 use embedded_hal::digital::OutputPin;
 use embedded_hal::spi::{SpiBus, MODE_0};
-use fixel_scenes as demo;
 use fixel::pipeline::{DepthLess, Exact, ModulateIntensity, Pipeline};
 use fixel::prelude::*;
 use fixel::scene::{mesh_triangles, DirectionalLight};
 use fixel::surface::{BandDraw, BandSender, BandShare, Binned, BinnedFrame};
 use fixel::texture::{Bilinear, Repeat};
+use fixel_scenes as demo;
 use fugit::RateExtU32;
 use rp2040_hal::clocks::{init_clocks_and_plls, Clock};
 use rp2040_hal::dma::{single_buffer, Channel, DMAExt, CH0};
