@@ -11,10 +11,16 @@
 //!
 //! A kept set-up is a copy of the one the triangle would build, so the pixels are the same
 //! with or without it.
+//!
+//! An entry may also hold what the rest of the triangle's raster needs besides its set-up
+//! (corners, the shader's per-triangle data, the level of detail and the range proof:
+//! [`KeptSetup::resumable`]): the next band then draws the triangle from the entry alone,
+//! without projecting it again.
 
 use super::setup::TriSetup;
+use crate::raster::first_row_at_or_below;
 use crate::raster::Plane;
-use crate::shading::Varyings;
+use crate::shading::{Shader, Varyings};
 
 /// Varyings a [`KeptSetup`] holds at most: shaders with more always build their set-up.
 pub const KEPT_VARYINGS: usize = 4;
@@ -23,7 +29,7 @@ pub const KEPT_VARYINGS: usize = 4;
 /// zeroed in place rather than copied from a template).
 const NONE: u8 = 0;
 
-/// One raster set-up kept across bands, 88 bytes on 32-bit targets. `Default` and
+/// One raster set-up kept across bands, 108 bytes on 32-bit targets. `Default` and
 /// [`KeptSetup::EMPTY`] are an empty entry (all zero bits); give a band renderer an array
 /// of them.
 #[derive(Clone, Copy, Debug)]
@@ -37,7 +43,8 @@ pub struct KeptSetup {
     pub(crate) draw: u8,
     /// Varyings held plus one, or [`NONE`].
     held: u8,
-    affine: bool,
+    /// [`AFFINE`], [`RESUMABLE`], [`PROVEN`].
+    flags: u8,
     px_ref: i32,
     py_ref: i32,
     z: Plane,
@@ -45,6 +52,30 @@ pub struct KeptSetup {
     at_ref: [i32; KEPT_VARYINGS],
     dx: [i32; KEPT_VARYINGS],
     dy: [i32; KEPT_VARYINGS],
+    /// The screen triangle's corners (`x, y` in sub-pixel units), when resumable.
+    corners: [i16; 6],
+    /// The shader's per-triangle data ([`Shader::pack_triangle`]), when resumable.
+    tri: u32,
+    /// The triangle's level of detail (Q8.8), when resumable.
+    lambda: i32,
+}
+
+/// `flags`: the planes are affine.
+const AFFINE: u8 = 1;
+/// `flags`: the entry holds what [`KeptSetup::resume`] returns.
+const RESUMABLE: u8 = 2;
+/// `flags`: the triangle's range-checked varying is proven in range.
+const PROVEN: u8 = 4;
+
+/// What a band needs to draw a kept triangle without its screen triangle: corners
+/// (sub-pixel units), the shader's per-triangle data, its level of detail (Q8.8) and
+/// whether its range-checked varying is proven in range.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Resume<T> {
+    pub corners: [(i32, i32); 3],
+    pub triangle: T,
+    pub lambda: i32,
+    pub proven: bool,
 }
 
 impl Default for KeptSetup {
@@ -60,7 +91,7 @@ impl KeptSetup {
         band: 0,
         draw: 0,
         held: NONE,
-        affine: false,
+        flags: 0,
         px_ref: 0,
         py_ref: 0,
         z: Plane {
@@ -76,6 +107,9 @@ impl KeptSetup {
         at_ref: [0; KEPT_VARYINGS],
         dx: [0; KEPT_VARYINGS],
         dy: [0; KEPT_VARYINGS],
+        corners: [0; 6],
+        tri: 0,
+        lambda: 0,
     };
 
     /// Whether the entry holds a set-up with `V`'s number of varyings.
@@ -104,15 +138,71 @@ impl KeptSetup {
             at_ref,
             dx,
             dy,
-            affine: self.affine,
+            affine: self.flags & AFFINE != 0,
         })
+    }
+
+    /// Whether the entry holds a set-up and what [`resume`](Self::resume) returns.
+    #[inline]
+    pub(crate) fn resumable(&self) -> bool {
+        self.held != NONE && self.flags & RESUMABLE != 0
+    }
+
+    /// The rest of a resumable entry's triangle (see [`Resume`]), for shader `S`.
+    #[inline]
+    pub(crate) fn resume<S: Shader>(&self) -> Option<Resume<S::Triangle>> {
+        if !self.resumable() {
+            return None;
+        }
+        let c = self.corners.map(i32::from);
+        Some(Resume {
+            corners: [(c[0], c[1]), (c[2], c[3]), (c[4], c[5])],
+            triangle: S::unpack_triangle(self.tri)?,
+            lambda: self.lambda,
+            proven: self.flags & PROVEN != 0,
+        })
+    }
+
+    /// Adds to an entry that holds a set-up the rest of its triangle: it becomes
+    /// resumable when the shader packs its per-triangle data ([`Shader::pack_triangle`])
+    /// and the corners fit `i16`.
+    #[inline]
+    pub(crate) fn keep_rest<S: Shader>(&mut self, rest: &Resume<S::Triangle>) {
+        self.flags &= !(RESUMABLE | PROVEN);
+        if self.held == NONE {
+            return;
+        }
+        let Some(bits) = S::pack_triangle(&rest.triangle) else {
+            return;
+        };
+        if S::unpack_triangle(bits).is_none() {
+            return;
+        }
+        let mut corners = [0i16; 6];
+        for (k, &(x, y)) in rest.corners.iter().enumerate() {
+            match (i16::try_from(x), i16::try_from(y)) {
+                (Ok(x), Ok(y)) => (corners[2 * k], corners[2 * k + 1]) = (x, y),
+                _ => return,
+            }
+        }
+        (self.corners, self.tri, self.lambda) = (corners, bits, rest.lambda);
+        self.flags |= RESUMABLE | if rest.proven { PROVEN } else { 0 };
+    }
+
+    /// The pixel rows `r0..r1` (`r1` excluded) a resumable entry's triangle draws, as
+    /// the band renderer's bins count them.
+    #[inline]
+    pub(crate) fn rows(&self) -> (i32, i32) {
+        let y = [self.corners[1], self.corners[3], self.corners[5]].map(i32::from);
+        let (top, bot) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+        (first_row_at_or_below(top), first_row_at_or_below(bot))
     }
 
     /// Keeps `setup` (`None`, a triangle that builds none, or too many varyings: empties
     /// the entry).
     #[inline]
     pub(crate) fn store<V: Varyings>(&mut self, setup: Option<&TriSetup<V>>) {
-        self.held = NONE;
+        (self.held, self.flags) = (NONE, 0);
         let Some(s) = setup.filter(|_| V::N <= KEPT_VARYINGS) else {
             return;
         };
@@ -125,14 +215,15 @@ impl KeptSetup {
                 *t = *f;
             }
         }
-        (self.px_ref, self.py_ref, self.z, self.q, self.affine) =
-            (s.px_ref, s.py_ref, s.z, s.q, s.affine);
+        (self.px_ref, self.py_ref, self.z, self.q) = (s.px_ref, s.py_ref, s.z, s.q);
+        self.flags = if s.affine { AFFINE } else { 0 };
         self.held = V::N as u8 + 1;
     }
 
     /// Marks the entry empty.
     pub(crate) fn clear(&mut self) {
         self.held = NONE;
+        self.flags = 0;
     }
 
     /// Whether the entry holds a set-up.

@@ -141,7 +141,8 @@ enum Pass<'s, 'f, 'd, C: TargetColor> {
         window: (usize, usize),
         draws: &'s [&'d dyn BandDraw<C>],
         band: &'s mut Frame<'f, C>,
-        ranges: &'s [BandRange],
+        /// The band ranges; a triangle kept whole for the next band ends its range here.
+        ranges: &'s mut [BandRange],
         /// Band index, saturated at 254 as the ranges are.
         index: u8,
         pixels: u32,
@@ -150,6 +151,10 @@ enum Pass<'s, 'f, 'd, C: TargetColor> {
         /// The last id pushed and the index of its last screen triangle (clipped pieces),
         /// for the set-up keys.
         last: (usize, u32),
+        /// Whether every screen triangle of the last id that goes on below the band is
+        /// kept resumable (the next band then draws them from the set-up cache, and need
+        /// not project the triangle).
+        whole: bool,
     },
 }
 
@@ -323,9 +328,12 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
             Pass::Band {
                 draws,
                 band,
+                ranges,
+                index,
                 pixels,
                 setups,
                 last,
+                whole,
                 ..
             } => {
                 // Which of the id's screen triangles this is, counted before any skip so
@@ -333,25 +341,92 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 let piece = if last.0 == id {
                     last.1.wrapping_add(1)
                 } else {
+                    end_range_if_kept(ranges, *last, *whole, *index);
+                    *whole = true;
                     0
                 };
                 *last = (id, piece);
+                let key = setup_queue::key(id, piece);
                 // Rows r0..r1 against the band's first..end (both ends excluded): a
                 // triangle that only touches the band's edge costs no set-up.
                 let (first, end) = band.row_range();
                 let (r0, r1) = rows_of(tri);
+                // What the band above kept for the triangles before this one, in order.
+                if key.is_some() {
+                    *pixels = pixels.saturating_add(resume(draws, setups, band, key, end));
+                }
+                let goes_on = r1 > end;
                 if r1 <= first || r0 >= end || r1 <= r0 {
+                    *whole &= !goes_on;
                     return;
                 }
                 if let Some(d) = draws.get(usize::from(draw)) {
                     // Kept while the triangle goes on below this band.
-                    let slot = match setup_queue::key(id, piece) {
-                        Some(key) => setups.slot(key, draw, r1 > end),
+                    let mut slot = match key {
+                        Some(key) => setups.slot(key, draw, goes_on),
                         None => None,
                     };
-                    *pixels = pixels.saturating_add(d.draw_piece(tri.as_any(), *band, slot));
+                    let drawn = d.draw_piece(tri.as_any(), *band, slot.as_deref_mut());
+                    *pixels = pixels.saturating_add(drawn);
+                    *whole &= !goes_on || slot.is_some_and(|e| e.resumable());
+                } else {
+                    *whole &= !goes_on;
                 }
             }
+        }
+    }
+}
+
+/// Draws, through their draws, what the band above kept resumable for the screen
+/// triangles before `key` (all of them with `None`); the pixels written.
+fn resume<C: TargetColor>(
+    draws: &[&dyn BandDraw<C>],
+    setups: &mut SetupQueue<'_>,
+    band: &mut Frame<'_, C>,
+    key: Option<u32>,
+    end: i32,
+) -> u32 {
+    setups.resume_before(key, end, |e| match draws.get(usize::from(e.draw)) {
+        Some(d) => d.resume_piece(e, band),
+        None => 0,
+    })
+}
+
+/// Ends the band range of triangle `last.0` at band `index` when every screen triangle
+/// of it that goes on below the band is kept resumable (`whole`): the next bands draw
+/// them from the set-up cache, and the geometry need not project the triangle again.
+#[inline(always)]
+fn end_range_if_kept(ranges: &mut [BandRange], last: (usize, u32), whole: bool, index: u8) {
+    if !whole || index >= LAST_BAND as u8 {
+        return;
+    }
+    if let Some(r) = ranges.get_mut(last.0) {
+        if r.covers_saturated(index) {
+            r.end = index + 1;
+        }
+    }
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// Ends a band pass: the last triangle's range (see [`end_range_if_kept`]), then what
+    /// the band above kept and this band has not drawn yet.
+    fn finish_band(&mut self) {
+        if let Pass::Band {
+            draws,
+            band,
+            ranges,
+            index,
+            pixels,
+            setups,
+            last,
+            whole,
+            ..
+        } = &mut self.pass
+        {
+            end_range_if_kept(ranges, *last, *whole, *index);
+            *last = (usize::MAX, 0);
+            let end = band.row_range().1;
+            *pixels = pixels.saturating_add(resume(draws, setups, band, None, end));
         }
     }
 }
@@ -508,7 +583,6 @@ impl<C: TargetColor> BandRenderer<'_, C> {
             rewalked: bins_full && ranges_short,
             ..BandStats::default()
         };
-        let ranges: &[BandRange] = ranges;
         let windows: &Windows = windows;
         // Lent out of the renderer for the band passes (`each_band` borrows it), emptied:
         // what an earlier frame kept is not this frame's.
@@ -527,16 +601,18 @@ impl<C: TargetColor> BandRenderer<'_, C> {
                         },
                         draws,
                         band,
-                        ranges,
+                        ranges: &mut *ranges,
                         index: index.min(LAST_BAND) as u8,
                         pixels: 0,
                         // The band counted modulo 256.
                         setups: SetupQueue::new(&mut *setups, queue, index as u8),
                         last: (usize::MAX, 0),
+                        whole: false,
                     },
                     attributes: true,
                 };
                 geometry(&mut s);
+                s.finish_band();
                 match s.pass {
                     Pass::Band { pixels, setups, .. } => {
                         queue = setups.state();
@@ -604,11 +680,12 @@ mod tests {
                     window: (0, usize::MAX),
                     draws: &[],
                     band: &mut band,
-                    ranges: &ranges,
+                    ranges: &mut ranges,
                     index,
                     pixels: 0,
                     setups: SetupQueue::new(&mut [], QueueState::default(), index),
                     last: (usize::MAX, 0),
+                    whole: false,
                 },
                 attributes: true,
             };

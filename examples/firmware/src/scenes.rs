@@ -52,7 +52,7 @@ pub const CACHE: usize = 64;
 /// crosses into the next band is not set up again there. About 50 sphere triangles cross
 /// each band boundary; the first 36 are kept (40: 2 instructions per pixel less on M0+,
 /// 350 B more RAM).
-pub const SETUPS: usize = 36;
+pub const SETUPS: usize = 29;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 
