@@ -29,7 +29,7 @@ pub const KEPT_VARYINGS: usize = 4;
 /// zeroed in place rather than copied from a template).
 const NONE: u8 = 0;
 
-/// One raster set-up kept across bands, 108 bytes on 32-bit targets. `Default` and
+/// One raster set-up kept across bands, 100 bytes on 32-bit targets. `Default` and
 /// [`KeptSetup::EMPTY`] are an empty entry (all zero bits); give a band renderer an array
 /// of them.
 #[derive(Clone, Copy, Debug)]
@@ -45,8 +45,10 @@ pub struct KeptSetup {
     held: u8,
     /// [`AFFINE`], [`RESUMABLE`], [`PROVEN`].
     flags: u8,
-    px_ref: i32,
-    py_ref: i32,
+    /// The reference pixel (in the viewport, so within `i16`; a set-up whose reference
+    /// is not is not kept).
+    px_ref: i16,
+    py_ref: i16,
     z: Plane,
     q: Plane,
     at_ref: [i32; KEPT_VARYINGS],
@@ -56,8 +58,6 @@ pub struct KeptSetup {
     corners: [i16; 6],
     /// The shader's per-triangle data ([`Shader::pack_triangle`]), when resumable.
     tri: u32,
-    /// The triangle's level of detail (Q8.8), when resumable.
-    lambda: i32,
 }
 
 /// `flags`: the planes are affine.
@@ -68,7 +68,8 @@ const RESUMABLE: u8 = 2;
 const PROVEN: u8 = 4;
 
 /// What a band needs to draw a kept triangle without its screen triangle: corners
-/// (sub-pixel units), the shader's per-triangle data, its level of detail (Q8.8) and
+/// (sub-pixel units), the shader's per-triangle data, its level of detail (Q8.8; only a
+/// triangle whose level is 0 is kept resumable, so an entry needs no room for it) and
 /// whether its range-checked varying is proven in range.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Resume<T> {
@@ -109,7 +110,6 @@ impl KeptSetup {
         dy: [0; KEPT_VARYINGS],
         corners: [0; 6],
         tri: 0,
-        lambda: 0,
     };
 
     /// Whether the entry holds a set-up with `V`'s number of varyings.
@@ -131,8 +131,8 @@ impl KeptSetup {
         dx.as_mut_slice().copy_from_slice(self.dx.get(..V::N)?);
         dy.as_mut_slice().copy_from_slice(self.dy.get(..V::N)?);
         Some(TriSetup {
-            px_ref: self.px_ref,
-            py_ref: self.py_ref,
+            px_ref: i32::from(self.px_ref),
+            py_ref: i32::from(self.py_ref),
             z: self.z,
             q: self.q,
             at_ref,
@@ -158,7 +158,7 @@ impl KeptSetup {
         Some(Resume {
             corners: [(c[0], c[1]), (c[2], c[3]), (c[4], c[5])],
             triangle: S::unpack_triangle(self.tri)?,
-            lambda: self.lambda,
+            lambda: 0,
             proven: self.flags & PROVEN != 0,
         })
     }
@@ -169,7 +169,7 @@ impl KeptSetup {
     #[inline]
     pub(crate) fn keep_rest<S: Shader>(&mut self, rest: &Resume<S::Triangle>) {
         self.flags &= !(RESUMABLE | PROVEN);
-        if self.held == NONE {
+        if self.held == NONE || rest.lambda != 0 {
             return;
         }
         let Some(bits) = S::pack_triangle(&rest.triangle) else {
@@ -185,7 +185,7 @@ impl KeptSetup {
                 _ => return,
             }
         }
-        (self.corners, self.tri, self.lambda) = (corners, bits, rest.lambda);
+        (self.corners, self.tri) = (corners, bits);
         self.flags |= RESUMABLE | if rest.proven { PROVEN } else { 0 };
     }
 
@@ -206,6 +206,9 @@ impl KeptSetup {
         let Some(s) = setup.filter(|_| V::N <= KEPT_VARYINGS) else {
             return;
         };
+        let (Ok(px_ref), Ok(py_ref)) = (i16::try_from(s.px_ref), i16::try_from(s.py_ref)) else {
+            return;
+        };
         for (to, from) in [
             (&mut self.at_ref, &s.at_ref),
             (&mut self.dx, &s.dx),
@@ -215,7 +218,7 @@ impl KeptSetup {
                 *t = *f;
             }
         }
-        (self.px_ref, self.py_ref, self.z, self.q) = (s.px_ref, s.py_ref, s.z, s.q);
+        (self.px_ref, self.py_ref, self.z, self.q) = (px_ref, py_ref, s.z, s.q);
         self.flags = if s.affine { AFFINE } else { 0 };
         self.held = V::N as u8 + 1;
     }
@@ -256,8 +259,8 @@ mod tests {
             dy: seed ^ k,
         };
         TriSetup {
-            px_ref: seed,
-            py_ref: seed.wrapping_neg(),
+            px_ref: seed % 4096,
+            py_ref: (seed % 4096).wrapping_neg(),
             z: plane(1),
             q: plane(2),
             at_ref: core::array::from_fn(|i| seed.wrapping_add(i as i32)),
@@ -289,6 +292,50 @@ mod tests {
             k.store(Some(&s0));
             assert!(same(&k.load::<[i32; 0]>().unwrap(), &s0));
         }
+    }
+
+    #[test]
+    fn a_reference_pixel_past_i16_is_not_kept() {
+        let mut k = KeptSetup::default();
+        let mut s = sample::<3>(7);
+        s.px_ref = 40_000;
+        k.store(Some(&s));
+        assert!(k.load::<[i32; 3]>().is_none());
+    }
+
+    #[test]
+    fn an_entry_is_resumable_only_with_all_of_its_triangle() {
+        use crate::shading::TexTriangle;
+        use crate::texture::{Bilinear, Repeat};
+        type Tex = crate::shading::ModulateIntensity<'static, Bilinear, Repeat, Repeat>;
+        let rest = |corners: [(i32, i32); 3], shift: u8, lambda: i32| Resume {
+            corners,
+            triangle: TexTriangle { shift },
+            lambda,
+            proven: true,
+        };
+        let corners = [(5, -7), (300, 16), (-32768, 32767)];
+        let mut k = KeptSetup::default();
+        // No set-up held: nothing to resume.
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        assert!(!k.resumable());
+        k.store(Some(&sample::<3>(9)));
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        let r = k.resume::<Tex>().unwrap();
+        assert_eq!(
+            (r.corners, r.triangle.shift, r.lambda, r.proven),
+            (corners, 3, 0, true)
+        );
+        assert_eq!(k.rows(), (0, 2048));
+        // A corner past i16, or a level of detail, is not kept: the entry keeps its set-up.
+        k.keep_rest::<Tex>(&rest([(0, 0), (1 << 15, 0), (0, 1)], 3, 0));
+        assert!(!k.resumable() && k.load::<[i32; 3]>().is_some());
+        k.keep_rest::<Tex>(&rest(corners, 3, 256));
+        assert!(!k.resumable());
+        // A new set-up is not resumable until its triangle is kept too.
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        k.store(Some(&sample::<3>(10)));
+        assert!(!k.resumable());
     }
 
     #[test]
