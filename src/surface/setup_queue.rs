@@ -10,7 +10,13 @@
 //! reads only what the band above it kept.
 //!
 //! With `n` entries the first `n` triangles crossing each band boundary (in id order) skip
-//! their second set-up; the ring costs 88 bytes per entry and nothing when empty.
+//! their second set-up; the ring costs 100 bytes per entry and nothing when empty.
+//!
+//! An entry that also holds the rest of its triangle's raster
+//! ([`KeptSetup::resumable`]) need not even be met again: the next band draws it from the
+//! queue ([`SetupQueue::resume_before`]) when the geometry pushes a later triangle, or at
+//! the end of the band, so in the same order as the walk would, and the band renderer ends
+//! the triangle's band range so the geometry skips it.
 
 use crate::pipeline::{KeptSetup, SetupSlot};
 

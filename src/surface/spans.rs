@@ -10,10 +10,11 @@
 //! geometry asks [`MeshSink::next_wanted`] for the next triangle that meets the band, a
 //! scan of the ranges). With 8-row bands a small triangle is
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
-//! instead of one per band; with [`BandRenderer::with_setup_cache`] the raster set-up of a
-//! triangle crossing into the next band is built once for both (on Cortex-M0+ that saves
-//! about 9 % of the benchmark sphere in bands, which then costs about 1.2 times the whole
-//! frame; measure with `cargo xtask mcu`).
+//! instead of one per band; with [`BandRenderer::with_setup_cache`] a triangle crossing
+//! into the next band is set up once for both, and the next band draws it from the kept
+//! set-up without projecting it again (the benchmark sphere in bands, fastest mode:
+//! Cortex-M4F 193.8 instructions per pixel against 141.5 whole, Cortex-M0+ 404.7 against
+//! 324.3, RV32IMC 247.1 against 192.2; measure with `cargo xtask mcu`).
 //!
 //! Ladder of storage (same pixels on every rung, tested):
 //!
@@ -28,13 +29,13 @@
 //! Storage (bytes; 32-bit targets): a screen triangle in `bins` 168, a [`BandRange`] 2, a
 //! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, a kept set-up
 //! ([`KeptSetup`](crate::pipeline::KeptSetup), optional, see
-//! [`BandRenderer::with_setup_cache`]) 88, plus 512 on the stack for the per-band id
+//! [`BandRenderer::with_setup_cache`]) 100, plus 512 on the stack for the per-band id
 //! windows. For a 320 x 8 band with 16-bit depth (10,240):
 //!
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
 //! |---|---:|---|---:|---:|
-//! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 88 = 1,408 | 19.2 KB |
-//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 36 x 88 = 3,168 | 23.4 KB |
+//! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 100 = 1,600 | 21.1 KB |
+//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 31 x 100 = 3,100 | 23.3 KB |
 //! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
 //! | any | n | bins | 168 per screen triangle | |
 //!
@@ -659,6 +660,68 @@ mod tests {
         let mut far = BandRange::EMPTY;
         far.include(254, 254);
         assert!(far.covers(300) && far.covers(254) && !far.covers(253));
+    }
+
+    /// A triangle crossing several bands, kept from band to band, is projected only in
+    /// the first band it meets (its band range then ends there); without kept set-ups, in
+    /// every band it meets. The pixels are the whole frame's either way.
+    #[test]
+    fn a_kept_triangle_is_projected_in_its_first_band_only() {
+        extern crate std;
+        use crate::geometry::{Cull, Vertex, Viewport};
+        use crate::math::Fx;
+        use crate::pipeline::{Exact, KeptSetup, NoDepth, ShadedDraw};
+        use crate::shading::Gouraud;
+        use embedded_graphics_core::pixelcolor::Rgb565;
+        use std::vec::Vec;
+        let (w, h, rows) = (24u32, 40u32, 4u32);
+        let vp = Viewport::new(0, 0, w, h).expect("a viewport");
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(Gouraud, vp, Cull::None).expect("a draw");
+        let one = 256 << 16;
+        let p = |x: f32, y: f32| [crate::math::fx(x), crate::math::fx(y), Fx::ZERO, Fx::ONE];
+        let tri = [
+            Vertex::new(p(-0.8, -0.9), [one, 0, 0]),
+            Vertex::new(p(0.9, -0.3), [0, one, 0]),
+            Vertex::new(p(-0.2, 0.95), [0, 0, one]),
+        ];
+        let mut whole = [Rgb565::default(); (24 * 40) as usize];
+        let mut frame = Frame::new(&mut whole, w, h).expect("a frame");
+        draw.clip_triangles(&[tri], &mut frame).expect("drawn");
+        let draws: [&dyn BandDraw<Rgb565>; 1] = [&draw];
+        for kept in [0usize, 1, 3] {
+            let mut color = [Rgb565::default(); (24 * 4) as usize];
+            let mut setups = [KeptSetup::EMPTY; 3];
+            let mut bands = BandRenderer::new(&mut color, w, rows, h)
+                .expect("bands")
+                .with_setup_cache(&mut setups[..kept]);
+            let mut ranges = [BandRange::EMPTY; 1];
+            let (mut projected, mut got) = (0, Vec::new());
+            bands
+                .render_spans(
+                    &draws,
+                    &mut [],
+                    &mut ranges,
+                    Rgb565::default(),
+                    |sink| {
+                        if sink.wants(0) {
+                            projected += usize::from(!sink.fresh());
+                            draw.project(&tri, &mut |s| sink.push(0, 0, s));
+                        }
+                    },
+                    |band| {
+                        got.extend_from_slice(band.pixels());
+                        Ok::<(), core::convert::Infallible>(())
+                    },
+                )
+                .expect("a frame");
+            assert!(got[..] == whole[..], "{kept} kept");
+            let met = (0..h / rows).filter(|&b| ranges[0].covers(b)).count();
+            if kept == 0 {
+                assert!(projected >= 5 && met == projected, "{projected} of {met}");
+            } else {
+                assert_eq!((projected, met), (1, 1), "{kept} kept");
+            }
+        }
     }
 
     /// In a band pass, `next_wanted(id, end)` is the first id in `id..end` that `wants`
