@@ -391,3 +391,63 @@ fn drawn(
     let px = draw(&mut fr).unwrap();
     (px, color.iter().map(|&c| bits(c)).collect())
 }
+
+/// A triangle crossing several bands, kept from band to band, is projected only in
+/// the first band it meets (its band range then ends there); without kept set-ups, in
+/// every band it meets. The pixels are the whole frame's either way.
+#[test]
+fn a_kept_triangle_is_projected_in_its_first_band_only() {
+    use fixel::geometry::{Cull, Vertex};
+    use fixel::math::Fx;
+    use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
+    use fixel::shading::Gouraud;
+    use fixel::surface::BandDraw;
+    let (w, h, rows) = (24u32, 40u32, 4u32);
+    let vp = Viewport::new(0, 0, w, h).expect("a viewport");
+    let draw = ShadedDraw::<_, Exact, NoDepth>::new(Gouraud, vp, Cull::None).expect("a draw");
+    let one = 256 << 16;
+    let p = |x: f32, y: f32| [fixel::math::fx(x), fixel::math::fx(y), Fx::ZERO, Fx::ONE];
+    let tri = [
+        Vertex::new(p(-0.8, -0.9), [one, 0, 0]),
+        Vertex::new(p(0.9, -0.3), [0, one, 0]),
+        Vertex::new(p(-0.2, 0.95), [0, 0, one]),
+    ];
+    let mut whole = [Rgb565::default(); (24 * 40) as usize];
+    let mut frame = Frame::new(&mut whole, w, h).expect("a frame");
+    draw.clip_triangles(&[tri], &mut frame).expect("drawn");
+    let draws: [&dyn BandDraw<Rgb565>; 1] = [&draw];
+    for kept in [0usize, 1, 3] {
+        let mut color = [Rgb565::default(); (24 * 4) as usize];
+        let mut setups = [KeptSetup::EMPTY; 3];
+        let mut bands = BandRenderer::new(&mut color, w, rows, h)
+            .expect("bands")
+            .with_setup_cache(&mut setups[..kept]);
+        let mut ranges = [BandRange::EMPTY; 1];
+        let (mut projected, mut got) = (0, Vec::new());
+        bands
+            .render_spans(
+                &draws,
+                &mut [],
+                &mut ranges,
+                Rgb565::default(),
+                |sink| {
+                    if sink.wants(0) {
+                        projected += usize::from(!sink.fresh());
+                        draw.project(&tri, &mut |s| sink.push(0, 0, s));
+                    }
+                },
+                |band| {
+                    got.extend_from_slice(band.pixels());
+                    Ok::<(), core::convert::Infallible>(())
+                },
+            )
+            .expect("a frame");
+        assert!(got[..] == whole[..], "{kept} kept");
+        let met = (0..h / rows).filter(|&b| ranges[0].covers(b)).count();
+        if kept == 0 {
+            assert!(projected >= 5 && met == projected, "{projected} of {met}");
+        } else {
+            assert_eq!((projected, met), (1, 1), "{kept} kept");
+        }
+    }
+}

@@ -31,8 +31,14 @@ use crate::Error;
 /// a texture").
 static NO_TEXELS: [Rgb565; 1] = [Rgb565::new(0, 0, 0)];
 
-type RasterFn<'a, C> =
-    fn(&Draw<'a, C>, &ScreenTriangle, &mut dyn RenderTarget<Color = C>, SetupSlot<'_>) -> u32;
+/// Draws a screen triangle, or without one the kept triangle of `slot` (see
+/// [`raster_shaded`]).
+type RasterFn<'a, C> = fn(
+    &Draw<'a, C>,
+    Option<&ScreenTriangle>,
+    &mut dyn RenderTarget<Color = C>,
+    SetupSlot<'_>,
+) -> u32;
 
 /// A ready-to-use draw: mode, texture, viewport and the span loop chosen for them.
 pub struct Draw<'a, C: TargetColor> {
@@ -270,7 +276,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
                 self.mode.cull,
                 self.affine(),
                 &mut |s| {
-                    pixels = pixels.wrapping_add((self.raster)(self, s, target, None));
+                    pixels = pixels.wrapping_add((self.raster)(self, Some(s), target, None));
                 },
             );
         }
@@ -337,7 +343,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         target: &mut dyn RenderTarget<Color = C>,
     ) -> Result<u32, Error> {
         self.check_target(target)?;
-        Ok((self.raster)(self, tri, target, None))
+        Ok((self.raster)(self, Some(tri), target, None))
     }
 
     /// [`screen_triangle`](Self::screen_triangle) for callers that checked the target once.
@@ -346,14 +352,15 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
         tri: &ScreenTriangle,
         target: &mut dyn RenderTarget<Color = C>,
     ) -> u32 {
-        (self.raster)(self, tri, target, None)
+        (self.raster)(self, Some(tri), target, None)
     }
 
     /// [`screen_triangle_checked`](Self::screen_triangle_checked) with the set-up taken
-    /// from, or kept in, a band renderer's cache (`slot`).
+    /// from, or kept in, a band renderer's cache (`slot`); without `tri`, the triangle kept
+    /// in `slot`.
     pub(crate) fn screen_triangle_slot(
         &self,
-        tri: &ScreenTriangle,
+        tri: Option<&ScreenTriangle>,
         target: &mut dyn RenderTarget<Color = C>,
         slot: SetupSlot<'_>,
     ) -> u32 {
@@ -364,7 +371,7 @@ impl<'a, C: TargetColor + 'a> Draw<'a, C> {
 /// The classic path: the built-in shader of `M`, fed the classic varyings.
 fn raster_triangle<'a, M, C>(
     draw: &Draw<'a, C>,
-    tri: &ScreenTriangle,
+    tri: Option<&ScreenTriangle>,
     target: &mut dyn RenderTarget<Color = C>,
     slot: SetupSlot<'_>,
 ) -> u32

@@ -9,7 +9,7 @@
 use super::in_range::{Proven, RangeProof, Unproven};
 use super::interp::{lambda_at, lod_pair};
 use super::setup::{centroid, setup, setup_inline};
-use super::setup_cache::SetupSlot;
+use super::setup_cache::{Resume, SetupSlot};
 use super::span::{inline_short_path, span, span_short, DepthBound, Scratch, SpanCtx};
 use super::stages::{DepthStage, ProjKind, Projection, ProjectionStage};
 use super::target::{RenderTarget, Rows};
@@ -135,13 +135,18 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage, C: TargetColor, K: RangeProof
 
 /// Rasterizes `tri` with `shader` into `target`; `varyings` maps a vertex's varyings to the
 /// shader's. Returns the pixels written.
+///
+/// Without `tri`, draws the triangle a band renderer kept in `slot` (a
+/// [`KeptSetup::resumable`](super::KeptSetup) entry, see
+/// [`setup_cache`](super::setup_cache)): the same pixels as with its screen triangle, from
+/// the entry alone. A `slot` that holds a set-up also receives what resuming needs.
 pub(crate) fn raster_shaded<S, P, D, C, const N: usize>(
     shader: &S,
-    tri: &ScreenTriangle<N>,
+    tri: Option<&ScreenTriangle<N>>,
     varyings: impl Fn(&[i32; N]) -> S::Varyings,
     params: &RasterParams,
     target: &mut dyn RenderTarget<Color = C>,
-    slot: SetupSlot<'_>,
+    mut slot: SetupSlot<'_>,
 ) -> u32
 where
     S: Shader,
@@ -163,59 +168,110 @@ where
     if clip.is_empty() {
         return 0;
     }
-    let mut vary = [
-        varyings(&tri[0].varyings),
-        varyings(&tri[1].varyings),
-        varyings(&tri[2].varyings),
-    ];
-    let triangle = shader.triangle(&mut vary);
     let kind = match P::KIND {
         ProjKind::Dynamic => params.kind,
         k => k,
     };
-    let pos = tri.map(|v| {
-        let (x, y) = v.attr_position();
-        (x, y, v.z, v.w)
-    });
     // Kept where the call writes it and lent to the span loop (see `setup`, which also takes
     // it from, or keeps it in, a band renderer's cache: `slot`).
-    // Inlined into the mesh draws (see `setup_inline`), shared by the others.
-    macro_rules! set_up {
-        ($f:ident) => {
-            $f(
-                pos,
-                &vary,
-                vp,
-                kind,
-                D::TEST,
-                S::TEXCOORDS,
-                params.budget,
-                slot,
-            )
-        };
+    let built;
+    let rest;
+    match tri {
+        // A kept triangle, drawn from its entry.
+        None => {
+            let Some(entry) = slot else {
+                return 0;
+            };
+            built = entry.load::<S::Varyings>();
+            rest = match entry.resume::<S>() {
+                Some(r) => r,
+                None => return 0,
+            };
+        }
+        Some(tri) => {
+            let mut vary = [
+                varyings(&tri[0].varyings),
+                varyings(&tri[1].varyings),
+                varyings(&tri[2].varyings),
+            ];
+            let triangle = shader.triangle(&mut vary);
+            let pos = tri.map(|v| {
+                let (x, y) = v.attr_position();
+                (x, y, v.z, v.w)
+            });
+            // Inlined into the mesh draws (see `setup_inline`), shared by the others.
+            macro_rules! set_up {
+                ($f:ident) => {
+                    $f(
+                        pos,
+                        &vary,
+                        vp,
+                        kind,
+                        D::TEST,
+                        S::TEXCOORDS,
+                        params.budget,
+                        slot.as_deref_mut(),
+                    )
+                };
+            }
+            built = if inline_short_path::<S, P, D>() && !crate::math::ARMV6M {
+                set_up!(setup_inline)
+            } else {
+                set_up!(setup)
+            };
+            // By reference: bound by value, the set-up is copied out of the `Option`.
+            let Some(setup) = &built else {
+                return 0;
+            };
+            let mut tri_lambda = 0;
+            if let Some((a, b)) = lod_pair::<S>() {
+                if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
+                    let (cx, cy) = centroid(&pos, vp);
+                    tri_lambda = lambda_at(setup, cx, cy, a, b);
+                }
+            }
+            let corners = [
+                (tri[0].x, tri[0].y),
+                (tri[1].x, tri[1].y),
+                (tri[2].x, tri[2].y),
+            ];
+            rest = Resume {
+                corners,
+                triangle,
+                lambda: tri_lambda,
+                proven: range_known::<S, P, D>(shader, &vary, setup, &corners),
+            };
+            if let Some(entry) = slot {
+                entry.keep_rest::<S>(&rest);
+            }
+        }
     }
-    let built = if inline_short_path::<S, P, D>() && !crate::math::ARMV6M {
-        set_up!(setup_inline)
-    } else {
-        set_up!(setup)
-    };
-    // By reference: bound by value, the set-up is copied out of the `Option`.
     let Some(setup) = &built else {
         return 0;
     };
-    let mut tri_lambda = 0;
-    if let Some((a, b)) = lod_pair::<S>() {
-        if S::LOD && shader.lod_granularity() == LodGranularity::Triangle {
-            let (cx, cy) = centroid(&pos, vp);
-            tri_lambda = lambda_at(setup, cx, cy, a, b);
-        }
-    }
+    draw_set_up::<S, P, D, C>(shader, setup, &rest, kind, params, clip, target)
+}
+
+/// The raster of a set-up triangle (`setup`, and `rest`: corners, the shader's data, level
+/// of detail, range proof) within `clip`; the pixels written.
+#[inline(always)]
+fn draw_set_up<S, P, D, C>(
+    shader: &S,
+    setup: &TriSetup<S::Varyings>,
+    rest: &Resume<S::Triangle>,
+    kind: ProjKind,
+    params: &RasterParams,
+    clip: Rect,
+    target: &mut dyn RenderTarget<Color = C>,
+) -> u32
+where
+    S: Shader,
+    P: ProjectionStage,
+    D: DepthStage,
+    C: TargetColor,
+{
+    let (corners, triangle, tri_lambda) = (rest.corners, rest.triangle, rest.lambda);
     let floor = target.depth_floor();
-    let corners = [
-        (tri[0].x, tri[0].y),
-        (tri[1].x, tri[1].y),
-        (tri[2].x, tri[2].y),
-    ];
     // Meshes of small triangles skip the row loop's clamp for triangles within the clip's
     // columns (not on ARMv6-M: there the band scenes lose a little; measure with
     // `cargo xtask mcu`).
@@ -270,9 +326,7 @@ where
     // A match on the constant, so that a shader without a range-checked varying does not
     // even instantiate `InRange` (the compiler collects only the reachable arm).
     let (pixels, mut lowest) = match S::RANGE_VARYING {
-        Some(_) if range_known::<S, P, D>(shader, &vary, setup, &corners) => {
-            draw_with!(Proven)
-        }
+        Some(_) if rest.proven => draw_with!(Proven),
         _ => draw_with!(Unproven),
     };
     if inline_short_path::<S, P, D>() && pixels != 0 {

@@ -11,10 +11,16 @@
 //!
 //! A kept set-up is a copy of the one the triangle would build, so the pixels are the same
 //! with or without it.
+//!
+//! An entry may also hold what the rest of the triangle's raster needs besides its set-up
+//! (corners, the shader's per-triangle data, the level of detail and the range proof:
+//! [`KeptSetup::resumable`]): the next band then draws the triangle from the entry alone,
+//! without projecting it again.
 
 use super::tri_setup::TriSetup;
+use crate::raster::first_row_at_or_below;
 use crate::raster::Plane;
-use crate::shading::Varyings;
+use crate::shading::{Shader, Varyings};
 
 /// Varyings a [`KeptSetup`] holds at most: shaders with more always build their set-up.
 pub const KEPT_VARYINGS: usize = 4;
@@ -23,7 +29,7 @@ pub const KEPT_VARYINGS: usize = 4;
 /// zeroed in place rather than copied from a template).
 const NONE: u8 = 0;
 
-/// One raster set-up kept across bands, 88 bytes on 32-bit targets. `Default` and
+/// One raster set-up kept across bands, 100 bytes on 32-bit targets. `Default` and
 /// [`KeptSetup::EMPTY`] are an empty entry (all zero bits); give a band renderer an array
 /// of them.
 #[derive(Clone, Copy, Debug)]
@@ -37,14 +43,40 @@ pub struct KeptSetup {
     pub(crate) draw: u8,
     /// Varyings held plus one, or [`NONE`].
     held: u8,
-    affine: bool,
-    px_ref: i32,
-    py_ref: i32,
+    /// [`AFFINE`], [`RESUMABLE`], [`PROVEN`].
+    flags: u8,
+    /// The reference pixel (in the viewport, so within `i16`; a set-up whose reference
+    /// is not is not kept).
+    px_ref: i16,
+    py_ref: i16,
     z: Plane,
     q: Plane,
     at_ref: [i32; KEPT_VARYINGS],
     dx: [i32; KEPT_VARYINGS],
     dy: [i32; KEPT_VARYINGS],
+    /// The screen triangle's corners (`x, y` in sub-pixel units), when resumable.
+    corners: [i16; 6],
+    /// The shader's per-triangle data ([`Shader::pack_triangle`]), when resumable.
+    tri: u32,
+}
+
+/// `flags`: the planes are affine.
+const AFFINE: u8 = 1;
+/// `flags`: the entry holds what [`KeptSetup::resume`] returns.
+const RESUMABLE: u8 = 2;
+/// `flags`: the triangle's range-checked varying is proven in range.
+const PROVEN: u8 = 4;
+
+/// What a band needs to draw a kept triangle without its screen triangle: corners
+/// (sub-pixel units), the shader's per-triangle data, its level of detail (Q8.8; only a
+/// triangle whose level is 0 is kept resumable, so an entry needs no room for it) and
+/// whether its range-checked varying is proven in range.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Resume<T> {
+    pub corners: [(i32, i32); 3],
+    pub triangle: T,
+    pub lambda: i32,
+    pub proven: bool,
 }
 
 impl Default for KeptSetup {
@@ -60,7 +92,7 @@ impl KeptSetup {
         band: 0,
         draw: 0,
         held: NONE,
-        affine: false,
+        flags: 0,
         px_ref: 0,
         py_ref: 0,
         z: Plane {
@@ -76,6 +108,8 @@ impl KeptSetup {
         at_ref: [0; KEPT_VARYINGS],
         dx: [0; KEPT_VARYINGS],
         dy: [0; KEPT_VARYINGS],
+        corners: [0; 6],
+        tri: 0,
     };
 
     /// Whether the entry holds a set-up with `V`'s number of varyings.
@@ -97,23 +131,82 @@ impl KeptSetup {
         dx.as_mut_slice().copy_from_slice(self.dx.get(..V::N)?);
         dy.as_mut_slice().copy_from_slice(self.dy.get(..V::N)?);
         Some(TriSetup {
-            px_ref: self.px_ref,
-            py_ref: self.py_ref,
+            px_ref: i32::from(self.px_ref),
+            py_ref: i32::from(self.py_ref),
             z: self.z,
             q: self.q,
             at_ref,
             dx,
             dy,
-            affine: self.affine,
+            affine: self.flags & AFFINE != 0,
         })
+    }
+
+    /// Whether the entry holds a set-up and what [`resume`](Self::resume) returns.
+    #[inline]
+    pub(crate) fn resumable(&self) -> bool {
+        self.held != NONE && self.flags & RESUMABLE != 0
+    }
+
+    /// The rest of a resumable entry's triangle (see [`Resume`]), for shader `S`.
+    #[inline]
+    pub(crate) fn resume<S: Shader>(&self) -> Option<Resume<S::Triangle>> {
+        if !self.resumable() {
+            return None;
+        }
+        let c = self.corners.map(i32::from);
+        Some(Resume {
+            corners: [(c[0], c[1]), (c[2], c[3]), (c[4], c[5])],
+            triangle: S::unpack_triangle(self.tri)?,
+            lambda: 0,
+            proven: self.flags & PROVEN != 0,
+        })
+    }
+
+    /// Adds to an entry that holds a set-up the rest of its triangle: it becomes
+    /// resumable when the shader packs its per-triangle data ([`Shader::pack_triangle`])
+    /// and the corners fit `i16`.
+    #[inline]
+    pub(crate) fn keep_rest<S: Shader>(&mut self, rest: &Resume<S::Triangle>) {
+        self.flags &= !(RESUMABLE | PROVEN);
+        if self.held == NONE || rest.lambda != 0 {
+            return;
+        }
+        let Some(bits) = S::pack_triangle(&rest.triangle) else {
+            return;
+        };
+        if S::unpack_triangle(bits).is_none() {
+            return;
+        }
+        let mut corners = [0i16; 6];
+        for (k, &(x, y)) in rest.corners.iter().enumerate() {
+            match (i16::try_from(x), i16::try_from(y)) {
+                (Ok(x), Ok(y)) => (corners[2 * k], corners[2 * k + 1]) = (x, y),
+                _ => return,
+            }
+        }
+        (self.corners, self.tri) = (corners, bits);
+        self.flags |= RESUMABLE | if rest.proven { PROVEN } else { 0 };
+    }
+
+    /// The pixel rows `r0..r1` (`r1` excluded) a resumable entry's triangle draws, as
+    /// the band renderer's bins count them.
+    #[inline]
+    pub(crate) fn rows(&self) -> (i32, i32) {
+        let y = [self.corners[1], self.corners[3], self.corners[5]].map(i32::from);
+        let (top, bot) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+        (first_row_at_or_below(top), first_row_at_or_below(bot))
     }
 
     /// Keeps `setup` (`None`, a triangle that builds none, or too many varyings: empties
     /// the entry).
     #[inline]
     pub(crate) fn store<V: Varyings>(&mut self, setup: Option<&TriSetup<V>>) {
-        self.held = NONE;
+        (self.held, self.flags) = (NONE, 0);
         let Some(s) = setup.filter(|_| V::N <= KEPT_VARYINGS) else {
+            return;
+        };
+        let (Ok(px_ref), Ok(py_ref)) = (i16::try_from(s.px_ref), i16::try_from(s.py_ref)) else {
             return;
         };
         for (to, from) in [
@@ -125,14 +218,15 @@ impl KeptSetup {
                 *t = *f;
             }
         }
-        (self.px_ref, self.py_ref, self.z, self.q, self.affine) =
-            (s.px_ref, s.py_ref, s.z, s.q, s.affine);
+        (self.px_ref, self.py_ref, self.z, self.q) = (px_ref, py_ref, s.z, s.q);
+        self.flags = if s.affine { AFFINE } else { 0 };
         self.held = V::N as u8 + 1;
     }
 
     /// Marks the entry empty.
     pub(crate) fn clear(&mut self) {
         self.held = NONE;
+        self.flags = 0;
     }
 
     /// Whether the entry holds a set-up.
@@ -165,8 +259,8 @@ mod tests {
             dy: seed ^ k,
         };
         TriSetup {
-            px_ref: seed,
-            py_ref: seed.wrapping_neg(),
+            px_ref: seed % 4096,
+            py_ref: (seed % 4096).wrapping_neg(),
             z: plane(1),
             q: plane(2),
             at_ref: core::array::from_fn(|i| seed.wrapping_add(i as i32)),
@@ -198,6 +292,50 @@ mod tests {
             k.store(Some(&s0));
             assert!(same(&k.load::<[i32; 0]>().unwrap(), &s0));
         }
+    }
+
+    #[test]
+    fn a_reference_pixel_past_i16_is_not_kept() {
+        let mut k = KeptSetup::default();
+        let mut s = sample::<3>(7);
+        s.px_ref = 40_000;
+        k.store(Some(&s));
+        assert!(k.load::<[i32; 3]>().is_none());
+    }
+
+    #[test]
+    fn an_entry_is_resumable_only_with_all_of_its_triangle() {
+        use crate::shading::TexTriangle;
+        use crate::texture::{Bilinear, Repeat};
+        type Tex = crate::shading::ModulateIntensity<'static, Bilinear, Repeat, Repeat>;
+        let rest = |corners: [(i32, i32); 3], shift: u8, lambda: i32| Resume {
+            corners,
+            triangle: TexTriangle { shift },
+            lambda,
+            proven: true,
+        };
+        let corners = [(5, -7), (300, 16), (-32768, 32767)];
+        let mut k = KeptSetup::default();
+        // No set-up held: nothing to resume.
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        assert!(!k.resumable());
+        k.store(Some(&sample::<3>(9)));
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        let r = k.resume::<Tex>().unwrap();
+        assert_eq!(
+            (r.corners, r.triangle.shift, r.lambda, r.proven),
+            (corners, 3, 0, true)
+        );
+        assert_eq!(k.rows(), (0, 2048));
+        // A corner past i16, or a level of detail, is not kept: the entry keeps its set-up.
+        k.keep_rest::<Tex>(&rest([(0, 0), (1 << 15, 0), (0, 1)], 3, 0));
+        assert!(!k.resumable() && k.load::<[i32; 3]>().is_some());
+        k.keep_rest::<Tex>(&rest(corners, 3, 256));
+        assert!(!k.resumable());
+        // A new set-up is not resumable until its triangle is kept too.
+        k.keep_rest::<Tex>(&rest(corners, 3, 0));
+        k.store(Some(&sample::<3>(10)));
+        assert!(!k.resumable());
     }
 
     #[test]

@@ -224,7 +224,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
     where
         S: Shader<Varyings = [i32; N]>,
     {
-        self.raster_slot(tri, target, None)
+        self.raster_slot(Some(tri), target, None)
     }
 
     /// Draws one screen triangle into a checked target, the set-up taken from, or kept in,
@@ -232,7 +232,7 @@ impl<S: Shader, P: ProjectionStage, D: DepthStage> ShadedDraw<S, P, D> {
     #[inline]
     pub(crate) fn raster_slot<const N: usize, C: TargetColor>(
         &self,
-        tri: &ScreenTriangle<N>,
+        tri: Option<&ScreenTriangle<N>>,
         target: &mut dyn RenderTarget<Color = C>,
         slot: SetupSlot<'_>,
     ) -> u32

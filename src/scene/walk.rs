@@ -165,6 +165,12 @@ pub trait TriangleOut {
     /// everything): a whole-frame draw. The walker then skips a run of triangles that
     /// the mesh's baked face planes cull in a loop of its own, without asking for each.
     const WANTS_EVERY: bool = false;
+    /// [`WANTS_EVERY`](Self::WANTS_EVERY) known at run time: true for a pass that wants
+    /// every triangle, knows none to pass the cull and has the whole window (a band
+    /// renderer's binning pass), so the walker may skip runs of culled triangles there too.
+    fn wants_every(&self) -> bool {
+        Self::WANTS_EVERY
+    }
     /// Whether triangle `id` is needed (checked before any of its vertices is touched).
     fn wants(&self, id: usize) -> bool;
     /// The first id in `id..end` that is wanted, or `end` (ids are then skipped without
@@ -347,7 +353,7 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut, G: VertexUv>(
         // With baked planes a culled triangle reads nothing else, not even its indices.
         if !known && baked.is_some_and(|(f, m)| planes.get(t).is_some_and(|p| f.culls_plane(p, m)))
         {
-            if O::WANTS_EVERY && SKIP_RUNS {
+            if SKIP_RUNS && out.wants_every() {
                 if let Some((f, m)) = baked {
                     // The rest of the run of culled triangles, out of line (half of a
                     // closed mesh faces away, in long runs).
@@ -674,6 +680,10 @@ pub fn mesh_to_sink<C: TargetColor, G: VertexUv>(
             self.sink.window()
         }
         fn fresh(&self) -> bool {
+            self.sink.fresh()
+        }
+        fn wants_every(&self) -> bool {
+            // The binning pass: every id wanted, none known to pass the cull.
             self.sink.fresh()
         }
         fn kept(&self, id: usize) -> bool {

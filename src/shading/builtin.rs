@@ -72,6 +72,16 @@ macro_rules! textured_common {
         fn triangle(&self, v: &mut [Self::Varyings; 3]) -> $crate::shading::TexTriangle {
             self.tex.triangle(v, (0, 1))
         }
+        #[inline(always)]
+        fn pack_triangle(t: &$crate::shading::TexTriangle) -> Option<u32> {
+            Some(u32::from(t.shift))
+        }
+        #[inline(always)]
+        fn unpack_triangle(bits: u32) -> Option<$crate::shading::TexTriangle> {
+            Some($crate::shading::TexTriangle {
+                shift: u8::try_from(bits).ok()?,
+            })
+        }
     };
 }
 pub(crate) use textured_common;
@@ -221,6 +231,14 @@ impl Shader for Gouraud {
     #[inline]
     fn triangle(&self, _: &mut [[i32; 3]; 3]) {}
     #[inline(always)]
+    fn pack_triangle(_: &()) -> Option<u32> {
+        Some(0)
+    }
+    #[inline(always)]
+    fn unpack_triangle(_: u32) -> Option<()> {
+        Some(())
+    }
+    #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 3], ()>) -> Option<u16> {
         let ch = |c: i32, max: u32| ((u32::from(q8(c)) * max + 128) >> 8) as u8;
         let [r, g, b] = f.varyings;
@@ -244,6 +262,14 @@ impl Shader for Flat {
     type Triangle = ();
     #[inline]
     fn triangle(&self, _: &mut [[i32; 0]; 3]) {}
+    #[inline(always)]
+    fn pack_triangle(_: &()) -> Option<u32> {
+        Some(0)
+    }
+    #[inline(always)]
+    fn unpack_triangle(_: u32) -> Option<()> {
+        Some(())
+    }
     #[inline(always)]
     fn shade(&self, _: &Fragment<[i32; 0], ()>) -> Option<u16> {
         Some(self.0)

@@ -281,6 +281,25 @@ pub trait Shader: Copy {
     /// fit `i32` afterwards.
     fn triangle(&self, varyings: &mut [Self::Varyings; 3]) -> Self::Triangle;
 
+    /// [`Shader::triangle`]'s result in 32 bits, for a band renderer that keeps a triangle
+    /// from one band for the next and draws it there without its screen triangle (see
+    /// [`BandRenderer::with_setup_cache`](crate::surface::BandRenderer::with_setup_cache)).
+    /// `None` (the default): such a triangle is projected again in the next band (the same
+    /// pixels, more time). An implementation must give back the same value from
+    /// [`Shader::unpack_triangle`].
+    #[inline(always)]
+    fn pack_triangle(triangle: &Self::Triangle) -> Option<u32> {
+        let _ = triangle;
+        None
+    }
+
+    /// The per-triangle data [`Shader::pack_triangle`] packed, or `None` (the default).
+    #[inline(always)]
+    fn unpack_triangle(bits: u32) -> Option<Self::Triangle> {
+        let _ = bits;
+        None
+    }
+
     /// The colour of one pixel as raw RGB565, or `None` to discard it (the pixel and its
     /// depth are left as they were; a shader that discards must say so in
     /// [`Shader::DISCARDS`], or the depth is written anyway).

@@ -417,10 +417,14 @@ impl<'b, C: TargetColor> BandRenderer<'b, C> {
     /// ([`render_spans`](Self::render_spans), from its bins or re-projecting a mesh per
     /// band). A triangle that crosses a band boundary is drawn in both bands; with this, the
     /// second band takes the set-up the first one built instead of building it again (about 2,900
-    /// instructions on Cortex-M0+, 830 on Cortex-M4F). Each entry holds one triangle
-    /// (88 bytes, shaders of up to [`KEPT_VARYINGS`](crate::pipeline::KEPT_VARYINGS)
-    /// varyings); the first `setups.len()` triangles crossing each boundary are kept. The
-    /// pixels are the same with any length, empty included (the default).
+    /// instructions on Cortex-M0+, 830 on Cortex-M4F). When re-projecting a mesh, an entry
+    /// also keeps the rest of the triangle's raster (its corners, the shader's
+    /// [`pack_triangle`](crate::shading::Shader::pack_triangle)ed data, its range proof), and
+    /// the next band draws the triangle from it without projecting it again. Each entry
+    /// holds one triangle (100 bytes, shaders of up to
+    /// [`KEPT_VARYINGS`](crate::pipeline::KEPT_VARYINGS) varyings); the first
+    /// `setups.len()` triangles crossing each boundary are kept. The pixels are the same
+    /// with any length, empty included (the default).
     ///
     /// ```
     /// use fixel::pipeline::KeptSetup;

@@ -87,6 +87,11 @@ pub trait BandDraw<C: TargetColor>: sealed::Sealed {
         target: &mut dyn RenderTarget<Color = C>,
         slot: Option<&mut KeptSetup>,
     ) -> u32;
+
+    /// Draws the triangle kept in `entry` (a resumable entry this draw filled in an
+    /// earlier band) into `target`, without its screen triangle; returns the pixels written
+    /// (0 for an entry that is not resumable).
+    fn resume_piece(&self, entry: &mut KeptSetup, target: &mut dyn RenderTarget<Color = C>) -> u32;
 }
 
 /// A screen triangle of any varying count from 0 to [`BINNED_VARYINGS`], as stored in a
@@ -239,9 +244,14 @@ impl<C: TargetColor> BandDraw<C> for Draw<'_, C> {
         slot: Option<&mut KeptSetup>,
     ) -> u32 {
         match tri {
-            AnyTriangleRef::V5(t) => self.screen_triangle_slot(t, target, slot),
+            AnyTriangleRef::V5(t) => self.screen_triangle_slot(Some(t), target, slot),
             _ => 0,
         }
+    }
+
+    #[inline]
+    fn resume_piece(&self, entry: &mut KeptSetup, target: &mut dyn RenderTarget<Color = C>) -> u32 {
+        self.screen_triangle_slot(None, target, Some(entry))
     }
 }
 
@@ -271,9 +281,14 @@ where
         slot: Option<&mut KeptSetup>,
     ) -> u32 {
         match <ScreenTriangle<N> as Binnable>::from_any(tri) {
-            Some(t) => self.raster_slot(t, target, slot),
+            Some(t) => self.raster_slot(Some(t), target, slot),
             None => 0,
         }
+    }
+
+    #[inline]
+    fn resume_piece(&self, entry: &mut KeptSetup, target: &mut dyn RenderTarget<Color = C>) -> u32 {
+        self.raster_slot::<N, C>(None, target, Some(entry))
     }
 }
 

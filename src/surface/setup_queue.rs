@@ -10,7 +10,13 @@
 //! reads only what the band above it kept.
 //!
 //! With `n` entries the first `n` triangles crossing each band boundary (in id order) skip
-//! their second set-up; the ring costs 88 bytes per entry and nothing when empty.
+//! their second set-up; the ring costs 100 bytes per entry and nothing when empty.
+//!
+//! An entry that also holds the rest of its triangle's raster
+//! ([`KeptSetup::resumable`]) need not even be met again: the next band draws it from the
+//! queue ([`SetupQueue::resume_before`]) when the geometry pushes a later triangle, or at
+//! the end of the band, so in the same order as the walk would, and the band renderer ends
+//! the triangle's band range so the geometry skips it.
 
 use crate::pipeline::{KeptSetup, SetupSlot};
 
@@ -109,6 +115,56 @@ impl<'s> SetupQueue<'s> {
             return Some(entry);
         }
         None
+    }
+}
+
+impl SetupQueue<'_> {
+    /// Draws what the band above kept resumable for the screen triangles before `key`
+    /// (every one with `None`), in key order, through `draw`; returns the pixels `draw`
+    /// counted. An entry whose triangle goes on below row `end` (this band's end,
+    /// excluded) moves to the tail for the next band; the others are freed, as is what
+    /// the band above kept without the rest of its triangle (that triangle was not drawn in
+    /// this band before `key`, so its set-up is not wanted any more).
+    ///
+    /// Resuming draws a triangle exactly as its screen triangle would in this band: the
+    /// entry holds its set-up and the rest of its raster, and a triangle the band above
+    /// kept goes on into this band (its rows end below the band above's).
+    pub(super) fn resume_before(
+        &mut self,
+        key: Option<u32>,
+        end: i32,
+        mut draw: impl FnMut(&mut KeptSetup) -> u32,
+    ) -> u32 {
+        let above = self.band.wrapping_sub(1);
+        let mut pixels = 0u32;
+        while self.state.len > 0 {
+            let from = self.state.head;
+            let h = &self.slots[from];
+            if h.band == self.band || key.is_some_and(|k| h.band == above && h.key >= k) {
+                break;
+            }
+            let resume = h.band == above && h.resumable();
+            let goes_on = resume && h.rows().1 > end;
+            self.pop();
+            if !resume {
+                continue;
+            }
+            let entry = if goes_on {
+                // Moved to the tail (the same place when the ring is full).
+                let to = self.at(self.state.len);
+                if to != from {
+                    self.slots[to] = self.slots[from];
+                }
+                self.state.len += 1;
+                let entry = &mut self.slots[to];
+                entry.band = self.band;
+                entry
+            } else {
+                &mut self.slots[from]
+            };
+            pixels = pixels.saturating_add(draw(entry));
+        }
+        pixels
     }
 }
 

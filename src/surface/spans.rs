@@ -10,10 +10,11 @@
 //! geometry asks [`MeshSink::next_wanted`] for the next triangle that meets the band, a
 //! scan of the ranges). With 8-row bands a small triangle is
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
-//! instead of one per band; with [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache) the raster set-up of a
-//! triangle crossing into the next band is built once for both (on Cortex-M0+ that saves
-//! about 9 % of the benchmark sphere in bands, which then costs about 1.2 times the whole
-//! frame; measure with `cargo xtask mcu`).
+//! instead of one per band; with [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache) a triangle crossing
+//! into the next band is set up once for both, and the next band draws it from the kept
+//! set-up without projecting it again (the benchmark sphere in bands, fastest mode:
+//! Cortex-M4F 193.8 instructions per pixel against 141.5 whole, Cortex-M0+ 404.7 against
+//! 324.3, RV32IMC 247.1 against 192.2; measure with `cargo xtask mcu`).
 //!
 //! Ladder of storage (same pixels on every rung, tested):
 //!
@@ -28,13 +29,13 @@
 //! Storage (bytes; 32-bit targets): a screen triangle in `bins` 168, a [`BandRange`] 2, a
 //! prepared vertex of the walker's cache ([`crate::scene::CachedVertex`]) 32, a kept set-up
 //! ([`KeptSetup`](crate::pipeline::KeptSetup), optional, see
-//! [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache)) 88, plus 512 on the stack for the per-band id
+//! [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache)) 100, plus 512 on the stack for the per-band id
 //! windows. For a 320 x 8 band with 16-bit depth (10,240):
 //!
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
 //! |---|---:|---|---:|---:|
-//! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 88 = 1,408 | 19.2 KB |
-//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 36 x 88 = 3,168 | 23.4 KB |
+//! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 100 = 1,600 | 21.1 KB |
+//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 31 x 100 = 3,100 | 23.3 KB |
 //! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
 //! | any | n | bins | 168 per screen triangle | |
 //!
@@ -140,7 +141,9 @@ pub(super) enum Pass<'s, 'f, 'd, C: TargetColor> {
         window: (usize, usize),
         draws: &'s [&'d dyn BandDraw<C>],
         band: &'s mut Frame<'f, C>,
-        ranges: &'s [BandRange],
+        /// The band ranges; in a serial frame a triangle kept whole for the next band ends
+        /// its range here.
+        ranges: BandRanges<'s>,
         /// Band index, saturated at 254 as the ranges are.
         index: u8,
         pixels: u32,
@@ -149,7 +152,33 @@ pub(super) enum Pass<'s, 'f, 'd, C: TargetColor> {
         /// The last id pushed and the index of its last screen triangle (clipped pieces),
         /// for the set-up keys.
         last: (usize, u32),
+        /// Whether every screen triangle of the last id that goes on below the band is
+        /// kept resumable (the next band then draws them from the set-up cache, and need
+        /// not project the triangle).
+        whole: bool,
     },
+}
+
+/// The band ranges as a band pass sees them.
+pub(super) enum BandRanges<'s> {
+    /// Read only: the bands are shared between cores, so a band cannot count on the one
+    /// above it having run on the same core (nothing kept is resumed across them).
+    Read(&'s [BandRange]),
+    /// One core draws every band in order: a triangle kept whole for the next band (see
+    /// [`SetupQueue::resume_before`]) ends its range in the band that kept it, so the
+    /// geometry skips it afterwards.
+    End(&'s mut [BandRange]),
+}
+
+impl BandRanges<'_> {
+    /// The ranges, one per triangle id.
+    #[inline(always)]
+    fn all(&self) -> &[BandRange] {
+        match self {
+            BandRanges::Read(r) => r,
+            BandRanges::End(r) => r,
+        }
+    }
 }
 
 /// Per group of bands, the lowest and highest triangle id that meets it (so a band pass
@@ -227,9 +256,10 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     pub fn wants(&self, id: usize) -> bool {
         match &self.pass {
             Pass::Bin { .. } => true,
-            Pass::Band { ranges, index, .. } => {
-                ranges.get(id).is_none_or(|r| r.covers_saturated(*index))
-            }
+            Pass::Band { ranges, index, .. } => ranges
+                .all()
+                .get(id)
+                .is_none_or(|r| r.covers_saturated(*index)),
         }
     }
 
@@ -241,6 +271,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
         match &self.pass {
             Pass::Bin { .. } => id,
             Pass::Band { ranges, index, .. } => {
+                let ranges = ranges.all();
                 let stop = end.min(ranges.len());
                 let Some(stored) = ranges.get(id..stop) else {
                     return id; // past the stored ranges (or at the end)
@@ -260,7 +291,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
     pub fn binned(&self, id: usize) -> bool {
         match &self.pass {
             Pass::Bin { .. } => false,
-            Pass::Band { ranges, .. } => ranges.get(id).is_some_and(|r| !r.is_empty()),
+            Pass::Band { ranges, .. } => ranges.all().get(id).is_some_and(|r| !r.is_empty()),
         }
     }
 
@@ -322,9 +353,12 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
             Pass::Band {
                 draws,
                 band,
+                ranges,
+                index,
                 pixels,
                 setups,
                 last,
+                whole,
                 ..
             } => {
                 // Which of the id's screen triangles this is, counted before any skip so
@@ -332,25 +366,95 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 let piece = if last.0 == id {
                     last.1.wrapping_add(1)
                 } else {
+                    end_range_if_kept(ranges, *last, *whole, *index);
+                    *whole = true;
                     0
                 };
                 *last = (id, piece);
+                let key = setup_queue::key(id, piece);
                 // Rows r0..r1 against the band's first..end (both ends excluded): a
                 // triangle that only touches the band's edge costs no set-up.
                 let (first, end) = band.row_range();
                 let (r0, r1) = rows_of(tri);
+                // What the band above kept for the triangles before this one, in order.
+                if key.is_some() {
+                    *pixels = pixels.saturating_add(resume(draws, setups, band, key, end));
+                }
+                let goes_on = r1 > end;
                 if r1 <= first || r0 >= end || r1 <= r0 {
+                    *whole &= !goes_on;
                     return;
                 }
                 if let Some(d) = draws.get(usize::from(draw)) {
                     // Kept while the triangle goes on below this band.
-                    let slot = match setup_queue::key(id, piece) {
-                        Some(key) => setups.slot(key, draw, r1 > end),
+                    let mut slot = match key {
+                        Some(key) => setups.slot(key, draw, goes_on),
                         None => None,
                     };
-                    *pixels = pixels.saturating_add(d.draw_piece(tri.as_any(), *band, slot));
+                    let drawn = d.draw_piece(tri.as_any(), *band, slot.as_deref_mut());
+                    *pixels = pixels.saturating_add(drawn);
+                    *whole &= !goes_on || slot.is_some_and(|e| e.resumable());
+                } else {
+                    *whole &= !goes_on;
                 }
             }
+        }
+    }
+}
+
+/// Draws, through their draws, what the band above kept resumable for the screen
+/// triangles before `key` (all of them with `None`); the pixels written.
+fn resume<C: TargetColor>(
+    draws: &[&dyn BandDraw<C>],
+    setups: &mut SetupQueue<'_>,
+    band: &mut Frame<'_, C>,
+    key: Option<u32>,
+    end: i32,
+) -> u32 {
+    setups.resume_before(key, end, |e| match draws.get(usize::from(e.draw)) {
+        Some(d) => d.resume_piece(e, band),
+        None => 0,
+    })
+}
+
+/// Ends the band range of triangle `last.0` at band `index` when every screen triangle
+/// of it that goes on below the band is kept resumable (`whole`): the next bands draw
+/// them from the set-up cache, and the geometry need not project the triangle again.
+#[inline(always)]
+fn end_range_if_kept(ranges: &mut BandRanges<'_>, last: (usize, u32), whole: bool, index: u8) {
+    let BandRanges::End(ranges) = ranges else {
+        return;
+    };
+    if !whole || index >= LAST_BAND as u8 {
+        return;
+    }
+    if let Some(r) = ranges.get_mut(last.0) {
+        if r.covers_saturated(index) {
+            r.end = index + 1;
+        }
+    }
+}
+
+impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
+    /// Ends a band pass: the last triangle's range (see [`end_range_if_kept`]), then what
+    /// the band above kept and this band has not drawn yet.
+    pub(super) fn finish_band(&mut self) {
+        if let Pass::Band {
+            draws,
+            band,
+            ranges,
+            index,
+            pixels,
+            setups,
+            last,
+            whole,
+            ..
+        } = &mut self.pass
+        {
+            end_range_if_kept(ranges, *last, *whole, *index);
+            *last = (usize::MAX, 0);
+            let end = band.row_range().1;
+            *pixels = pixels.saturating_add(resume(draws, setups, band, None, end));
         }
     }
 }
@@ -463,11 +567,12 @@ mod tests {
                     window: (0, usize::MAX),
                     draws: &[],
                     band: &mut band,
-                    ranges: &ranges,
+                    ranges: BandRanges::End(&mut ranges),
                     index,
                     pixels: 0,
                     setups: SetupQueue::new(&mut [], QueueState::default(), index),
                     last: (usize::MAX, 0),
+                    whole: false,
                 },
                 attributes: true,
             };

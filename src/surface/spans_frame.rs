@@ -23,7 +23,9 @@ use super::overlap::{BandSender, Blocking};
 use super::overlap_async::AsyncBandSender;
 use super::setup_queue::{self, QueueState, SetupQueue};
 use super::share::BandShare;
-use super::spans::{BandRange, FrameDivisor, MeshSink, Pass, Windows, LAST_BAND, WINDOWS};
+use super::spans::{
+    BandRange, BandRanges, FrameDivisor, MeshSink, Pass, Windows, LAST_BAND, WINDOWS,
+};
 use super::{BandRenderer, Frame, RenderTarget};
 use crate::color::TargetColor;
 use crate::pipeline::KeptSetup;
@@ -73,7 +75,8 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
         geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
     ) -> Result<Self, Error> {
         let mut frame = SpansFrame::empty(draws, rows, height);
-        frame.bin(bins, ranges, geometry)?;
+        frame.bin(bins, &mut *ranges, geometry)?;
+        frame.ranges = ranges;
         Ok(frame)
     }
 
@@ -97,11 +100,13 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
     }
 
     /// The binning pass (see [`new`](Self::new)) into this frame, in place: the frame
-    /// (its id windows are 512 bytes on a 32-bit part) is on the stack once.
+    /// (its id windows are 512 bytes on a 32-bit part) is on the stack once. `ranges` is
+    /// filled but not kept: the caller lends it to the band passes, read only
+    /// ([`SpansFrame::new`]) or to end ranges (one core drawing every band in order).
     fn bin(
         &mut self,
         bins: &'f mut [Binned],
-        ranges: &'f mut [BandRange],
+        ranges: &mut [BandRange],
         mut geometry: impl FnMut(&mut MeshSink<'_, '_, '_, C>),
     ) -> Result<(), Error> {
         if self.draws.len() > usize::from(u8::MAX) + 1 {
@@ -140,9 +145,8 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
         if let Some(e) = check.error() {
             return Err(e);
         }
-        let (bins, ranges): (&'f [Binned], &'f [BandRange]) = (bins, ranges);
+        let bins: &'f [Binned] = bins;
         self.bins = bins.get(..len).unwrap_or(&[]);
-        self.ranges = ranges;
         (self.bins_full, self.ranges_short, self.triangles) = (bins_full, ranges_short, triangles);
         Ok(())
     }
@@ -164,10 +168,12 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
 
     /// Draws band `index` into `band` (cleared): from the bins, or by running `geometry`
     /// for the triangles that meet it. `queue` is the set-up ring's state, handed on from
-    /// band to band. The pixels written.
+    /// band to band; `ranges` the frame's band ranges, as the form drawing the bands lends
+    /// them. The pixels written.
     #[inline(always)]
     fn draw_band(
         &self,
+        ranges: BandRanges<'_>,
         geometry: &mut impl FnMut(&mut MeshSink<'_, '_, '_, C>),
         setups: &mut [KeptSetup],
         queue: &mut QueueState,
@@ -185,16 +191,18 @@ impl<'f, 'd, C: TargetColor> SpansFrame<'f, 'd, C> {
                     },
                     draws: self.draws,
                     band,
-                    ranges: self.ranges,
+                    ranges,
                     index: index.min(LAST_BAND) as u8,
                     pixels: 0,
                     // The band counted modulo 256.
                     setups: SetupQueue::new(&mut *setups, *queue, index as u8),
                     last: (usize::MAX, 0),
+                    whole: false,
                 },
                 attributes: true,
             };
             geometry(&mut s);
+            s.finish_band();
             match s.pass {
                 Pass::Band { pixels, setups, .. } => {
                     *queue = setups.state();
@@ -259,7 +267,7 @@ impl<C: TargetColor> BandRenderer<'_, C> {
     ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
         let mut frame = SpansFrame::empty(draws, self.rows, self.height);
-        frame.bin(bins, ranges, &mut geometry)?;
+        frame.bin(bins, &mut *ranges, &mut geometry)?;
         let mut stats = frame.stats();
         // Lent out of the renderer for the band passes (`each_band` borrows it), emptied:
         // what an earlier frame kept is not this frame's.
@@ -267,7 +275,14 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         setup_queue::clear(setups);
         let mut queue = QueueState::default();
         let result = self.each_band(&mut stats, clear, sender, |band, index| {
-            frame.draw_band(&mut geometry, setups, &mut queue, band, index)
+            frame.draw_band(
+                BandRanges::End(&mut *ranges),
+                &mut geometry,
+                setups,
+                &mut queue,
+                band,
+                index,
+            )
         });
         self.setups = setups;
         result.map_err(BandError::Flush)?;
@@ -338,14 +353,21 @@ impl<C: TargetColor> BandRenderer<'_, C> {
     ) -> Result<BandStats, BandError<S::Error>> {
         self.check_draws(draws)?;
         let mut frame = SpansFrame::empty(draws, self.rows, self.height);
-        frame.bin(bins, ranges, &mut geometry)?;
+        frame.bin(bins, &mut *ranges, &mut geometry)?;
         let mut stats = frame.stats();
         let setups = core::mem::take(&mut self.setups);
         setup_queue::clear(setups);
         let mut queue = QueueState::default();
         let result = self
             .each_band_async(&mut stats, clear, sender, |band, index| {
-                frame.draw_band(&mut geometry, setups, &mut queue, band, index)
+                frame.draw_band(
+                    BandRanges::End(&mut *ranges),
+                    &mut geometry,
+                    setups,
+                    &mut queue,
+                    band,
+                    index,
+                )
             })
             .await;
         self.setups = setups;
@@ -430,7 +452,14 @@ impl<C: TargetColor> BandRenderer<'_, C> {
         setup_queue::clear(setups);
         let mut queue = QueueState::default();
         let result = self.each_band_of(share, &mut stats, clear, sender, |band, index| {
-            frame.draw_band(&mut geometry, setups, &mut queue, band, index)
+            frame.draw_band(
+                BandRanges::Read(frame.ranges),
+                &mut geometry,
+                setups,
+                &mut queue,
+                band,
+                index,
+            )
         });
         self.setups = setups;
         result.map_err(BandError::Flush)?;

@@ -43,16 +43,16 @@ pub const BINS: usize = 16;
 /// Band ranges of the sphere firmware: one per sphere triangle (2 B each, 4.4 KB).
 pub const RANGES: usize = demo::SPHERE_TRIANGLES;
 /// Prepared-vertex cache of the sphere band firmware (32 B each, direct-mapped, kept across
-/// the band passes). 64 entries, 2 KB: the 2 KB that 128 entries took hold 23 more kept
-/// set-ups ([`SETUPS`]), which save more (sphere in bands, M0+: 128 vertices + 12 set-ups
-/// 621.6 instructions per pixel, 64 + 36 589.7; M4F 336.0, 325.3).
+/// the band passes). 64 entries, 2 KB: the 2 KB that 128 entries took hold 20 more kept
+/// set-ups ([`SETUPS`]), which save more. 32 entries cannot hold the front half of two
+/// rings of the sphere (25 vertices each) that consecutive bands share.
 pub const CACHE: usize = 64;
-/// Raster set-ups kept from one band for the next (`BandRenderer::with_setup_cache`, 88 B
+/// Triangles kept from one band for the next (`BandRenderer::with_setup_cache`, 100 B
 /// each, 3.1 KB) in the firmwares that re-project their mesh per band: a triangle that
-/// crosses into the next band is not set up again there. About 50 sphere triangles cross
-/// each band boundary; the first 36 are kept (40: 2 instructions per pixel less on M0+,
-/// 350 B more RAM).
-pub const SETUPS: usize = 36;
+/// crosses into the next band is drawn there from its kept set-up, without being
+/// projected again. Up to 40 sphere triangles cross a band boundary (34 on most); the
+/// first 31 are kept.
+pub const SETUPS: usize = 31;
 /// Pixels in a band buffer.
 pub const BAND_PIXELS: usize = (W * ROWS) as usize;
 

@@ -19,9 +19,9 @@ pub const WATER_TRIANGLES: usize = 288;
 /// Side of the swell height map.
 pub const WAVE_SIDE: u32 = 64;
 
-/// Set-ups kept across bands (88 B each): fewer than the sphere's, the water firmware keeps
+/// Set-ups kept across bands (100 B each): fewer than the sphere's, the water firmware keeps
 /// its displaced mesh in RAM.
-pub const WATER_SETUPS: usize = 20;
+pub const WATER_SETUPS: usize = 17;
 
 /// The band buffers: ranges for the grid's triangles, a 64-entry vertex cache,
 /// [`WATER_SETUPS`] kept set-ups.
