@@ -12,6 +12,7 @@
 
 mod band_counts;
 mod bands;
+mod choose;
 mod cores;
 mod firmware;
 mod qemu;

@@ -404,6 +404,11 @@ pub fn mcu(flags: &McuArgs) -> ExitCode {
                     "realtime",
                     &bands::realtime(&figures),
                 ),
+                bands::write_region(
+                    &root().join("README.md"),
+                    "choose",
+                    &super::choose::table(&figures),
+                ),
             ];
             for r in results {
                 if let Err(e) = r {
