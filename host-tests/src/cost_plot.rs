@@ -1,6 +1,8 @@
 //! The speed-against-error plot of the technique reports: one labelled point per variant,
 //! cost on a log x axis (Cortex-M4F instructions per pixel when every variant has them, else
-//! host ns per pixel), PSNR against the f64 reference on the y axis.
+//! host ns per pixel), PSNR against the f64 reference on the y axis; a line joins the
+//! Pareto front (the variants no other is both cheaper and more accurate than) and the
+//! labels of the variants off it are grey.
 
 use std::path::Path;
 
@@ -15,6 +17,24 @@ pub struct Point {
     pub m4f: Option<f64>,
     /// PSNR against the reference, dB (capped at 60 on the plot).
     pub psnr: f64,
+}
+
+/// Indices of the Pareto front of `points` (cost, quality), cheapest first: the points
+/// that no other point matches or beats in both (cost no higher, quality no worse, one of
+/// them strictly). Quality is better higher when `higher_is_better`, else lower (an error).
+pub fn front(points: &[(f64, f64)], higher_is_better: bool) -> Vec<usize> {
+    let better = |a: f64, b: f64| if higher_is_better { a > b } else { a < b };
+    let no_worse = |a: f64, b: f64| if higher_is_better { a >= b } else { a <= b };
+    let mut on: Vec<usize> = (0..points.len())
+        .filter(|&i| {
+            let (c, q) = points[i];
+            !points.iter().enumerate().any(|(j, &(cj, qj))| {
+                j != i && cj <= c && no_worse(qj, q) && (cj < c || better(qj, q))
+            })
+        })
+        .collect();
+    on.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
+    on
 }
 
 /// Writes the plot of `points` to `path` (900 x 420 PNG) with `title`; the y axis spans
@@ -66,10 +86,22 @@ pub fn write(
             .draw()
             .map_err(|e| e.to_string())?;
         let dy = (psnr_range.1 - psnr_range.0) / 60.0;
+        let on = front(&pts.iter().map(|p| (p.0, p.1)).collect::<Vec<_>>(), true);
+        chart
+            .draw_series(LineSeries::new(
+                on.iter().map(|&i| (pts[i].0, pts[i].1)),
+                BLUE.mix(0.5).stroke_width(2),
+            ))
+            .map_err(|e| e.to_string())?;
         // Labels go right of their point; one that would overlap an earlier label (close
         // in log x and in y) moves below its point, then above.
         let mut placed: Vec<(f64, f64)> = Vec::new();
-        for (x, y, name) in pts {
+        for (k, (x, y, name)) in pts.into_iter().enumerate() {
+            let ink = if on.contains(&k) {
+                BLACK
+            } else {
+                RGBColor(150, 150, 150)
+            };
             chart
                 .draw_series([Circle::new((x, y), 5, BLUE.filled())])
                 .map_err(|e| e.to_string())?;
@@ -87,11 +119,33 @@ pub fn write(
                 .draw_series([Text::new(
                     name.to_string(),
                     (x * 1.03, ly),
-                    ("sans-serif", 12),
+                    ("sans-serif", 12).into_font().color(&ink),
                 )])
                 .map_err(|e| e.to_string())?;
         }
         root.present().map_err(|e| e.to_string())?;
     }
     crate::png_io::write_png_rgb8(path, w, h, &buf).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::front;
+
+    #[test]
+    fn the_front_keeps_only_the_undominated_points() {
+        // (cost, PSNR): the second is dominated by the first, the fourth ties the third's
+        // cost with a worse PSNR.
+        let p = [
+            (10.0, 30.0),
+            (12.0, 29.0),
+            (20.0, 40.0),
+            (20.0, 35.0),
+            (5.0, 20.0),
+        ];
+        assert_eq!(front(&p, true), vec![4, 0, 2]);
+        // As errors (lower is better): the cheapest is also the least wrong here.
+        assert_eq!(front(&p, false), vec![4]);
+        assert!(front(&[], true).is_empty());
+    }
 }

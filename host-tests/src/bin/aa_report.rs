@@ -407,7 +407,24 @@ fn plot(rows: &[Row], path: &Path) -> Result<(), String> {
             .label_style(("sans-serif", 13))
             .draw()
             .map_err(|e| e.to_string())?;
-        for (x, y, name) in pts {
+        // The Pareto front (cheaper or less wrong than every other), joined; the labels
+        // off it grey.
+        let on = host_tests::cost_plot::front(
+            &pts.iter().map(|p| (p.0, p.1)).collect::<Vec<_>>(),
+            false,
+        );
+        chart
+            .draw_series(LineSeries::new(
+                on.iter().map(|&i| (pts[i].0, pts[i].1)),
+                BLUE.mix(0.5).stroke_width(2),
+            ))
+            .map_err(|e| e.to_string())?;
+        for (k, (x, y, name)) in pts.into_iter().enumerate() {
+            let ink = if on.contains(&k) {
+                BLACK
+            } else {
+                RGBColor(150, 150, 150)
+            };
             chart
                 .draw_series([Circle::new((x, y), 5, BLUE.filled())])
                 .map_err(|e| e.to_string())?;
@@ -415,7 +432,7 @@ fn plot(rows: &[Row], path: &Path) -> Result<(), String> {
                 .draw_series([Text::new(
                     name.to_string(),
                     (x * 1.04, y + y1 * 0.02),
-                    ("sans-serif", 12),
+                    ("sans-serif", 12).into_font().color(&ink),
                 )])
                 .map_err(|e| e.to_string())?;
         }

@@ -313,6 +313,16 @@ fn plot(pts: &[Point], path: &std::path::Path) -> Result<(), String> {
             "PCF 2x2 bilinear" => RGBColor(31, 119, 180),
             _ => RGBColor(44, 160, 44),
         };
+        // The Pareto front over every map size and filter (faster or fewer wrong pixels
+        // than every other), joined.
+        let xy: Vec<(f64, f64)> = pts.iter().map(|p| (p.3, p.4)).collect();
+        let on = host_tests::cost_plot::front(&xy, false);
+        chart
+            .draw_series(LineSeries::new(
+                on.iter().map(|&i| xy[i]),
+                BLACK.mix(0.4).stroke_width(2),
+            ))
+            .map_err(|e| e.to_string())?;
         for (light, size, filter, x, y) in pts {
             let c = colour(filter);
             let style = if *light == "spot" {
@@ -341,8 +351,8 @@ fn plot(pts: &[Point], path: &std::path::Path) -> Result<(), String> {
                 .map_err(|e| e.to_string())?;
         }
         root.draw(&Text::new(
-            "filled = directional light, ring = spot light; labels = map size",
-            (w as i32 - 420, h as i32 - 20),
+            "filled = directional light, ring = spot light; labels = map size; line = Pareto front",
+            (w as i32 - 560, h as i32 - 20),
             ("sans-serif", 13),
         ))
         .map_err(|e| e.to_string())?;
