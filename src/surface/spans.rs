@@ -12,9 +12,9 @@
 //! re-projected in one or two bands, so the geometry costs about two whole-frame passes
 //! instead of one per band; with [`BandRenderer::with_setup_cache`](super::BandRenderer::with_setup_cache) a triangle crossing
 //! into the next band is set up once for both, and the next band draws it from the kept
-//! set-up without projecting it again (the benchmark sphere in bands, fastest mode:
-//! Cortex-M4F 193.8 instructions per pixel against 141.5 whole, Cortex-M0+ 404.7 against
-//! 324.3, RV32IMC 247.1 against 192.2; measure with `cargo xtask mcu`).
+//! set-up without projecting it again (the benchmark sphere in bands against the same
+//! frame whole: `sphere_sized` in the README's bands table, written by
+//! `cargo xtask mcu --docs`).
 //!
 //! Ladder of storage (same pixels on every rung, tested):
 //!
