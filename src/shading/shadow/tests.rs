@@ -14,7 +14,7 @@ fn random_map(rng: &mut Rng) -> [u16; 64 * 64] {
     let block = 1 + (rng.next() % 8) as usize;
     let mut level = 0u16;
     for (i, v) in t.iter_mut().enumerate() {
-        if i % block == 0 || rng.next() % 5 == 0 {
+        if i.is_multiple_of(block) || rng.next().is_multiple_of(5) {
             level = (rng.next() >> 48) as u16;
         }
         *v = level;
