@@ -33,11 +33,11 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 const FIRMWARE: [(&str, u32); 7] = [
     ("shadow_light", 0x89313f10),
     ("shadow_none", 0x1d0baf22),
-    ("shadow_single", 0x83480e52),
-    ("shadow_pcf2x2", 0x64fdce8e),
-    ("shadow_pcf3x3", 0xc99e1bf6),
-    ("shadow_spot", 0xfc4d6f32),
-    ("shadow_grazing", 0xfbbd46e7),
+    ("shadow_single", 0xd32ba043),
+    ("shadow_pcf2x2", 0x7ac488c8),
+    ("shadow_pcf3x3", 0x4f3ec924),
+    ("shadow_spot", 0x08120866),
+    ("shadow_grazing", 0x98872624),
 ];
 
 /// The banded firmware frame and the same frame drawn whole: (banded, whole) checksums and

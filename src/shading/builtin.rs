@@ -150,6 +150,13 @@ impl<F: TexSampler, WU: WrapMode, WV: WrapMode> Shader for ModulateIntensity<'_,
         // `q8(i)` for `i` in `0..256 << 16`.
         self.shade_scaled(f, ((f.varyings[2] >> 16) & 0xFF) as u16)
     }
+    /// The intensity times `k`, rounded once: `(q8(i) k + 128) >> 8` (both Q8, at most
+    /// 256), then one modulation of the texel.
+    #[inline(always)]
+    fn shade_dimmed(&self, f: &Fragment<[i32; 3], TexTriangle>, k: u16) -> Option<u16> {
+        let i = (u32::from(q8(f.varyings[2])) * u32::from(k.min(256)) + 128) >> 8;
+        self.shade_scaled(f, i as u16)
+    }
     /// The sampler's own loop over a piece ([`TexSampler::lit_span`]), where it has one.
     #[inline(always)]
     fn shade_piece_rgb565(&self, start: &[i32; 3], slope: &[i32; 3], out: &mut [u16]) -> bool {

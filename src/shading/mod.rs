@@ -317,6 +317,22 @@ pub trait Shader: Copy {
         let _ = dst;
         self.shade(fragment)
     }
+
+    /// [`Shader::shade`] darkened by `k` (Q8, `0..=256`; 256 leaves the colour as it is):
+    /// what a wrapper that dims the light, a shadow ([`shadow::Shadowed`]), asks of the
+    /// shader it wraps. The default multiplies the colour
+    /// ([`modulate_scalar`](crate::color::modulate_scalar), three multiplies); a shader whose
+    /// colour is a light term times a texel scales its light term instead, one multiply and
+    /// one rounding ([`ModulateIntensity`]).
+    #[inline(always)]
+    fn shade_dimmed(
+        &self,
+        fragment: &Fragment<Self::Varyings, Self::Triangle>,
+        k: u16,
+    ) -> Option<u16> {
+        self.shade(fragment)
+            .map(|c| crate::color::modulate_scalar(c, k))
+    }
 }
 
 pub mod alpha;

@@ -59,7 +59,7 @@ impl ShadowFilter for SingleTap {
     fn lit(map: &ShadowMap<'_>, s: i32, t: i32, d: i32) -> u16 {
         // The point is inside the map: no clamp.
         let sh = 20 - map.log2_size();
-        u16::from(d <= i32::from(map.fetch(s >> sh, t >> sh)) << 4) << 8
+        u16::from(d <= i32::from(map.fetch_wrapped(s >> sh, t >> sh)) << 4) << 8
     }
 }
 
@@ -75,7 +75,7 @@ impl ShadowFilter for Pcf2x2 {
         let inner = (1 << map.log2_size()) - 2;
         let [b00, b10, b01, b11] = if (x as u32) <= inner && (y as u32) <= inner {
             // All four taps inside the map: no clamps.
-            let t = |x, y| u32::from(d <= i32::from(map.fetch(x, y)) << 4);
+            let t = |x, y| u32::from(d <= i32::from(map.fetch_wrapped(x, y)) << 4);
             [t(x, y), t(x + 1, y), t(x, y + 1), t(x + 1, y + 1)]
         } else {
             [
@@ -107,7 +107,7 @@ impl ShadowFilter for Pcf3x3 {
             // All nine taps inside the map: no clamps.
             for dy in -1..=1 {
                 for dx in -1..=1 {
-                    n += usize::from(d <= i32::from(map.fetch(x + dx, y + dy)) << 4);
+                    n += usize::from(d <= i32::from(map.fetch_wrapped(x + dx, y + dy)) << 4);
                 }
             }
         } else {

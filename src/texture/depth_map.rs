@@ -140,6 +140,19 @@ impl<'a> ShadowMap<'a> {
             .unwrap_or(DEPTH_CLEAR)
     }
 
+    /// The texel at `(x, y)`, both in `0..size` (other values read some texel of the map:
+    /// never a panic). The index is masked with the map's length (a power of two), so where the
+    /// caller has checked the map is not empty (a shader's `can_draw`) the compiler drops
+    /// the bounds test: the lookup of the filters' inner taps.
+    #[inline(always)]
+    pub fn fetch_wrapped(&self, x: i32, y: i32) -> u16 {
+        let i = ((y << self.log2) | x) as usize;
+        self.texels
+            .get(i & self.texels.len().wrapping_sub(1))
+            .copied()
+            .unwrap_or(DEPTH_CLEAR)
+    }
+
     /// The texel at `(x, y)` clamped to the map's edge (GL's `CLAMP_TO_EDGE`, as a shadow
     /// sampler uses); [`DEPTH_CLEAR`] if the slice is somehow short (never for a checked map).
     #[inline(always)]

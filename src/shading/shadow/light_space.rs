@@ -17,6 +17,11 @@ pub trait LightKind: Copy + core::fmt::Debug + 'static {
     const VARYINGS: usize;
     /// Name for reports.
     const NAME: &'static str;
+    /// True when [`LightKind::project`] inside the frustum returns the first three varyings
+    /// as they are (no divide): a triangle whose three vertices lie inside the frustum then
+    /// has every pixel inside it (the varyings of its pixels lie between its vertices'), and
+    /// the lookup skips the per-pixel frustum test. Default false.
+    const AFFINE: bool = false;
     /// The light-space varyings of model-space point `p` under `m` (light clip from model);
     /// unused trailing entries are 0.
     fn vertex(m: &Mat4, p: Vec3) -> [i32; 4];
@@ -103,6 +108,7 @@ fn depth_q4(r: i32) -> i32 {
 impl LightKind for Directional {
     const VARYINGS: usize = 3;
     const NAME: &'static str = "directional";
+    const AFFINE: bool = true;
     fn vertex(m: &Mat4, p: Vec3) -> [i32; 4] {
         let one = 1i64 << 32;
         let (x, y, z) = (row(m, 0, p), row(m, 1, p), row(m, 2, p));

@@ -101,7 +101,6 @@
 
 use super::pcf::ShadowFilter;
 use super::{Fragment, Shader, Varyings};
-use crate::color::modulate_scalar;
 use crate::math::div_u64;
 use crate::texture::ShadowMap;
 use crate::Error;
@@ -199,12 +198,51 @@ impl Bias {
 /// `d - OWN_SHADE` (saturated to `i32::MAX`).
 const OWN_SHADE: i32 = i32::MIN;
 
+/// How far inside the map (Q12.20) and the depth range (Q16.4) a triangle's vertices must
+/// lie for its pixels to skip the frustum test: 1/16 texel of a 64 x 64 map, far above the
+/// error of the interpolated varyings (the span loop's reciprocal, relative error near
+/// 2^-14, on differences from vertex 0 below 2^21: under 2^7).
+const INSIDE_MARGIN: i32 = 1 << 10;
+
+/// Whether light-space point `p` (`s, t, d`) lies [`INSIDE_MARGIN`] inside the frustum.
+#[inline]
+fn well_inside(p: &[i32; 4]) -> bool {
+    let inner = |v: i32, hi: i32| (INSIDE_MARGIN..=hi - INSIDE_MARGIN).contains(&v);
+    inner(p[0], ST_ONE - 1) && inner(p[1], ST_ONE - 1) && inner(p[2], 65535 * DEPTH_STEP)
+}
+
+/// What [`Shadowed`] keeps per triangle: how its pixels are looked up, decided once.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowTriangle {
+    /// The light varyings of vertex 0: the interpolated ones are differences from them.
+    base: [i32; 4],
+    /// The bias, Q16.4 ([`OWN_SHADE`] for a triangle in its own shade).
+    bias: i32,
+    /// [`LOOKUP`], [`IN_SHADE`] or [`GENERAL`].
+    mode: u8,
+    /// For [`LOOKUP`]: the biased depth of vertex 0, `base[2] - bias` (Q16.4).
+    depth: i32,
+}
+
+/// Every pixel inside the frustum (an affine light, vertices inside by a margin): the
+/// filter directly, the depth rebased on [`ShadowTriangle::depth`].
+const LOOKUP: u8 = 0;
+/// Every pixel inside the frustum and the triangle in its own shade: lit fraction 0.
+const IN_SHADE: u8 = 1;
+/// Anything else: the frustum test per pixel, then the filter.
+const GENERAL: u8 = 2;
+
 /// A shader `S` darkened where the shadow map says its pixel is hidden from the light.
 ///
 /// Varyings: `S`'s, then the light's ([`LightKind::VARYINGS`]): `M` must be their sum (a
-/// compile-time check when the shader is built). The inner shader's colour is multiplied by
+/// compile-time check when the shader is built). The inner shader's light is multiplied by
 /// `dark + (1 - dark) * lit` (`lit` the filter's lit fraction, `dark` the shadow's
-/// brightness, Q8). Per-triangle data: `S`'s and the bias.
+/// brightness, Q8) through [`Shader::shade_dimmed`]: one multiply of the intensity for a
+/// lit texture, of the colour otherwise; a fully lit pixel is the inner shader's colour.
+/// Per-triangle data: `S`'s and a [`ShadowTriangle`], which decides once per triangle
+/// whether its pixels need the frustum test (not for a directional light's triangle wholly
+/// inside the map and depth range) and whether they need the map at all (not for such a
+/// triangle in its own shade).
 ///
 /// ```
 /// use fixel::prelude::*;
@@ -304,9 +342,9 @@ fn light_part<const M: usize>(v: &[i32; M], n: usize) -> [i32; 4] {
 
 impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadowed<'_, S, K, F, M> {
     type Varyings = [i32; M];
-    /// The inner shader's, the bias (Q16.4; `i32::MIN` for a triangle in its own shade),
-    /// and the light varyings of vertex 0 (the interpolated ones are rebased on them).
-    type Triangle = (S::Triangle, i32, [i32; 4]);
+    /// The inner shader's, and the lookup's ([`ShadowTriangle`]: the light varyings of
+    /// vertex 0, the bias, and whether the frustum test or the map can be skipped).
+    type Triangle = (S::Triangle, ShadowTriangle);
     const TEXCOORDS: Option<(usize, usize)> = S::TEXCOORDS;
     const DISCARDS: bool = S::DISCARDS;
     const SMALL: bool = S::SMALL;
@@ -326,7 +364,9 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
 
     #[inline(always)]
     fn can_draw(&self) -> bool {
-        self.inner.can_draw()
+        // A map is never empty (its constructors check); said here, it lets the compiler
+        // drop the bounds test of the filters' inner taps.
+        self.inner.can_draw() && !self.map.texels().is_empty()
     }
 
     fn triangle(&self, v: &mut [[i32; M]; 3]) -> Self::Triangle {
@@ -363,36 +403,68 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
                 }
             }
         }
-        (t, bias, base)
+        // A triangle wholly inside the frustum of an affine light needs no test per pixel;
+        // in its own shade, no lookup either. The biased depth must keep `d + depth` in
+        // `i32` (`|d| < 2^21`): a bias beyond 2^29 takes the general path.
+        let inside = K::AFFINE && light.iter().all(well_inside);
+        let (mode, depth) = if !inside {
+            (GENERAL, 0)
+        } else if bias == OWN_SHADE {
+            (IN_SHADE, 0)
+        } else if (-(1 << 29)..=1 << 29).contains(&bias) {
+            (LOOKUP, base[2] - bias)
+        } else {
+            (GENERAL, 0)
+        };
+        (
+            t,
+            ShadowTriangle {
+                base,
+                bias,
+                mode,
+                depth,
+            },
+        )
     }
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; M], Self::Triangle>) -> Option<u16> {
         let n = <S::Varyings as Varyings>::N;
+        let d = light_part(&f.varyings, n);
+        let tri = f.triangle.1;
+        let lit = match tri.mode {
+            LOOKUP => F::lit(
+                &self.map,
+                d[0].wrapping_add(tri.base[0]),
+                d[1].wrapping_add(tri.base[1]),
+                d[2].wrapping_add(tri.depth),
+            ),
+            IN_SHADE => 0,
+            _ => self.lit(
+                core::array::from_fn(|k| d[k].wrapping_add(tri.base[k])),
+                tri.bias,
+            ),
+        };
         let mut iv = S::Varyings::zero();
         for (a, b) in iv.as_mut_slice().iter_mut().zip(f.varyings.iter()) {
             *a = *b;
         }
-        let c = self.inner.shade(&Fragment {
+        let inner = Fragment {
             varyings: iv,
             x: f.x,
             y: f.y,
             depth: f.depth,
             lambda: f.lambda,
             triangle: f.triangle.0,
-        })?;
-        let d = light_part(&f.varyings, n);
-        let base = f.triangle.2;
-        let lit = self.lit(
-            core::array::from_fn(|k| d[k].wrapping_add(base[k])),
-            f.triangle.1,
-        );
-        Some(if lit >= 256 {
-            c
+        };
+        if lit >= 256 {
+            self.inner.shade(&inner)
         } else {
+            // The inner shader's light times `dark + (1 - dark) lit` (Q8).
             let k = u32::from(self.dark);
-            modulate_scalar(c, (k + (((256 - k) * u32::from(lit)) >> 8)) as u16)
-        })
+            self.inner
+                .shade_dimmed(&inner, (k + (((256 - k) * u32::from(lit)) >> 8)) as u16)
+        }
     }
 }
 
@@ -413,3 +485,6 @@ pub fn with_light<const N: usize, const M: usize>(
         }),
     }
 }
+
+#[cfg(test)]
+mod tests;
