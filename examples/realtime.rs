@@ -13,6 +13,8 @@
 //!   band-limited to 6 octaves); right, the same marble baked into a 256 x 128 texture for
 //!   the sphere's own coordinates (`noise::bake`) and drawn as the textured sphere is (the
 //!   `noise_baked` scene);
+//! * `realtime_wood.png`, `realtime_granite.png`: the same pair for the wood and the granite
+//!   (the `noise_baked_wood` and `noise_baked_granite` scenes);
 //! * `realtime_bump.png`: left, the brick sphere bump-mapped per pixel (`Bumped`, height
 //!   differences, a directional light); right, the same lighting resolved into a 256 x 128
 //!   texture for that light fixed in object space (`bump::resolve_sphere`) and drawn unlit
@@ -28,7 +30,7 @@ use fixel::pipeline::{
 };
 use fixel::scene::{draw_mesh_walked, CachedVertex, DirectionalLight, MeshTransform, SphereMapUvs};
 use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
-use fixel::shading::noise::{bake, BandLimit, Ramps, SolidMesh, SolidShader};
+use fixel::shading::noise::{bake, BandLimit, Pattern, Ramps, SolidMesh, SolidShader};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, ClampToEdge, Repeat, Texture};
 use fixel_scenes as demo;
@@ -126,9 +128,9 @@ fn env(out: &std::path::Path) {
     common::write_png(&out.join("realtime_env.png"), 2 * W, H, &pair(&c, &fast));
 }
 
-fn noise(out: &std::path::Path) {
+/// `pattern` per pixel (left) and baked (right) into `out/name`.
+fn noise(out: &std::path::Path, pattern: impl Pattern, name: &str) {
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
-    let ramps = Ramps::new().expect("ramps");
     let s = demo::sphere();
     let cam = demo::camera(20);
     let model = demo::sphere_model(0);
@@ -150,7 +152,7 @@ fn noise(out: &std::path::Path) {
         .expect("depth");
     f.clear(Rgb565::new(0, 0, 0));
     ShadedDraw::<_, Exact, DepthLess>::new(
-        SolidShader::new(ramps.marble(), BandLimit::new(6)),
+        SolidShader::new(pattern, BandLimit::new(6)),
         vp,
         Cull::Back,
     )
@@ -159,7 +161,7 @@ fn noise(out: &std::path::Path) {
     .expect("drawn");
     let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
     bake(
-        &ramps.marble(),
+        &pattern,
         &BandLimit::new(6),
         &fixel_scenes::noise::baked_sphere_surface(),
         256,
@@ -170,7 +172,7 @@ fn noise(out: &std::path::Path) {
     let tex = Texture::new(&t, 256, 128).expect("texture");
     let draw = Draw::new::<Lit>(Some(tex), vp, Cull::Back).expect("draw");
     let fast = walked(&draw, MeshTransform::new(&model, &cam), true);
-    common::write_png(&out.join("realtime_noise.png"), 2 * W, H, &pair(&c, &fast));
+    common::write_png(&out.join(name), 2 * W, H, &pair(&c, &fast));
 }
 
 fn bump(out: &std::path::Path) {
@@ -252,10 +254,14 @@ fn bump(out: &std::path::Path) {
 fn main() {
     let out = common::out_dir();
     env(&out);
-    noise(&out);
+    let ramps = Ramps::new().expect("ramps");
+    noise(&out, ramps.marble(), "realtime_noise.png");
+    noise(&out, ramps.wood(), "realtime_wood.png");
+    noise(&out, ramps.granite(), "realtime_granite.png");
     bump(&out);
     println!(
-        "wrote realtime_env.png, realtime_noise.png, realtime_bump.png to {}",
+        "wrote realtime_env.png, realtime_noise.png, realtime_wood.png, realtime_granite.png, \
+         realtime_bump.png to {}",
         out.display()
     );
 }

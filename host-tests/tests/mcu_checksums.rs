@@ -616,19 +616,31 @@ fn mcu_env_matcap() {
 /// two bakes equal).
 #[test]
 fn mcu_noise_baked() {
-    use fixel::shading::noise::{bake, BandLimit, Ramps};
-    let ramps = Ramps::new().unwrap();
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked", &ramps.marble());
+}
+
+/// The `noise_baked_wood` firmware: [`mcu_noise_baked`] with the wood.
+#[test]
+fn mcu_noise_baked_wood() {
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked_wood", &ramps.wood());
+}
+
+/// The `noise_baked_granite` firmware: [`mcu_noise_baked`] with the granite.
+#[test]
+fn mcu_noise_baked_granite() {
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked_granite", &ramps.granite());
+}
+
+/// The sphere scene with `pattern` baked at run time into its 256 x 128 texture (at most 6
+/// octaves), in bands and whole: prints the banded checksum as `scene`.
+fn noise_baked(scene: &str, pattern: &impl fixel::shading::noise::Pattern) {
+    use fixel::shading::noise::{bake, BandLimit};
     let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
     let surface = fixel_scenes::noise::baked_sphere_surface();
-    bake(
-        &ramps.marble(),
-        &BandLimit::new(6),
-        &surface,
-        256,
-        128,
-        &mut t,
-    )
-    .unwrap();
+    bake(pattern, &BandLimit::new(6), &surface, 256, 128, &mut t).unwrap();
     let tex = Texture::new(&t, 256, 128).unwrap();
     let sphere = demo::sphere();
     let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
@@ -644,11 +656,11 @@ fn mcu_noise_baked() {
         &mut nop2,
     )
     .unwrap();
-    print("noise_baked", &r);
+    print(scene, &r);
     assert_eq!(
         whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true),
         (r.checksum, r.stats.pixels),
-        "noise_baked: bands differ from the whole frame"
+        "{scene}: bands differ from the whole frame"
     );
 }
 

@@ -71,6 +71,14 @@ texture!(
     128,
     "marble256x128.bin"
 );
+texture!(WOOD256X128_TEXELS, WOOD256X128, 256, 128, "wood256x128.bin");
+texture!(
+    GRANITE256X128_TEXELS,
+    GRANITE256X128,
+    256,
+    128,
+    "granite256x128.bin"
+);
 texture!(
     BRICKS_LIT256X128_TEXELS,
     BRICKS_LIT256X128,

@@ -20,6 +20,35 @@
 //! four texel centres) instead of the pattern at the pixel's own point. `host-tests`
 //! measures it against the f64 solid texture.
 //!
+//! # Baking at run time into caller storage
+//!
+//! ```
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use fixel::math::Fx;
+//! use fixel::shading::noise::{bake, BandLimit, Ramps, SphereSurface};
+//! use fixel::texture::Texture;
+//!
+//! // The demonstration wood and granite on a sphere of radius 2.7 lattice cells, each
+//! // into a 64 x 32 texture (4 KB of RGB565): band-limited to the texel, at most 6 octaves.
+//! let ramps = Ramps::new()?;
+//! let sphere = SphereSurface { radius: Fx::from_num(2.7) };
+//! let (mut wood, mut granite) = ([Rgb565::new(0, 0, 0); 64 * 32], [Rgb565::new(0, 0, 0); 64 * 32]);
+//! bake(&ramps.wood(), &BandLimit::new(6), &sphere, 64, 32, &mut wood)?;
+//! bake(&ramps.granite(), &BandLimit::new(6), &sphere, 64, 32, &mut granite)?;
+//! // Then each is a plain texture for the sphere's own texture coordinates.
+//! let tex = Texture::new(&wood, 64, 32)?;
+//! assert_eq!(tex.width(), 64);
+//! // Rings and grain: neither texture is one flat colour.
+//! assert!(wood.iter().any(|&c| c != wood[0]) && granite.iter().any(|&c| c != granite[0]));
+//! // Storage of the wrong size is refused.
+//! assert!(bake(&ramps.wood(), &BandLimit::new(6), &sphere, 64, 16, &mut wood).is_err());
+//! # Ok::<(), fixel::Error>(())
+//! ```
+//!
+//! At build time the same call runs in a build script: the firmware's `build.rs` bakes the
+//! marble, wood and granite of the `noise_baked`, `noise_baked_wood` and
+//! `noise_baked_granite` scenes into flash.
+//!
 //! [`BandLimit`]: super::BandLimit
 
 use embedded_graphics_core::pixelcolor::raw::RawU16;

@@ -72,7 +72,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 33] = [
+const SCENES: [&str; 35] = [
     "cube",
     // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
     // compared with.
@@ -81,8 +81,11 @@ const SCENES: [&str; 33] = [
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
     // draw, beside the sphere it is compared with.
     "env_matcap",
-    // The marble baked into the sphere's texture (at build time): the same draw as `sphere`.
+    // The marble, wood and granite baked into the sphere's texture (at build time): the same
+    // draw as `sphere`.
     "noise_baked",
+    "noise_baked_wood",
+    "noise_baked_granite",
     // The brick sphere's bump lighting resolved into its texture (light fixed in object
     // space): the same draw as `sphere`, unlit.
     "bump_fast",
