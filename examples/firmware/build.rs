@@ -163,6 +163,18 @@ fn main() {
         baked(&ramps.wood(), "wood256x128.bin", &out);
         baked(&ramps.granite(), "granite256x128.bin", &out);
     }
+    // The two layers of the flame from baked layers (64 x 64 Q15 partial turbulence each,
+    // `fixel::shading::noise::FLAME_LAYERS`): the `noise_flame_baked` scene's tiles.
+    {
+        use fixel::shading::noise::{bake_flame_layer, FLAME_LAYERS, FLAME_LAYER_SIDE};
+        for (l, layer) in FLAME_LAYERS.iter().enumerate() {
+            let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+            let mut t = vec![0u16; n];
+            bake_flame_layer(layer, FLAME_LAYER_SIDE, &mut t).unwrap();
+            let bytes: Vec<u8> = t.iter().flat_map(|v| v.to_le_bytes()).collect();
+            fs::write(out.join(format!("flame-layer{l}.bin")), bytes).unwrap();
+        }
+    }
     // The brick sphere's bump-mapped lighting resolved into a 256 x 128 texture for the
     // light fixed in object space (`demo::surface::resolve_light`, Lambert + ambient):
     // the `bump_fast` scene's texture.

@@ -476,6 +476,30 @@ fn mcu_noise_flame() {
     print_whole("noise_flame", &r, &w);
 }
 
+#[path = "../../examples/firmware/src/flame_baked_scene.rs"]
+mod flame_baked_scene;
+
+/// The `noise_flame_baked` firmware (`examples/firmware/src/bin/noise_flame_baked.rs`): the
+/// flame from the two layers baked here at run time (the firmware's are baked by its
+/// `build.rs` with the same function); and `flame_plain`, the same quad textured.
+#[test]
+fn mcu_noise_flame_baked() {
+    use fixel::shading::noise::{bake_flame_layer, FLAME_LAYERS, FLAME_LAYER_SIDE};
+    let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+    let (mut l0, mut l1) = (vec![0u16; n], vec![0u16; n]);
+    bake_flame_layer(&FLAME_LAYERS[0], FLAME_LAYER_SIDE, &mut l0).unwrap();
+    bake_flame_layer(&FLAME_LAYERS[1], FLAME_LAYER_SIDE, &mut l1).unwrap();
+    let mut band = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_BAND_PIXELS]);
+    let r = flame_baked_scene::flame_baked_bands(&mut band, [&l0, &l1], 4, &mut || {}, &mut || {})
+        .unwrap();
+    print("noise_flame_baked", &r);
+    let t = texture(64, 64);
+    let tex = Texture::new(&t, 64, 64).unwrap();
+    let r =
+        flame_baked_scene::flame_plain_bands(&mut band, tex, 4, &mut || {}, &mut || {}).unwrap();
+    print("flame_plain", &r);
+}
+
 #[path = "../../examples/firmware/src/light3d_scene.rs"]
 #[allow(dead_code, unused_imports)]
 mod light3d_scene;

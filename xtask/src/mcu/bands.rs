@@ -232,8 +232,9 @@ pub(super) fn models(f: &Figures) -> String {
 }
 
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
-/// of the pixel loop, against the plain lit textured `sphere` (the same bands).
-const REALTIME: [(&str, &str, &str); 5] = [
+/// of the pixel loop, against the plain lit textured `sphere` (the same bands); and the
+/// flame from baked layers against the same quad textured (`flame_plain`).
+const REALTIME: [(&str, &str, &str); 6] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
@@ -259,10 +260,18 @@ const REALTIME: [(&str, &str, &str); 5] = [
         "bump_fast",
         "sphere",
     ),
+    (
+        "solid noise: the flame from two baked layers",
+        "noise_flame_baked",
+        "flame_plain",
+    ),
 ];
 
 /// The plain draws the real-time modes are compared with.
-const PLAIN: [(&str, &str); 1] = [("plain: lit, bilinear, the sphere's own texture", "sphere")];
+const PLAIN: [(&str, &str); 2] = [
+    ("plain: lit, bilinear, the sphere's own texture", "sphere"),
+    ("plain: the flame's quad, bilinear, unlit", "flame_plain"),
+];
 
 /// The README's table of the real-time modes: instructions per pixel on each core and the
 /// ratio to the plain draw they are compared with.

@@ -72,7 +72,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 35] = [
+const SCENES: [&str; 37] = [
     "cube",
     // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
     // compared with.
@@ -107,6 +107,9 @@ const SCENES: [&str; 35] = [
     // light map.
     "noise",
     "noise_flame",
+    // The flame from two baked layers, beside the same quad as a plain textured draw.
+    "noise_flame_baked",
+    "flame_plain",
     "noise_light3d",
     // Environment maps: the sphere as a mirror, r per pixel and per vertex.
     "env_pixel",
