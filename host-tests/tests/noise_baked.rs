@@ -21,8 +21,8 @@ use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::math::Fx;
 use fixel::scene::DirectionalLight;
 use fixel::shading::noise::{
-    bake, bake_mips, BakeSurface, BandLimit, Octaves, Pattern, Ramps, SolidMesh, SolidShader,
-    SphereSurface,
+    bake, bake_mips, BakeSurface, BandLimit, Octaves, Pattern, PlaneSurface, Ramps, SolidMesh,
+    SolidShader, SphereSurface,
 };
 use fixel::texture::{chain_len, full_levels, Filter};
 use host_tests::metrics::{channel_errors, compare, compare_rgb565, Report};
@@ -332,6 +332,50 @@ fn mip_chain_is_baked_per_level() {
     assert_ne!(*chain.last().unwrap(), Rgb565::new(0, 0, 0));
 }
 
+/// A granite floor patch (8 x 8 cells, planar object-space coordinates) baked 64 x 64
+/// against the f64 granite at each texel's centre point, band-limited to the texel.
+#[test]
+fn plane_bake_matches_reference() {
+    let plane = PlaneSurface {
+        origin: [0x1_2345, -0x0_8000, 0x3_0F0F],
+        u: [8 << 16, 0, 0],
+        v: [0, 0, 8 << 16],
+    };
+    let ramps = Ramps::new().unwrap();
+    let mut got = vec![Rgb565::new(0, 0, 0); 64 * 64];
+    bake(
+        &ramps.granite(),
+        &BandLimit::new(6),
+        &plane,
+        64,
+        64,
+        &mut got,
+    )
+    .unwrap();
+    let granite = Which::Granite.reference();
+    let o = plane.origin.map(|c| f64::from(c) / 65536.0);
+    let lambda = (8.0f64 / 64.0).log2();
+    let (mut max, mut sum) = (0u32, 0u64);
+    for (k, g) in got.iter().enumerate() {
+        let (s, t) = ((k % 64) as f64 + 0.5, (k / 64) as f64 + 0.5);
+        let p = [o[0] + 8.0 * s / 64.0, o[1], o[2] + 8.0 * t / 64.0];
+        let want = granite.color(
+            p,
+            RefOctaves::Band {
+                max: OCTAVES,
+                bias: 0.0,
+            },
+            lambda,
+        );
+        let e = channel_errors(g.into_storage(), rgb565_from_f64(want));
+        max = max.max(*e.iter().max().unwrap());
+        sum += u64::from(e.iter().sum::<u32>());
+    }
+    let mean = sum as f64 / (3 * got.len()) as f64;
+    println!("granite plane 64 x 64 vs the f64 bake: mean {mean:.4} LSB, max {max}");
+    assert!(max <= 2 && mean <= 0.15, "max {max} mean {mean}");
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: common::cases(512), ..ProptestConfig::default() })]
 
@@ -352,5 +396,33 @@ proptest! {
         let l = surface.texel_lambda(256, 128);
         let lf = (2.0 * pi * rf / 256.0).max(pi * rf / 128.0).log2();
         prop_assert!((f64::from(l) / 256.0 - lf).abs() <= 1.0 / 32.0, "{l} {lf}");
+    }
+
+    /// Plane points within 2 raw units per axis of the f64 point, and the texel size within
+    /// 1/32 octave, for any patch of edges up to 1000 cells.
+    #[test]
+    fn plane_points_match_reference(
+        o in prop::array::uniform3(-(1i32 << 26)..(1 << 26)),
+        u in prop::array::uniform3(-(1000i32 << 16)..(1000 << 16)),
+        v in prop::array::uniform3(-(1000i32 << 16)..(1000 << 16)),
+        s in 0u32..=65536,
+        t in 0u32..=65536,
+        w in 0u32..=10,
+        h in 0u32..=10,
+    ) {
+        let plane = PlaneSurface { origin: o, u, v };
+        let p = plane.point(s, t);
+        for k in 0..3 {
+            let want = f64::from(o[k])
+                + f64::from(u[k]) * f64::from(s) / 65536.0
+                + f64::from(v[k]) * f64::from(t) / 65536.0;
+            prop_assert!((f64::from(p[k]) - want).abs() <= 2.0, "{k}: {} {want}", p[k]);
+        }
+        let len = |e: [i32; 3]| e.iter().map(|&c| (f64::from(c) / 65536.0).powi(2)).sum::<f64>().sqrt();
+        let (w, h) = (1u32 << w, 1u32 << h);
+        let size = (len(u) / f64::from(w)).max(len(v) / f64::from(h));
+        prop_assume!(size > 1e-3);
+        let l = f64::from(plane.texel_lambda(w, h)) / 256.0;
+        prop_assert!((l - size.log2()).abs() <= 1.0 / 32.0, "{l} {}", size.log2());
     }
 }

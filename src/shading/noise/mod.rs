@@ -102,7 +102,7 @@ mod select;
 mod solid;
 mod turbulence;
 
-pub use bake::{bake, bake_mips, BakeSurface, SphereSurface};
+pub use bake::{bake, bake_mips, BakeSurface, PlaneSurface, SphereSurface};
 pub use compose::SolidTimesTexture;
 pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
