@@ -14,6 +14,9 @@
 //!   the plane: 2D + time through [`noise3`], time as the third axis); [`BakedFlame`]: the
 //!   same flame from two baked tileable layers of octaves ([`bake_flame_layer`]), scrolled
 //!   per frame, two texel reads per pixel.
+//! * [`bake`] and [`bake_mips`]: any pattern baked into an image texture over a
+//!   [`SphereSurface`] (a UV sphere's own coordinates) or a [`PlaneSurface`] (planar
+//!   coordinates), drawn as a plain textured draw: the real-time form of a solid texture.
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map, trilinear
 //!   (`cargo xtask bake-light3d`).
 //! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light;
