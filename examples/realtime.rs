@@ -13,6 +13,11 @@
 //!   band-limited to 6 octaves); right, the same marble baked into a 256 x 128 texture for
 //!   the sphere's own coordinates (`noise::bake`) and drawn as the textured sphere is (the
 //!   `noise_baked` scene);
+//! * `realtime_wood.png`, `realtime_granite.png`: the same pair for the wood and the granite
+//!   (the `noise_baked_wood` and `noise_baked_granite` scenes);
+//! * `realtime_flame.png`: the flame at t = 0, 1/8, 2/8, 3/8 s, top per pixel
+//!   (`FlameShader`, 5 octaves), bottom from two baked tileable layers (`BakedFlame`, the
+//!   `noise_flame_baked` scene), each pixel shown as 2 x 2;
 //! * `realtime_bump.png`: left, the brick sphere bump-mapped per pixel (`Bumped`, height
 //!   differences, a directional light); right, the same lighting resolved into a 256 x 128
 //!   texture for that light fixed in object space (`bump::resolve_sphere`) and drawn unlit
@@ -28,7 +33,7 @@ use fixel::pipeline::{
 };
 use fixel::scene::{draw_mesh_walked, CachedVertex, DirectionalLight, MeshTransform, SphereMapUvs};
 use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
-use fixel::shading::noise::{bake, BandLimit, Ramps, SolidMesh, SolidShader};
+use fixel::shading::noise::{bake, BandLimit, Pattern, Ramps, SolidMesh, SolidShader};
 use fixel::surface::Frame;
 use fixel::texture::{Bilinear, ClampToEdge, Repeat, Texture};
 use fixel_scenes as demo;
@@ -126,9 +131,9 @@ fn env(out: &std::path::Path) {
     common::write_png(&out.join("realtime_env.png"), 2 * W, H, &pair(&c, &fast));
 }
 
-fn noise(out: &std::path::Path) {
+/// `pattern` per pixel (left) and baked (right) into `out/name`.
+fn noise(out: &std::path::Path, pattern: impl Pattern, name: &str) {
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
-    let ramps = Ramps::new().expect("ramps");
     let s = demo::sphere();
     let cam = demo::camera(20);
     let model = demo::sphere_model(0);
@@ -150,7 +155,7 @@ fn noise(out: &std::path::Path) {
         .expect("depth");
     f.clear(Rgb565::new(0, 0, 0));
     ShadedDraw::<_, Exact, DepthLess>::new(
-        SolidShader::new(ramps.marble(), BandLimit::new(6)),
+        SolidShader::new(pattern, BandLimit::new(6)),
         vp,
         Cull::Back,
     )
@@ -159,7 +164,7 @@ fn noise(out: &std::path::Path) {
     .expect("drawn");
     let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
     bake(
-        &ramps.marble(),
+        &pattern,
         &BandLimit::new(6),
         &fixel_scenes::noise::baked_sphere_surface(),
         256,
@@ -170,7 +175,81 @@ fn noise(out: &std::path::Path) {
     let tex = Texture::new(&t, 256, 128).expect("texture");
     let draw = Draw::new::<Lit>(Some(tex), vp, Cull::Back).expect("draw");
     let fast = walked(&draw, MeshTransform::new(&model, &cam), true);
-    common::write_png(&out.join("realtime_noise.png"), 2 * W, H, &pair(&c, &fast));
+    common::write_png(&out.join(name), 2 * W, H, &pair(&c, &fast));
+}
+
+/// The flame at t = 0, 1/8, 2/8, 3/8 s on the flame firmware's 80 x 96 quad: top, per
+/// pixel (`FlameShader`, 5 octaves); bottom, from the two baked layers (`BakedFlame`); every
+/// pixel shown as 2 x 2.
+fn flame(out: &std::path::Path) {
+    use fixel::pipeline::NoDepth;
+    use fixel::shading::noise::{
+        bake_flame_layer, BakedFlame, FlameShader, Ramp, FLAME_KEYS, FLAME_LAYERS, FLAME_LAYER_SIDE,
+    };
+    const FW: u32 = 80;
+    const FH: u32 = 96;
+    let ramp = Ramp::from_keys(&FLAME_KEYS).expect("ramp");
+    let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+    let (mut l0, mut l1) = (vec![0u16; n], vec![0u16; n]);
+    bake_flame_layer(&FLAME_LAYERS[0], FLAME_LAYER_SIDE, &mut l0).expect("layer 0");
+    bake_flame_layer(&FLAME_LAYERS[1], FLAME_LAYER_SIDE, &mut l1).expect("layer 1");
+    // The firmware's quad: x in -1.3..1.3, y in -0.1..1.4 flame units.
+    let (x0, x1, y0, y1) = (-85_197, 85_197, -6_554, 91_750);
+    let v = |xn: i32, yn: i32, x: i32, y: i32| {
+        Vertex::new(
+            [
+                fixel::math::Fx::from_num(xn),
+                fixel::math::Fx::from_num(yn),
+                fixel::math::Fx::ZERO,
+                fixel::math::Fx::ONE,
+            ],
+            [x, y],
+        )
+    };
+    let (a, b, c, d) = (
+        v(-1, -1, x0, y0),
+        v(1, -1, x1, y0),
+        v(1, 1, x1, y1),
+        v(-1, 1, x0, y1),
+    );
+    let quad = [[a, b, c], [a, c, d]];
+    let vp = Viewport::new(0, 0, FW, FH).expect("viewport");
+    let (iw, ih) = (4 * FW * 2, 2 * FH * 2);
+    let mut img = vec![Rgb565::new(0, 0, 0); (iw * ih) as usize];
+    for i in 0..4u32 {
+        let t = (i as i32) << 13;
+        let mut frames = [
+            vec![Rgb565::new(0, 0, 0); (FW * FH) as usize],
+            vec![Rgb565::new(0, 0, 0); (FW * FH) as usize],
+        ];
+        let shader = FlameShader {
+            ramp: &ramp,
+            t,
+            octaves: 5,
+        };
+        let mut f = Frame::new(&mut frames[0], FW, FH).expect("frame");
+        ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None)
+            .expect("draw")
+            .clip_triangles(&quad, &mut f)
+            .expect("drawn");
+        let baked =
+            BakedFlame::new(&ramp, &FLAME_LAYERS, [&l0, &l1], FLAME_LAYER_SIDE, t).expect("layers");
+        let mut f = Frame::new(&mut frames[1], FW, FH).expect("frame");
+        ShadedDraw::<_, Exact, NoDepth>::new(baked, vp, Cull::None)
+            .expect("draw")
+            .clip_triangles(&quad, &mut f)
+            .expect("drawn");
+        for (row, px) in frames.iter().enumerate() {
+            for (k, &c) in px.iter().enumerate() {
+                let (x, y) = (k as u32 % FW, k as u32 / FW);
+                let (ox, oy) = (2 * (i * FW + x), 2 * (row as u32 * FH + y));
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    img[((oy + dy) * iw + ox + dx) as usize] = c;
+                }
+            }
+        }
+    }
+    common::write_png(&out.join("realtime_flame.png"), iw, ih, &img);
 }
 
 fn bump(out: &std::path::Path) {
@@ -252,10 +331,15 @@ fn bump(out: &std::path::Path) {
 fn main() {
     let out = common::out_dir();
     env(&out);
-    noise(&out);
+    let ramps = Ramps::new().expect("ramps");
+    noise(&out, ramps.marble(), "realtime_noise.png");
+    noise(&out, ramps.wood(), "realtime_wood.png");
+    noise(&out, ramps.granite(), "realtime_granite.png");
+    flame(&out);
     bump(&out);
     println!(
-        "wrote realtime_env.png, realtime_noise.png, realtime_bump.png to {}",
+        "wrote realtime_env.png, realtime_noise.png, realtime_wood.png, realtime_granite.png, \
+         realtime_flame.png, realtime_bump.png to {}",
         out.display()
     );
 }

@@ -1,7 +1,7 @@
 //! Link scripts per architecture, and the flash tables generated with fixel's own code:
 //! the procedural textures `T(w, h)` (raw RGB565, little-endian) and the benchmark sphere.
 use std::fmt::Write as _;
-use std::{env, fs, path::PathBuf};
+use std::{env, fs, path::Path, path::PathBuf};
 
 use embedded_graphics_core::pixelcolor::IntoStorage;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -143,27 +143,37 @@ fn main() {
         .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
         .collect();
     fs::write(out.join("sky-sphere64.bin"), bytes).unwrap();
-    // The marble baked for the benchmark sphere's texture coordinates (256 x 128,
-    // band-limited turbulence of at most 6 octaves): the `noise_baked` scene's texture.
+    // The marble, wood and granite baked for the benchmark sphere's texture coordinates
+    // (256 x 128, band-limited turbulence of at most 6 octaves): the textures of the
+    // `noise_baked`, `noise_baked_wood` and `noise_baked_granite` scenes.
     {
-        use fixel::shading::noise::{bake, BandLimit, Ramps};
+        use fixel::shading::noise::{bake, BandLimit, Pattern, Ramps};
+        fn baked(pattern: &impl Pattern, name: &str, out: &Path) {
+            let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
+            let surface = fixel_scenes::noise::baked_sphere_surface();
+            bake(pattern, &BandLimit::new(6), &surface, 256, 128, &mut t).unwrap();
+            let bytes: Vec<u8> = t
+                .iter()
+                .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
+                .collect();
+            fs::write(out.join(name), bytes).unwrap();
+        }
         let ramps = Ramps::new().unwrap();
-        let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
-        let surface = fixel_scenes::noise::baked_sphere_surface();
-        bake(
-            &ramps.marble(),
-            &BandLimit::new(6),
-            &surface,
-            256,
-            128,
-            &mut t,
-        )
-        .unwrap();
-        let bytes: Vec<u8> = t
-            .iter()
-            .flat_map(|c| IntoStorage::into_storage(*c).to_le_bytes())
-            .collect();
-        fs::write(out.join("marble256x128.bin"), bytes).unwrap();
+        baked(&ramps.marble(), "marble256x128.bin", &out);
+        baked(&ramps.wood(), "wood256x128.bin", &out);
+        baked(&ramps.granite(), "granite256x128.bin", &out);
+    }
+    // The two layers of the flame from baked layers (64 x 64 Q15 partial turbulence each,
+    // `fixel::shading::noise::FLAME_LAYERS`): the `noise_flame_baked` scene's tiles.
+    {
+        use fixel::shading::noise::{bake_flame_layer, FLAME_LAYERS, FLAME_LAYER_SIDE};
+        for (l, layer) in FLAME_LAYERS.iter().enumerate() {
+            let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+            let mut t = vec![0u16; n];
+            bake_flame_layer(layer, FLAME_LAYER_SIDE, &mut t).unwrap();
+            let bytes: Vec<u8> = t.iter().flat_map(|v| v.to_le_bytes()).collect();
+            fs::write(out.join(format!("flame-layer{l}.bin")), bytes).unwrap();
+        }
     }
     // The brick sphere's bump-mapped lighting resolved into a 256 x 128 texture for the
     // light fixed in object space (`demo::surface::resolve_light`, Lambert + ambient):

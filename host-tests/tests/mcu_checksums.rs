@@ -476,6 +476,30 @@ fn mcu_noise_flame() {
     print_whole("noise_flame", &r, &w);
 }
 
+#[path = "../../examples/firmware/src/flame_baked_scene.rs"]
+mod flame_baked_scene;
+
+/// The `noise_flame_baked` firmware (`examples/firmware/src/bin/noise_flame_baked.rs`): the
+/// flame from the two layers baked here at run time (the firmware's are baked by its
+/// `build.rs` with the same function); and `flame_plain`, the same quad textured.
+#[test]
+fn mcu_noise_flame_baked() {
+    use fixel::shading::noise::{bake_flame_layer, FLAME_LAYERS, FLAME_LAYER_SIDE};
+    let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+    let (mut l0, mut l1) = (vec![0u16; n], vec![0u16; n]);
+    bake_flame_layer(&FLAME_LAYERS[0], FLAME_LAYER_SIDE, &mut l0).unwrap();
+    bake_flame_layer(&FLAME_LAYERS[1], FLAME_LAYER_SIDE, &mut l1).unwrap();
+    let mut band = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_BAND_PIXELS]);
+    let r = flame_baked_scene::flame_baked_bands(&mut band, [&l0, &l1], 4, &mut || {}, &mut || {})
+        .unwrap();
+    print("noise_flame_baked", &r);
+    let t = texture(64, 64);
+    let tex = Texture::new(&t, 64, 64).unwrap();
+    let r =
+        flame_baked_scene::flame_plain_bands(&mut band, tex, 4, &mut || {}, &mut || {}).unwrap();
+    print("flame_plain", &r);
+}
+
 #[path = "../../examples/firmware/src/light3d_scene.rs"]
 #[allow(dead_code, unused_imports)]
 mod light3d_scene;
@@ -616,19 +640,31 @@ fn mcu_env_matcap() {
 /// two bakes equal).
 #[test]
 fn mcu_noise_baked() {
-    use fixel::shading::noise::{bake, BandLimit, Ramps};
-    let ramps = Ramps::new().unwrap();
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked", &ramps.marble());
+}
+
+/// The `noise_baked_wood` firmware: [`mcu_noise_baked`] with the wood.
+#[test]
+fn mcu_noise_baked_wood() {
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked_wood", &ramps.wood());
+}
+
+/// The `noise_baked_granite` firmware: [`mcu_noise_baked`] with the granite.
+#[test]
+fn mcu_noise_baked_granite() {
+    let ramps = fixel::shading::noise::Ramps::new().unwrap();
+    noise_baked("noise_baked_granite", &ramps.granite());
+}
+
+/// The sphere scene with `pattern` baked at run time into its 256 x 128 texture (at most 6
+/// octaves), in bands and whole: prints the banded checksum as `scene`.
+fn noise_baked(scene: &str, pattern: &impl fixel::shading::noise::Pattern) {
+    use fixel::shading::noise::{bake, BandLimit};
     let mut t = vec![Rgb565::new(0, 0, 0); 256 * 128];
     let surface = fixel_scenes::noise::baked_sphere_surface();
-    bake(
-        &ramps.marble(),
-        &BandLimit::new(6),
-        &surface,
-        256,
-        128,
-        &mut t,
-    )
-    .unwrap();
+    bake(pattern, &BandLimit::new(6), &surface, 256, 128, &mut t).unwrap();
     let tex = Texture::new(&t, 256, 128).unwrap();
     let sphere = demo::sphere();
     let planes = fixel::scene::face_planes(&sphere.positions, &sphere.indices);
@@ -644,11 +680,11 @@ fn mcu_noise_baked() {
         &mut nop2,
     )
     .unwrap();
-    print("noise_baked", &r);
+    print(scene, &r);
     assert_eq!(
         whole::<scenes::LitSphere>(tex, &mesh, &demo::sphere_model(0), 20, true),
         (r.checksum, r.stats.pixels),
-        "noise_baked: bands differ from the whole frame"
+        "{scene}: bands differ from the whole frame"
     );
 }
 

@@ -9,6 +9,7 @@ mod bake;
 mod bake_cube;
 mod bake_displaced;
 mod bake_gltf;
+mod bake_noise;
 mod bake_obj;
 mod bake_palette;
 mod budget;
@@ -195,6 +196,15 @@ enum Command {
     /// output also records the parameters (NAME_LIGHTS, NAME_AMBIENT).
     #[command(name = "bake-light3d", verbatim_doc_comment)]
     BakeLight3d(light3d::Light3dArgs),
+    /// Bake a solid texture for a sphere's texture coordinates, or a flame layer, to a .bin
+    ///
+    /// Bakes the demonstration marble, wood or granite for a UV sphere's own texture
+    /// coordinates (fixel::shading::noise::bake_mips: band-limited to each texel, every
+    /// mip level from the pattern), or one layer of the flame from baked layers
+    /// (bake_flame_layer), into little-endian u16 (RGB565 or Q15 turbulence): the
+    /// format the firmware's build.rs writes. See xtask/src/bake_noise.rs.
+    #[command(name = "bake-noise", verbatim_doc_comment)]
+    BakeNoise(bake_noise::BakeNoiseArgs),
     /// Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order) as Rust statics
     ///
     /// Six cube-map faces from a 4:3 cross or a 6:1 strip (GL order: +X -X +Y -Y
@@ -290,6 +300,13 @@ fn main() -> ExitCode {
         Command::Budget(a) => budget::budget(&a),
         Command::Cores { no_install } => mcu::cores(!no_install),
         Command::Report(a) => report::report(&a),
+        Command::BakeNoise(a) => match bake_noise::run(&a) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cargo xtask bake-noise: {e}");
+                ExitCode::from(1)
+            }
+        },
         Command::BakeLight3d(a) => match light3d::run(&a) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

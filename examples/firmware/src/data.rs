@@ -71,6 +71,20 @@ texture!(
     128,
     "marble256x128.bin"
 );
+/// The two tiles of the flame from baked layers (`fixel::shading::noise::FLAME_LAYERS`,
+/// 64 x 64 Q15 partial turbulence each, 8 KB each), baked by `build.rs`.
+pub static FLAME_LAYER_TEXELS: [[u16; 64 * 64]; 2] = [
+    raw(include_bytes!(concat!(env!("OUT_DIR"), "/flame-layer0.bin"))),
+    raw(include_bytes!(concat!(env!("OUT_DIR"), "/flame-layer1.bin"))),
+];
+texture!(WOOD256X128_TEXELS, WOOD256X128, 256, 128, "wood256x128.bin");
+texture!(
+    GRANITE256X128_TEXELS,
+    GRANITE256X128,
+    256,
+    128,
+    "granite256x128.bin"
+);
 texture!(
     BRICKS_LIT256X128_TEXELS,
     BRICKS_LIT256X128,

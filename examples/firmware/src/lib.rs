@@ -14,6 +14,7 @@ pub mod alpha;
 pub mod cores;
 pub mod data;
 pub mod env;
+pub mod flame_baked_scene;
 pub mod mapping;
 pub mod matcap_scene;
 pub mod model_scene;

@@ -9,6 +9,8 @@
 //!   `−z`, `v` the polar angle from `+y` in half turns, so texel `(i, j)` lies at
 //!   `(sin θ cos φ, cos θ, −sin θ sin φ) · radius` with `φ = 2π (i + ½) / w`,
 //!   `θ = π (j + ½) / h`.
+//! * [`PlaneSurface`]: a flat patch `origin + s · u + t · v`, planar object-space texture
+//!   coordinates (a floor, a wall, a cube face).
 //! * [`bake`]: one texture of any [`Pattern`] over a [`BakeSurface`], band-limited to the
 //!   texel's footprint when the octaves are a [`BandLimit`]; [`bake_mips`]: the same
 //!   with a full mip chain, every level baked from the pattern at its own footprint (not
@@ -19,6 +21,35 @@
 //! the baked draw against the solid one is that of sampling the texture (a bilinear blend of
 //! four texel centres) instead of the pattern at the pixel's own point. `host-tests`
 //! measures it against the f64 solid texture.
+//!
+//! # Baking at run time into caller storage
+//!
+//! ```
+//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use fixel::math::Fx;
+//! use fixel::shading::noise::{bake, BandLimit, Ramps, SphereSurface};
+//! use fixel::texture::Texture;
+//!
+//! // The demonstration wood and granite on a sphere of radius 2.7 lattice cells, each
+//! // into a 64 x 32 texture (4 KB of RGB565): band-limited to the texel, at most 6 octaves.
+//! let ramps = Ramps::new()?;
+//! let sphere = SphereSurface { radius: Fx::from_num(2.7) };
+//! let (mut wood, mut granite) = ([Rgb565::new(0, 0, 0); 64 * 32], [Rgb565::new(0, 0, 0); 64 * 32]);
+//! bake(&ramps.wood(), &BandLimit::new(6), &sphere, 64, 32, &mut wood)?;
+//! bake(&ramps.granite(), &BandLimit::new(6), &sphere, 64, 32, &mut granite)?;
+//! // Then each is a plain texture for the sphere's own texture coordinates.
+//! let tex = Texture::new(&wood, 64, 32)?;
+//! assert_eq!(tex.width(), 64);
+//! // Rings and grain: neither texture is one flat colour.
+//! assert!(wood.iter().any(|&c| c != wood[0]) && granite.iter().any(|&c| c != granite[0]));
+//! // Storage of the wrong size is refused.
+//! assert!(bake(&ramps.wood(), &BandLimit::new(6), &sphere, 64, 16, &mut wood).is_err());
+//! # Ok::<(), fixel::Error>(())
+//! ```
+//!
+//! At build time the same call runs in a build script: the firmware's `build.rs` bakes the
+//! marble, wood and granite of the `noise_baked`, `noise_baked_wood` and
+//! `noise_baked_granite` scenes into flash.
 //!
 //! [`BandLimit`]: super::BandLimit
 
@@ -70,6 +101,50 @@ impl BakeSurface for SphereSurface {
         let down = (PI_Q16 * r) / u64::from(height.max(1));
         // Q32 cells: log2 minus 32.
         log2_q8(around.max(down)) - 32 * 256
+    }
+}
+
+/// A flat patch: texture coordinates `(s, t)` in `0..1` lie at `origin + s · u + t · v`
+/// (every vector I16F16 lattice units), the planar object-space uv of a floor, a wall or
+/// a cube face: a texture baked over it is drawn with the patch's planar coordinates
+/// (for example `uv = ((p − origin) · u / |u|², (p − origin) · v / |v|²)` for `u ⊥ v`).
+/// The sums wrap, which the noise's period makes exact (see the [module docs](super)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlaneSurface {
+    /// The point of `(0, 0)`.
+    pub origin: [i32; 3],
+    /// The edge along `s`: from `(0, 0)` to `(1, 0)`.
+    pub u: [i32; 3],
+    /// The edge along `t`: from `(0, 0)` to `(0, 1)`.
+    pub v: [i32; 3],
+}
+
+impl PlaneSurface {
+    /// `|e|` (Q16 cells) of an edge.
+    fn length(e: [i32; 3]) -> u64 {
+        // Each square below 2^62: three fit u64.
+        let sq = e.map(|c| u64::from(c.unsigned_abs()).pow(2));
+        u64::from(crate::math::isqrt_u64(sq[0] + sq[1] + sq[2]))
+    }
+}
+
+impl BakeSurface for PlaneSurface {
+    fn point(&self, s: u32, t: u32) -> [i32; 3] {
+        let at = |k: usize| {
+            let du = (i64::from(self.u[k]) * i64::from(s)) >> 16;
+            let dv = (i64::from(self.v[k]) * i64::from(t)) >> 16;
+            self.origin[k]
+                .wrapping_add(du as i32)
+                .wrapping_add(dv as i32)
+        };
+        [at(0), at(1), at(2)]
+    }
+
+    fn texel_lambda(&self, width: u32, height: u32) -> i32 {
+        // The longer texel side, |u| / w or |v| / h cells, in Q32: log2 minus 32.
+        let along = (Self::length(self.u) << 16) / u64::from(width.max(1));
+        let down = (Self::length(self.v) << 16) / u64::from(height.max(1));
+        log2_q8(along.max(down)) - 32 * 256
     }
 }
 
@@ -158,6 +233,23 @@ mod tests {
         // v = 0: the +y pole.
         let p = s.point(12345, 0);
         assert_eq!(p[1], 2 << 16);
+    }
+
+    #[test]
+    fn plane_points_and_texel_size() {
+        let p = PlaneSurface {
+            origin: [1 << 16, -(2 << 16), 3 << 16],
+            u: [4 << 16, 0, 0],
+            v: [0, 0, -(2 << 16)],
+        };
+        assert_eq!(p.point(0, 0), p.origin);
+        assert_eq!(p.point(32768, 0), [3 << 16, -(2 << 16), 3 << 16]);
+        assert_eq!(p.point(0, 65536), [1 << 16, -(2 << 16), 1 << 16]);
+        // 16 texels over 4 cells: a quarter cell, log2 = -2 (Q8.8; `log2_q8` is within
+        // 1/64 octave).
+        assert!((p.texel_lambda(16, 16) + 512).abs() <= 4);
+        // 2 cells over 2 texels: one cell.
+        assert!(p.texel_lambda(64, 2).abs() <= 4);
     }
 
     #[test]

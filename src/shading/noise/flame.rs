@@ -49,7 +49,13 @@ pub fn flame(ramp: &Ramp, x: i32, y: i32, t: i32, octaves: u32) -> u16 {
         y.wrapping_mul(2).wrapping_sub(rise),
         churn,
     ];
-    let turb = turbulence(p, octaves); // Q15, 0..2^16
+    flame_color(ramp, x, y, turbulence(p, octaves))
+}
+
+/// The flame's colour (raw RGB565) at `(x, y)` (Q16 flame units) for the turbulence `turb`
+/// there (Q15): shared by [`flame`] and the flame from baked layers.
+#[inline(always)]
+pub(super) fn flame_color(ramp: &Ramp, x: i32, y: i32, turb: i32) -> u16 {
     let bend = ((turb - FLAME_TURB_MID) * FLAME_GAIN) >> 7; // Q16, signed
                                                             // Colour argument |x/b| + y/2 + gain·(turbulence − mid), 0..1 across the ramp: the
                                                             // flame narrows upwards.

@@ -11,7 +11,12 @@
 //!   [`SolidShader`], the fragment shader that draws any [`Pattern`] on a mesh with the
 //!   object-space point as three varyings and a light intensity as the fourth.
 //! * [`flame`](fn@flame) and [`FlameShader`]: an animated flame (a texture of
-//!   the plane: 2D + time through [`noise3`], time as the third axis).
+//!   the plane: 2D + time through [`noise3`], time as the third axis); [`BakedFlame`]: the
+//!   same flame from two baked tileable layers of octaves ([`bake_flame_layer`]), scrolled
+//!   per frame, two texel reads per pixel.
+//! * [`bake`] and [`bake_mips`]: any pattern baked into an image texture over a
+//!   [`SphereSurface`] (a UV sphere's own coordinates) or a [`PlaneSurface`] (planar
+//!   coordinates), drawn as a plain textured draw: the real-time form of a solid texture.
 //! * [`LightMap3d`] and [`LitSolid`]: a baked 3D light map, trilinear
 //!   (`cargo xtask bake-light3d`).
 //! * [`SolidTimesTexture`]: a solid texture multiplied with an image texture and the light;
@@ -90,6 +95,7 @@
 mod bake;
 mod compose;
 mod flame;
+mod flame_baked;
 mod lightmap3d;
 mod noise4;
 mod patterns;
@@ -99,10 +105,13 @@ mod select;
 mod solid;
 mod turbulence;
 
-pub use bake::{bake, bake_mips, BakeSurface, SphereSurface};
+pub use bake::{bake, bake_mips, BakeSurface, PlaneSurface, SphereSurface};
 pub use compose::SolidTimesTexture;
 pub use flame::{
     flame, FlameShader, FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID,
+};
+pub use flame_baked::{
+    bake_flame_layer, noise3_tiled, BakedFlame, FlameLayer, FLAME_LAYERS, FLAME_LAYER_SIDE,
 };
 pub use lightmap3d::{LightMap3d, LitSolid};
 pub use noise4::{noise4, turbulence4, Animated};

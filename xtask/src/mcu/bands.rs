@@ -232,21 +232,52 @@ pub(super) fn models(f: &Figures) -> String {
 }
 
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
-/// of the pixel loop, against the plain lit textured `sphere` (the same bands).
-const REALTIME: [(&str, &str); 3] = [
+/// of the pixel loop, against the plain lit textured `sphere` (the same bands); and the
+/// flame from baked layers against the same quad textured (`flame_plain`).
+const REALTIME: [(&str, &str, &str); 6] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
+        "sphere",
     ),
-    ("solid noise: marble baked into the texture", "noise_baked"),
-    ("bump map: lighting resolved into the texture", "bump_fast"),
+    (
+        "solid noise: marble baked into the texture",
+        "noise_baked",
+        "sphere",
+    ),
+    (
+        "solid noise: wood baked into the texture",
+        "noise_baked_wood",
+        "sphere",
+    ),
+    (
+        "solid noise: granite baked into the texture",
+        "noise_baked_granite",
+        "sphere",
+    ),
+    (
+        "bump map: lighting resolved into the texture",
+        "bump_fast",
+        "sphere",
+    ),
+    (
+        "solid noise: the flame from two baked layers",
+        "noise_flame_baked",
+        "flame_plain",
+    ),
+];
+
+/// The plain draws the real-time modes are compared with.
+const PLAIN: [(&str, &str); 2] = [
+    ("plain: lit, bilinear, the sphere's own texture", "sphere"),
+    ("plain: the flame's quad, bilinear, unlit", "flame_plain"),
 ];
 
 /// The README's table of the real-time modes: instructions per pixel on each core and the
-/// ratio to the plain textured sphere.
+/// ratio to the plain draw they are compared with.
 pub(super) fn realtime(f: &Figures) -> String {
     let mut t = String::from(
-        "| mode | instr/px, M0+ / M4F / RV32 | x the plain textured sphere, M0+ / M4F / RV32 |\n\
+        "| mode | instr/px, M0+ / M4F / RV32 | x its plain draw, M0+ / M4F / RV32 |\n\
          |---|---:|---:|\n",
     );
     let cores = ["Cortex-M0+", "Cortex-M4F", "RV32IMC"];
@@ -256,12 +287,14 @@ pub(super) fn realtime(f: &Figures) -> String {
             .map(|l| g(l).map_or("-".into(), |v| format!("{v:.d$}")))
             .join(" / ")
     };
-    t.push_str(&format!(
-        "| plain: lit, bilinear, the sphere's own texture | {} | 1 |\n",
-        row(&|l| per("sphere", l), 1)
-    ));
-    for (what, scene) in REALTIME {
-        let ratio = |l: &'static str| Some(per(scene, l)? / per("sphere", l)?);
+    for (what, plain) in PLAIN {
+        t.push_str(&format!(
+            "| {what} (`{plain}`) | {} | 1 |\n",
+            row(&|l| per(plain, l), 1)
+        ));
+    }
+    for (what, scene, plain) in REALTIME {
+        let ratio = |l: &'static str| Some(per(scene, l)? / per(plain, l)?);
         t.push_str(&format!(
             "| {what} (`{scene}`) | {} | {} |\n",
             row(&|l| per(scene, l), 1),

@@ -73,7 +73,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 33] = [
+const SCENES: [&str; 37] = [
     "cube",
     // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
     // compared with.
@@ -82,8 +82,11 @@ const SCENES: [&str; 33] = [
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
     // draw, beside the sphere it is compared with.
     "env_matcap",
-    // The marble baked into the sphere's texture (at build time): the same draw as `sphere`.
+    // The marble, wood and granite baked into the sphere's texture (at build time): the same
+    // draw as `sphere`.
     "noise_baked",
+    "noise_baked_wood",
+    "noise_baked_granite",
     // The brick sphere's bump lighting resolved into its texture (light fixed in object
     // space): the same draw as `sphere`, unlit.
     "bump_fast",
@@ -105,6 +108,9 @@ const SCENES: [&str; 33] = [
     // light map.
     "noise",
     "noise_flame",
+    // The flame from two baked layers, beside the same quad as a plain textured draw.
+    "noise_flame_baked",
+    "flame_plain",
     "noise_light3d",
     // Environment maps: the sphere as a mirror, r per pixel and per vertex.
     "env_pixel",

@@ -2,7 +2,8 @@
 //! with 0 to 6 fixed octaves, marble band-limited (at most 6 octaves, footprint per span
 //! and per pixel), and wood and granite band-limited on the same sphere; the wooden cube of
 //! `light3d_scene.rs` lit per vertex and by the baked 3D light map; the flame of
-//! `noise_flame` (4 frames of 80 x 96) with 1, 3 and 5 octaves (these two in the report
+//! `noise_flame` (4 frames of 80 x 96) with 1, 3 and 5 octaves and from two baked layers
+//! (`noise_flame_baked`, the layers in flash) (these two in the report
 //! memory layout only: their buffers do not fit the default 16 KB beside the sphere's; in
 //! the default layout this binary only has to link); granite with marble selected by a
 //! third noise (`Select`) on the sphere.
@@ -31,6 +32,9 @@ static mut CUBE: light3d_scene::Light3dBuffers = light3d_scene::Light3dBuffers::
 #[cfg(fixel_fw_report)]
 static mut FLAME: [embedded_graphics_core::pixelcolor::Rgb565; noise::FLAME_PIXELS] =
     [embedded_graphics_core::pixelcolor::Rgb565::new(0, 0, 0); noise::FLAME_PIXELS];
+#[cfg(fixel_fw_report)]
+static mut FLAME_BAND: [embedded_graphics_core::pixelcolor::Rgb565; noise::FLAME_BAND_PIXELS] =
+    [embedded_graphics_core::pixelcolor::Rgb565::new(0, 0, 0); noise::FLAME_BAND_PIXELS];
 
 #[inline(never)]
 fn mode<P: Pattern, O: Octaves>(
@@ -177,6 +181,18 @@ fn cube_and_flame(ramps: &Ramps, band: BandLimit) -> bool {
             noise::flame_frames_with(flame, 4, octaves, pause, resume)
         });
     }
+        // SAFETY: the only reference to FLAME_BAND, taken once in this single-threaded firmware.
+    let flame_band = unsafe { &mut *core::ptr::addr_of_mut!(FLAME_BAND) };
+    let layers = core::hint::black_box(&fixel_firmware::data::FLAME_LAYER_TEXELS);
+    ok &= counted("flame-baked", |pause, resume| {
+        fixel_firmware::flame_baked_scene::flame_baked_bands(
+            flame_band,
+            [&layers[0], &layers[1]],
+            4,
+            pause,
+            resume,
+        )
+    });
     ok
 }
 

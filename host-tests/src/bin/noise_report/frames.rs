@@ -172,6 +172,80 @@ fn flame_quad() -> [[Vertex<2>; 3]; 2] {
     [[a, b, c], [a, c, d]]
 }
 
+/// The flame from baked layers (`noise_flame_baked`: 4 frames of 80 x 96, t = i/8 s,
+/// layers baked here at run time) drawn whole: pixels in order, coverage (all), the FNV-1a
+/// checksum, and host ns/px of the firmware's band code (median of `runs`).
+pub fn flame_baked_frames(runs: u32) -> (Vec<u16>, Vec<bool>, u32, f64) {
+    use fixel::shading::noise::{
+        bake_flame_layer, BakedFlame, FLAME_KEYS, FLAME_LAYERS, FLAME_LAYER_SIDE,
+    };
+    let ramp = Ramp::from_keys(&FLAME_KEYS).unwrap();
+    let n = (FLAME_LAYER_SIDE * FLAME_LAYER_SIDE) as usize;
+    let (mut l0, mut l1) = (vec![0u16; n], vec![0u16; n]);
+    bake_flame_layer(&FLAME_LAYERS[0], FLAME_LAYER_SIDE, &mut l0).unwrap();
+    bake_flame_layer(&FLAME_LAYERS[1], FLAME_LAYER_SIDE, &mut l1).unwrap();
+    let vp = Viewport::new(0, 0, noise::FLAME_W, noise::FLAME_H).unwrap();
+    let mut px = Vec::new();
+    let mut sum = scenes::Fnv1a::default();
+    for i in 0..4 {
+        let shader =
+            BakedFlame::new(&ramp, &FLAME_LAYERS, [&l0, &l1], FLAME_LAYER_SIDE, i << 13).unwrap();
+        let draw = ShadedDraw::<_, Exact, NoDepth>::new(shader, vp, Cull::None).unwrap();
+        let mut color = vec![Rgb565::new(0, 0, 0); noise::FLAME_PIXELS];
+        let mut frame = Frame::new(&mut color, noise::FLAME_W, noise::FLAME_H).unwrap();
+        draw.clip_triangles(&flame_quad(), &mut frame).unwrap();
+        sum.pixels(frame.pixels());
+        px.extend(bits(frame.pixels()));
+    }
+    let mut band = Box::new([Rgb565::new(0, 0, 0); noise::FLAME_BAND_PIXELS]);
+    let mut times = Vec::new();
+    let mut pixels = 1;
+    for _ in 0..runs {
+        let t0 = Instant::now();
+        let r = crate::flame_baked_scene::flame_baked_bands(
+            &mut band,
+            [&l0, &l1],
+            4,
+            &mut || {},
+            &mut || {},
+        )
+        .unwrap();
+        times.push(t0.elapsed().as_secs_f64());
+        assert_eq!(r.checksum, sum.0, "baked flame frames differ");
+        pixels = r.stats.pixels.max(1);
+    }
+    times.sort_by(f64::total_cmp);
+    let cov = vec![true; px.len()];
+    (
+        px,
+        cov,
+        sum.0,
+        times[times.len() / 2] * 1e9 / f64::from(pixels),
+    )
+}
+
+/// The f64 flame from the baked layers' definition over the 4 frames, read at the nearest
+/// texel centres as the draw reads them: raw RGB565 in order.
+pub fn flame_baked_reference() -> Vec<u16> {
+    use fixel::shading::noise::{FLAME_LAYERS, FLAME_LAYER_SIDE};
+    use host_tests::reference::noise::{flame_layers, render_quad_with, LayerSampling};
+    (0..4)
+        .flat_map(|i| {
+            let t = f64::from(i) / 8.0;
+            render_quad_with(&flame_quad(), 1, noise::FLAME_W, noise::FLAME_H, |x, y| {
+                flame_layers(
+                    &FLAME_LAYERS,
+                    x,
+                    y,
+                    t,
+                    LayerSampling::Nearest(FLAME_LAYER_SIDE),
+                )
+            })
+            .rgb565()
+        })
+        .collect()
+}
+
 /// The f64 flame over the 4 frames, `ss × ss` samples per pixel: raw RGB565 in order.
 pub fn flame_reference(octaves: u32, ss: u32) -> Vec<u16> {
     (0..4)

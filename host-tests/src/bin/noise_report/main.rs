@@ -19,7 +19,8 @@
 //!   map's reference multiplies by the f64 trilinear light, its ideal by the unbaked
 //!   inverse-square light.
 //! * The flame of `noise_flame` (4 frames of 80 x 96) with 1, 3 and 5 octaves against the
-//!   f64 flame drawn on the same quad.
+//!   f64 flame drawn on the same quad, and the flame from two baked layers
+//!   (`noise_flame_baked`) against the f64 flame of its own definition.
 //! * The granite floor running to the horizon (`host_tests::noise_scenes`, 160 x 120): fixed
 //!   1 to 6 octaves against band-limited, same figures on the host, where band-limiting
 //!   matters most.
@@ -27,6 +28,9 @@
 //! Writes `noise.md`, `noise_plot.png` (cost against PSNR to the ideal) and the frames
 //! (`noise_marble.png`, `noise_light3d.png`, `noise_flame.png`, the floors).
 
+#[path = "../../../../examples/firmware/src/flame_baked_scene.rs"]
+#[allow(dead_code)] // the plain quad
+mod flame_baked_scene;
 #[path = "../../../../examples/firmware/src/light3d_scene.rs"]
 #[allow(dead_code)] // the whole-frame size
 mod light3d_scene;
@@ -60,7 +64,8 @@ use host_tests::reference::noise::{
 use host_tests::report_args::ReportArgs;
 
 use frames::{
-    flame_frames, flame_reference, rgb8, sphere_frame, sphere_frame_in, sphere_tris, whole_frame,
+    flame_baked_frames, flame_baked_reference, flame_frames, flame_reference, rgb8, sphere_frame,
+    sphere_frame_in, sphere_tris, whole_frame,
 };
 use plot::plot;
 use rows::{row, thousands, Row};
@@ -288,6 +293,18 @@ fn main() {
             &all,
         ));
     }
+    // The flame from two baked layers (`noise_flame_baked`): reference, its own definition
+    // read at the nearest texel centres; ideal, the per-pixel flame's.
+    let baked_ref = flame_baked_reference();
+    flame_rows.push(row(
+        "flame-baked",
+        flame_baked_frames(runs),
+        &mcu,
+        &baked_ref,
+        &all,
+        &flame_ideal,
+        &all,
+    ));
     for r in cube_rows.iter().chain(&flame_rows) {
         eprintln!(
             "noise_report: {}: {:.1} ns/px, {}",
@@ -412,7 +429,7 @@ fn main() {
     );
     table(
         &mut md,
-        "Firmware scene `noise_flame`: 4 frames of 80 x 96 (t = 0, 1/8, 2/8, 3/8 s), 1, 3 and 5 octaves (the firmware: 5)",
+        "Firmware scenes `noise_flame` and `noise_flame_baked`: 4 frames of 80 x 96 (t = 0, 1/8, 2/8, 3/8 s), 1, 3 and 5 octaves per pixel (the firmware: 5), and from two baked layers (`flame-baked`: `ref` is its own definition read at the nearest texel centres, `ideal` the per-pixel flame's)",
         &flame_rows,
     );
     table(

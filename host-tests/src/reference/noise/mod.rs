@@ -11,17 +11,19 @@
 //! patterns coloured from it are in `pattern`, the renderers that draw them in `render`
 //! (both re-exported here).
 
+mod flame_layers;
 mod pattern;
 mod render;
 
-pub use pattern::{flame, ramp, select_color, RefPattern};
+pub use flame_layers::{flame_layers, layer_turbulence, noise_tiled, LayerSampling};
+pub use pattern::{flame, flame_color, ramp, select_color, RefPattern};
 pub use render::{
-    footprint_pair, inverse_square, light_map_trilinear, render_flame, render_solid,
-    render_solid_lit, RefLight, RefSolidImage,
+    footprint_pair, inverse_square, light_map_trilinear, render_flame, render_quad_with,
+    render_solid, render_solid_lit, RefLight, RefSolidImage,
 };
 
 /// Perlin's doubled permutation table `p[512]` from fixel's 256 entries (data).
-fn p() -> &'static [usize; 512] {
+pub(crate) fn p() -> &'static [usize; 512] {
     static P: std::sync::OnceLock<[usize; 512]> = std::sync::OnceLock::new();
     P.get_or_init(|| {
         let perm = fixel::shading::noise::PERM;
@@ -29,16 +31,16 @@ fn p() -> &'static [usize; 512] {
     })
 }
 
-fn fade(t: f64) -> f64 {
+pub(crate) fn fade(t: f64) -> f64 {
     t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
 }
 
-fn lerp(t: f64, a: f64, b: f64) -> f64 {
+pub(crate) fn lerp(t: f64, a: f64, b: f64) -> f64 {
     a + t * (b - a)
 }
 
 /// Perlin's `grad`: the low 4 bits of the hash pick one of 12 gradient directions.
-fn grad(hash: usize, x: f64, y: f64, z: f64) -> f64 {
+pub(crate) fn grad(hash: usize, x: f64, y: f64, z: f64) -> f64 {
     let h = hash & 15;
     let u = if h < 8 { x } else { y };
     let v = if h < 4 {

@@ -128,11 +128,17 @@ impl RefPattern {
 /// colour `ramp(|x| + y/2 + bend)` times the fade `1 − y + bend / 2`. `x`, `y` in flame
 /// units, `t` in seconds; constants from fixel's (data).
 pub fn flame(x: f64, y: f64, t: f64, octaves: u32) -> [f64; 3] {
-    use fixel::shading::noise::{FLAME_CHURN, FLAME_GAIN, FLAME_KEYS, FLAME_RISE, FLAME_TURB_MID};
+    use fixel::shading::noise::{FLAME_CHURN, FLAME_RISE};
     let rise = f64::from(FLAME_RISE) / 65536.0;
     let churn = f64::from(FLAME_CHURN) / 65536.0;
     let p = [2.0 * x, 2.0 * y - rise * t, churn * t];
-    let turb = turbulence(p, RefOctaves::Fixed(octaves), 0.0);
+    flame_color(x, y, turbulence(p, RefOctaves::Fixed(octaves), 0.0))
+}
+
+/// The flame's colour at `(x, y)` (flame units) for the turbulence `turb` there: the
+/// colour of [`flame`] and of the flame from baked layers.
+pub fn flame_color(x: f64, y: f64, turb: f64) -> [f64; 3] {
+    use fixel::shading::noise::{FLAME_GAIN, FLAME_KEYS, FLAME_TURB_MID};
     let bend = f64::from(FLAME_GAIN) / 256.0 * (turb - f64::from(FLAME_TURB_MID) / 32768.0);
     let arg = x.abs().min(2.0) + y.clamp(0.0, 2.0) / 2.0 + bend;
     let c = ramp(&FLAME_KEYS, (arg * 256.0).clamp(0.0, 255.0));

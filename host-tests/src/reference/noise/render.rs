@@ -236,6 +236,18 @@ pub fn render_flame(
     width: u32,
     height: u32,
 ) -> RefSolidImage {
+    render_quad_with(tris, ss, width, height, |x, y| flame(x, y, t, octaves))
+}
+
+/// [`render_flame`] with any colour of the flame point `(x, y)` (flame units): the flame
+/// from baked layers draws through it too.
+pub fn render_quad_with(
+    tris: &[[Vertex<2>; 3]],
+    ss: u32,
+    width: u32,
+    height: u32,
+    color: impl Fn(f64, f64) -> [f64; 3],
+) -> RefSolidImage {
     let n = (width * height) as usize;
     let mut img = RefSolidImage {
         width,
@@ -259,7 +271,7 @@ pub fn render_flame(
                     let qs = q[0] + q[1] + q[2];
                     let v: [f64; 2] =
                         core::array::from_fn(|j| (0..3).map(|i| q[i] * xy[i][j]).sum::<f64>() / qs);
-                    let c = flame(v[0], v[1], t, octaves);
+                    let c = color(v[0], v[1]);
                     for i in 0..3 {
                         acc[i] += c[i];
                     }
