@@ -25,7 +25,7 @@ const CHIPS: [(&str, &str, f64); 3] = [
 ];
 
 /// Each technique's modes, most accurate first: what the mode is, its firmware scene.
-const TECHNIQUES: [(&str, &[(&str, &str)]); 6] = [
+const TECHNIQUES: [(&str, &[(&str, &str)]); 7] = [
     (
         "plain textured sphere (for scale)",
         &[("lit, bilinear", "sphere")],
@@ -44,6 +44,13 @@ const TECHNIQUES: [(&str, &[(&str, &str)]); 6] = [
         &[
             ("marble per pixel, 6 octaves", "noise"),
             ("marble baked into the texture", "noise_baked"),
+        ],
+    ),
+    (
+        "animated flame",
+        &[
+            ("5 octaves per pixel", "noise_flame"),
+            ("two baked layers of octaves", "noise_flame_baked"),
         ],
     ),
     (
