@@ -22,6 +22,8 @@ use fixel_scenes as demo;
 use host_tests::golden::assert_golden;
 use proptest::prelude::*;
 
+mod common;
+
 /// The `aa_edge` firmware's threshold (`examples/firmware/src/edge_scene.rs`).
 const THRESHOLD: u16 = 2047;
 
@@ -212,11 +214,63 @@ fn paint(k: &Case) -> (Vec<Rgb565>, Vec<u16>) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+    #![proptest_config(ProptestConfig::with_cases(common::cases(512)))]
 
     #[test]
     fn bands_give_the_whole_frame_within_half_an_lsb_of_the_rule(k in case()) {
         let (c, d) = paint(&k);
+        let whole = banded(&c, &d, k.w, k.h, k.t);
+        let (worst, _) = check(&c, &d, k.w, k.t, &whole);
+        prop_assert!(worst <= 0.5, "{}", worst);
+        prop_assert_eq!(banded(&c, &d, k.w, k.rows, k.t), whole);
+    }
+}
+
+/// A frame of one depth with a few single pixels moved nearer or farther (by a little or a
+/// lot, across a multiple of the quick test's step or not), any colours: lone edges at every
+/// position of rows long enough for the four-pixel skip, in the row, above and below.
+#[derive(Debug, Clone)]
+struct Speckle {
+    w: usize,
+    h: usize,
+    base: u16,
+    moved: Vec<(usize, usize, i32)>,
+    colours: Vec<u16>,
+    rows: usize,
+    t: u16,
+}
+
+fn speckle() -> impl Strategy<Value = Speckle> {
+    (1usize..70, 1usize..12, 1usize..10, 0u16..4096, any::<u16>()).prop_flat_map(
+        |(w, h, rows, t, base)| {
+            let step = prop_oneof![-40i32..40, -5000i32..5000, any::<u16>().prop_map(i32::from)];
+            (
+                prop::collection::vec((0..w, 0..h, step), 0..8),
+                prop::collection::vec(any::<u16>(), w * h),
+            )
+                .prop_map(move |(moved, colours)| Speckle {
+                    w,
+                    h,
+                    base,
+                    moved,
+                    colours,
+                    rows,
+                    t,
+                })
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(common::cases(512)))]
+
+    #[test]
+    fn lone_edges_anywhere_are_found(k in speckle()) {
+        let mut d = vec![k.base; k.w * k.h];
+        for &(x, y, step) in &k.moved {
+            d[y * k.w + x] = (i32::from(k.base) + step).clamp(0, 65535) as u16;
+        }
+        let c: Vec<Rgb565> = k.colours.iter().map(|&v| Rgb565::from(RawU16::new(v))).collect();
         let whole = banded(&c, &d, k.w, k.h, k.t);
         let (worst, _) = check(&c, &d, k.w, k.t, &whole);
         prop_assert!(worst <= 0.5, "{}", worst);

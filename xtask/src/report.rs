@@ -29,33 +29,52 @@ pub(crate) struct ReportArgs {
     /// Also copy report.md and the plots to docs/report/
     #[arg(long)]
     pub docs: bool,
+    /// Run only this host report binary (repeatable: `--only aa_report`) and only the
+    /// report firmwares it reads: its own page (`--docs` copies what it wrote)
+    #[arg(long, value_name = "REPORT", value_parser = clap::builder::PossibleValuesParser::new(HOST_REPORTS.map(|r| r.0)))]
+    pub only: Vec<String>,
 }
 
 /// The host report binaries of host-tests, run in this order, each with `--out` (the
 /// report directory) and, with the microcontrollers, `--mcu` (their counts); `true`: the
-/// binary also takes `--runs`.
-const HOST_REPORTS: [(&str, bool); 8] = [
+/// binary also takes `--runs`; then the report firmwares whose counts it reads (`None`:
+/// any, so all of them), which `--only` runs.
+type HostReport = (&'static str, bool, Option<&'static [&'static str]>);
+const HOST_REPORTS: [HostReport; 8] = [
     // Every benchmark scene and mode: report.md and the plots.
-    ("report", true),
+    ("report", true, None),
     // Shadow maps: their rows in shadow.md (host-tests/src/bin/shadow_report.rs).
-    ("shadow_report", false),
+    ("shadow_report", false, Some(&["report_shadow"])),
     // Solid textures: noise.md.
-    ("noise_report", true),
+    ("noise_report", true, None),
     // Environment mapping rows: env.md.
-    ("report_env", true),
+    ("report_env", true, None),
     // Texture-coordinate generation rows: mapping.md.
-    ("mapping_report", true),
-    // Anti-aliasing rows: aa.md.
-    ("aa_report", true),
+    ("mapping_report", true, Some(&["report_mapping"])),
+    // Anti-aliasing rows and the transparency rows: aa.md.
+    ("aa_report", true, Some(&["report_aa", "report_alpha"])),
     // Surface-detail rows (per-pixel lighting, bump, normal maps): surface.md.
-    ("surface_report", true),
+    ("surface_report", true, Some(&["report_surface"])),
     // Palette textures on the floor and cube against RGB565 (flash, speed, error):
     // palette.md, its instructions from docs/mcu.md.
-    ("palette_report", true),
+    ("palette_report", true, None),
 ];
 
 pub(crate) fn report(args: &ReportArgs) -> ExitCode {
     let (runs, mcu_on, install, docs) = (args.runs, !args.no_mcu, !args.no_install, args.docs);
+    let hosts: Vec<HostReport> = HOST_REPORTS
+        .into_iter()
+        .filter(|r| args.only.is_empty() || args.only.iter().any(|o| o == r.0))
+        .collect();
+    // The report firmwares to run: those the chosen reports read (`None`: all).
+    let firmwares: Option<Vec<&str>> = if args.only.is_empty() {
+        None
+    } else {
+        hosts.iter().try_fold(Vec::new(), |mut all, r| {
+            all.extend(r.2?);
+            Some(all)
+        })
+    };
     let t0 = Instant::now();
     let out = target_dir().join("report");
     if let Err(e) = std::fs::create_dir_all(&out) {
@@ -67,7 +86,7 @@ pub(crate) fn report(args: &ReportArgs) -> ExitCode {
     if mcu_on {
         println!("==> report 1/2: microcontrollers (QEMU)");
         let mut step = |s: &str| println!("==> {s} ({})", fmt_dur(t0.elapsed()));
-        match mcu::report_mcu(install, &tsv, &mut step) {
+        match mcu::report_mcu(install, &tsv, firmwares.as_deref(), &mut step) {
             Ok(v) => println!(
                 "==> {} mode counts written to {} ({})",
                 v.len(),
@@ -84,7 +103,7 @@ pub(crate) fn report(args: &ReportArgs) -> ExitCode {
     let out_s = out.to_string_lossy().into_owned();
     let tsv_s = tsv.to_string_lossy().into_owned();
     let runs_s = runs.to_string();
-    for (bin, timed) in HOST_REPORTS {
+    for (bin, timed, _) in hosts {
         let mut args = vec![
             "run",
             "--release",

@@ -55,12 +55,18 @@ const REPORT_BINS: [&str; 16] = [
 
 /// `cargo xtask report`, microcontroller part: builds the report firmwares for the
 /// Cortex-M0+ and Cortex-M4F, runs each once under QEMU and writes the per-mode counts to
-/// `tsv` (scene, mode, target, instructions, pixels, checksum). `progress` is told each step.
+/// `tsv` (scene, mode, target, instructions, pixels, checksum); only the firmwares in
+/// `only` when given (names from [`REPORT_BINS`]). `progress` is told each step.
 pub fn report_mcu(
     install: bool,
     tsv: &Path,
+    only: Option<&[&str]>,
     progress: &mut dyn FnMut(&str),
 ) -> Result<Vec<ModeCount>, String> {
+    let bins: Vec<&str> = REPORT_BINS
+        .into_iter()
+        .filter(|b| only.is_none_or(|o| o.contains(b)))
+        .collect();
     let llvm = ensure_tools(install)?;
     let plugin = build_plugin()?;
     let td = firmware_dir().join("target").join("report");
@@ -71,7 +77,7 @@ pub fn report_mcu(
         .arg(&td)
         .env("FIXEL_FW_MEMORY", "report");
     without_target_env(&mut cmd);
-    for b in REPORT_BINS {
+    for b in &bins {
         cmd.args(["--bin", b]);
     }
     for m in &REPORT_MCUS {
@@ -84,9 +90,9 @@ pub fn report_mcu(
          --target-dir target/report --bin report_* --target <M0+, M4F>)",
     )?;
     let mut all = Vec::new();
-    let total = REPORT_BINS.len() * REPORT_MCUS.len();
+    let total = bins.len() * REPORT_MCUS.len();
     let mut k = 0;
-    for bin in REPORT_BINS {
+    for bin in bins {
         for m in &REPORT_MCUS {
             k += 1;
             progress(&format!("[{k}/{total}] QEMU: {bin} on {}", m.label));
