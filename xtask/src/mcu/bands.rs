@@ -233,10 +233,14 @@ pub(super) fn models(f: &Figures) -> String {
 
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
 /// of the pixel loop, against the plain lit textured `sphere` (the same bands).
-const REALTIME: [(&str, &str); 3] = [
+const REALTIME: [(&str, &str); 4] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
+    ),
+    (
+        "environment map: cube-map face per triangle, its coordinates per vertex",
+        "env_cube_vertex",
     ),
     ("solid noise: marble baked into the texture", "noise_baked"),
     ("bump map: lighting resolved into the texture", "bump_fast"),

@@ -1,6 +1,7 @@
 //! `cargo xtask report`: the environment-mapping frame (`env::env_frame`: the benchmark
 //! sphere mirroring the 64-texel sky cube map, exact perspective, 8-row bands) once per
-//! variant: reflection per pixel or per vertex, nearest or bilinear within a face; then the
+//! variant: reflection per pixel or per vertex, nearest or bilinear within a face, and a
+//! face per triangle with its coordinates per vertex (`CubeVertex`); then the
 //! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map (per pixel,
 //! bilinear); then the textured sphere lit by the sky's irradiance and glossy maps
 //! (`EnvLit`, 6 x 16² each; report memory layout only, see `run`).
@@ -227,6 +228,18 @@ fn run() -> bool {
     ok &= per_pixel(&mut buf, "pixel-nearest", cube.with_filter(Nearest));
     ok &= per_vertex(&mut buf, "vertex-bilinear", cube.with_filter(Bilinear));
     ok &= per_vertex(&mut buf, "vertex-nearest", cube.with_filter(Nearest));
+    let s = core::hint::black_box(&data::SPHERE);
+    ok &= mode("cube-vertex-bilinear", |pause, resume| {
+        env::cube_vertex_frame(
+            &mut buf,
+            [&f[0], &f[1], &f[2], &f[3], &f[4], &f[5]],
+            &s.positions,
+            &s.normals,
+            &s.indices,
+            pause,
+            resume,
+        )
+    });
     let (Ok(sm), Ok(ll)) = (
         Texture::new(core::hint::black_box(&data::SKY_SPHERE64), 64, 64),
         Texture::new(core::hint::black_box(&data::SKY_LATLONG128X64), 128, 64),
