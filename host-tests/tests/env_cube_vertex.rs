@@ -7,9 +7,15 @@
 //!
 //! | what (benchmark sphere, frame 0, the 64² sky cube, bilinear) | measured |
 //! |---|---|
-//! | frame (exact perspective) vs its own f64 reference | see `--nocapture` |
+//! | frame (exact perspective) vs its own f64 reference | mean 0.0033, max 1 LSB, 56.2 dB |
+//! | frame, exact perspective, vs f64 per-pixel reflection | mean 0.385, p99 6, 28.4 dB |
+//! | frame, affine every 64 px, vs the same | mean 0.388, p99 6, 28.3 dB |
+//! | `ReflectPerVertex` (face per pixel, `env_vertex`) vs the same | mean 0.247, p99 4, 30.4 dB |
+//! | triangles whose vertices' faces differ (drawn per pixel) | 416 of 2208 |
 //!
-//! Figures are printed with `--nocapture`; the budgets are these plus a margin.
+//! Perspective correction buys 0.07 dB: the affine form (the `env_cube_vertex` scene's) is
+//! exact enough. The max (44 LSB) is on face edges, in every mode. Figures are printed with
+//! `--nocapture`; the budgets are these plus a margin.
 
 mod common;
 use common::any_bits_env;
