@@ -1,5 +1,5 @@
 //! The real-time modes beside the accurate ones they stand in for, on the benchmark
-//! sphere (frame 0, 320 x 240 each half):
+//! sphere (frame 0, 320 x 240 each panel):
 //!
 //! ```text
 //! cargo run --release --example realtime
@@ -7,8 +7,10 @@
 //!
 //! Writes to `target/pictures/`:
 //! * `realtime_env.png`: left, the per-pixel reflection in the 64-texel sky cube map
-//!   (`ReflectPerPixel`); right, sphere-map coordinates per vertex and that cube map baked
+//!   (`ReflectPerPixel`); middle, sphere-map coordinates per vertex and that cube map baked
 //!   into a 128 x 128 sphere map (`bake_sphere_map`), a plain textured draw (`SphereMapUvs`, the `env_matcap` scene);
+//!   right, the same cube map through one face per triangle and its coordinates per vertex
+//!   (`CubeVertex`, the `env_cube_vertex` scene);
 //! * `realtime_noise.png`: left, the marble solid texture per pixel (`SolidShader`,
 //!   band-limited to 6 octaves); right, the same marble baked into a 256 x 128 texture for
 //!   the sphere's own coordinates (`noise::bake`) and drawn as the textured sphere is (the
@@ -32,10 +34,10 @@ use fixel::pipeline::{
     DepthLess, Draw, Exact, ModulateIntensity, Pipeline, Replace, ShadedDraw, SubdividedBy,
 };
 use fixel::scene::{draw_mesh_walked, CachedVertex, DirectionalLight, MeshTransform, SphereMapUvs};
-use fixel::shading::env::{sky, CubeMap, EnvVertices, ReflectPerPixel};
+use fixel::shading::env::{sky, CubeMap, CubeVertex, EnvVertices, ReflectPerPixel};
 use fixel::shading::noise::{bake, BandLimit, Pattern, Ramps, SolidMesh, SolidShader};
 use fixel::surface::Frame;
-use fixel::texture::{Bilinear, ClampToEdge, Repeat, Texture};
+use fixel::texture::{Bilinear, ClampToEdge, Lod, MipTexture, Repeat, Texture};
 use fixel_scenes as demo;
 
 const W: u32 = 320;
@@ -52,10 +54,15 @@ fn buffers() -> (Vec<Rgb565>, Vec<u16>) {
 
 /// Two frames side by side.
 fn pair(a: &[Rgb565], b: &[Rgb565]) -> Vec<Rgb565> {
+    row(&[a, b])
+}
+
+/// Frames side by side, left to right.
+fn row(frames: &[&[Rgb565]]) -> Vec<Rgb565> {
     let w = W as usize;
-    a.chunks(w)
-        .zip(b.chunks(w))
-        .flat_map(|(l, r)| l.iter().chain(r).copied())
+    (0..H as usize)
+        .flat_map(|y| frames.iter().flat_map(move |f| &f[y * w..(y + 1) * w]))
+        .copied()
         .collect()
 }
 
@@ -128,7 +135,38 @@ fn env(out: &std::path::Path) {
         MeshTransform::new(&model, &cam).with_uvs(SphereMapUvs),
         false,
     );
-    common::write_png(&out.join("realtime_env.png"), 2 * W, H, &pair(&c, &fast));
+    let chains: [MipTexture<'_>; 6] = core::array::from_fn(|i| {
+        MipTexture::single(Texture::new(&faces[i], 64, 64).expect("face"))
+    });
+    let per_vertex: Vec<[Vertex<3>; 3]> = s
+        .indices
+        .iter()
+        .map(|t| {
+            t.map(|i| {
+                let i = usize::from(i);
+                setup
+                    .per_vertex(s.positions[i], s.normals[i])
+                    .expect("vertex")
+            })
+        })
+        .collect();
+    let (mut cv, mut z) = buffers();
+    let mut f = Frame::new(&mut cv, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    let shader = CubeVertex::new(&chains, Bilinear, Lod::default()).expect("faces");
+    ShadedDraw::<_, SubdividedBy<6>, DepthLess>::new(shader, vp, Cull::Back)
+        .expect("draw")
+        .clip_triangles(&per_vertex, &mut f)
+        .expect("drawn");
+    common::write_png(
+        &out.join("realtime_env.png"),
+        3 * W,
+        H,
+        &row(&[&c, &fast, &cv]),
+    );
 }
 
 /// `pattern` per pixel (left) and baked (right) into `out/name`.

@@ -51,10 +51,11 @@ pub use texcoord::{check_footprints_bound, TexBinding, TexTriangle};
 
 /// The most varyings a shader may declare. The set-up keeps one plane per varying (12 bytes)
 /// and the span loop one running value and one step each, sized by the shader's own count,
-/// so the limit costs nothing to a shader that declares fewer; 9 covers a normal, an eye
-/// vector and a colour ([`env::Tinted`]). The band renderer's bins hold triangles of at
-/// most [`BINNED_VARYINGS`](crate::surface::BINNED_VARYINGS) (8).
-pub const MAX_VARYINGS: usize = 9;
+/// so the limit costs nothing to a shader that declares fewer; 11 covers a normal, an eye
+/// vector, texture coordinates and a colour ([`env::Tinted`] around [`env::EnvLit`]). The
+/// band renderer's bins hold triangles of at most
+/// [`BINNED_VARYINGS`](crate::surface::BINNED_VARYINGS) (8).
+pub const MAX_VARYINGS: usize = 11;
 
 /// A shader's interpolated attributes: `[i32; N]` with `N <= MAX_VARYINGS`.
 ///
@@ -63,7 +64,7 @@ pub const MAX_VARYINGS: usize = 9;
 ///
 /// ```compile_fail
 /// use fixel::shading::Varyings;
-/// const TOO_MANY: usize = <[i32; 10] as Varyings>::N;
+/// const TOO_MANY: usize = <[i32; 12] as Varyings>::N;
 /// ```
 pub trait Varyings: Copy + core::fmt::Debug + 'static {
     /// The number of varyings, at most [`MAX_VARYINGS`].
@@ -80,7 +81,7 @@ impl<const N: usize> Varyings for [i32; N] {
     const N: usize = {
         assert!(
             N <= MAX_VARYINGS,
-            "a shader declares more varyings than fixel's set-up supports (MAX_VARYINGS = 9)"
+            "a shader declares more varyings than fixel's set-up supports (MAX_VARYINGS = 11)"
         );
         N
     };

@@ -7,13 +7,13 @@
 //! triangle piece, with no heap.
 //!
 //! Screen triangles carry the varyings their draw declares (`N` of [`ScreenTriangle<N>`],
-//! 0 to [`BINNED_VARYINGS`], one less than a shader may declare, [`MAX_VARYINGS`]). The
+//! 0 to [`BINNED_VARYINGS`], of the [`MAX_VARYINGS`] a shader may declare). The
 //! bins store them as an [`AnyTriangle`], an enum with one variant per `N`: a bin is as
 //! large as a triangle of 8 varyings (168 bytes on 32-bit
 //! targets, against 128 for a classic triangle alone), and a band reads a binned triangle
 //! in place, without copying it. A caller-provided word arena with a size per draw would
 //! save up to 40 bytes per classic bin, at the price of a copy per triangle and band; a
-//! variant of 9 varyings would cost every bin 12 bytes more, so a 9-varying draw
+//! variant of 9 varyings would cost every bin 12 bytes more, so a draw of 9 to 11 varyings
 //! ([`Tinted`](crate::shading::env::Tinted)) fills whole frames or a frame per band.
 //!
 //! ```
@@ -56,8 +56,8 @@ use crate::pipeline::{DepthStage, Draw, KeptSetup, ProjectionStage, ShadedDraw};
 use crate::shading::{Shader, MAX_VARYINGS};
 
 /// The most varyings of a triangle the band renderer's bins hold ([`AnyTriangle`] has a
-/// variant per count up to it): one less than [`MAX_VARYINGS`], so that a bin stays the
-/// size of a triangle of 8 varyings.
+/// variant per count up to it): fewer than [`MAX_VARYINGS`], so that a bin stays the size
+/// of a triangle of 8 varyings.
 pub const BINNED_VARYINGS: usize = 8;
 
 mod sealed {

@@ -213,3 +213,33 @@ pub fn lit_vertex(
         ],
     ))
 }
+
+/// The `env_cube_vertex` frame: the sphere (`positions`, `normals`, `indices`) as a mirror
+/// of the six 64-texel `faces` through one face per triangle and its coordinates per vertex
+/// (`CubeVertex`, bilinear, clamp-to-edge), affine in 64-pixel pieces, in the same bands as
+/// [`env_frame`].
+#[allow(clippy::too_many_arguments)]
+pub fn cube_vertex_frame(
+    buf: &mut EnvBuffers,
+    faces: [&[Rgb565]; 6],
+    positions: &[Vec3],
+    normals: &[Vec3],
+    indices: &[[u16; 3]],
+    pause: &mut dyn FnMut(),
+    resume: &mut dyn FnMut(),
+) -> Result<FrameResult, Error> {
+    use fixel::texture::{Lod, MipTexture};
+    let t = |k: usize| Texture::new(faces[k], ENV_SIZE, ENV_SIZE).map(MipTexture::single);
+    let chains = [t(0)?, t(1)?, t(2)?, t(3)?, t(4)?, t(5)?];
+    let shader = fixel::shading::env::CubeVertex::new(&chains, Bilinear, Lod::default())?;
+    env_frame::<_, fixel::pipeline::SubdividedBy<6>, 3>(
+        buf,
+        shader,
+        positions,
+        normals,
+        indices,
+        EnvVertices::per_vertex,
+        pause,
+        resume,
+    )
+}

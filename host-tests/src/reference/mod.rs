@@ -285,6 +285,7 @@ fn shade_fragment(
     img.covered[idx] = true;
     img.depth[idx] = z;
 }
+pub mod cube_vertex;
 pub mod lighting;
 pub mod matcap;
 pub mod noise;

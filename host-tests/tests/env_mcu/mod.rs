@@ -1,4 +1,5 @@
-//! The environment-mapping firmware frames (`env_pixel`, `env_vertex`), rendered on the host
+//! The environment-mapping firmware frames (`env_pixel`, `env_vertex`, `env_cube_vertex`),
+//! rendered on the host
 //! through the very same code (`examples/firmware/src/env.rs`), and their checksums: part of
 //! the `mcu_checksums` test (its `mcu-expected` lines are what `cargo xtask mcu` compares).
 //! The frames are also checked against a whole-frame draw of the same triangles.
@@ -10,10 +11,11 @@ mod env;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::Vec3;
-use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
-use fixel::shading::env::{sky, EnvVertices, ReflectPerPixel, ReflectPerVertex};
+use fixel::pipeline::{DepthLess, Exact, ProjectionStage, ShadedDraw, SubdividedBy};
+use fixel::shading::env::{sky, CubeVertex, EnvVertices, ReflectPerPixel, ReflectPerVertex};
 use fixel::shading::Shader;
 use fixel::surface::Frame;
+use fixel::texture::{Bilinear, Lod, MipTexture, Texture};
 
 use crate::scenes::{Fnv1a, H, W};
 
@@ -28,7 +30,7 @@ fn faces() -> Vec<Vec<Rgb565>> {
 }
 
 /// The same triangles drawn into one whole frame, hashed the same way.
-fn whole<S: Shader<Varyings = [i32; N]>, const N: usize>(
+fn whole<S: Shader<Varyings = [i32; N]>, P: ProjectionStage, const N: usize>(
     shader: S,
     vertex: impl Fn(&EnvVertices, Vec3, Vec3) -> Option<Vertex<N>>,
 ) -> (u32, u32) {
@@ -59,12 +61,9 @@ fn whole<S: Shader<Varyings = [i32; N]>, const N: usize>(
         .unwrap()
         .with_depth(&mut depth)
         .unwrap();
-    let d = ShadedDraw::<_, Exact, DepthLess>::new(
-        shader,
-        Viewport::new(0, 0, W, H).unwrap(),
-        Cull::Back,
-    )
-    .unwrap();
+    let d =
+        ShadedDraw::<_, P, DepthLess>::new(shader, Viewport::new(0, 0, W, H).unwrap(), Cull::Back)
+            .unwrap();
     let px = d.clip_triangles(&tris, &mut frame).unwrap();
     let mut h = Fnv1a::default();
     h.pixels(frame.pixels());
@@ -91,7 +90,7 @@ fn env_frames() {
     .unwrap();
     crate::print("env_pixel", &r);
     assert_eq!(
-        whole(ReflectPerPixel(cube), EnvVertices::per_pixel),
+        whole::<_, Exact, 6>(ReflectPerPixel(cube), EnvVertices::per_pixel),
         (r.checksum, r.stats.pixels)
     );
     // The whole-frame firmware's own path.
@@ -125,7 +124,7 @@ fn env_frames() {
     .unwrap();
     crate::print("env_vertex", &r);
     assert_eq!(
-        whole(ReflectPerVertex(cube), EnvVertices::per_vertex),
+        whole::<_, Exact, 3>(ReflectPerVertex(cube), EnvVertices::per_vertex),
         (r.checksum, r.stats.pixels)
     );
     let w = env::env_frame_whole::<_, Exact, 3>(
@@ -141,4 +140,23 @@ fn env_frames() {
     )
     .unwrap();
     crate::print_whole("env_vertex", &r, &w);
+    // The cube map per vertex: a face per triangle, affine in 64-pixel pieces.
+    let r = env::cube_vertex_frame(
+        &mut buf,
+        [&f[0], &f[1], &f[2], &f[3], &f[4], &f[5]],
+        &sphere.positions,
+        &sphere.normals,
+        &sphere.indices,
+        &mut nop1,
+        &mut nop2,
+    )
+    .unwrap();
+    crate::print("env_cube_vertex", &r);
+    let chains: [MipTexture<'_>; 6] =
+        core::array::from_fn(|k| MipTexture::single(Texture::new(&f[k], 64, 64).unwrap()));
+    let cv = CubeVertex::new(&chains, Bilinear, Lod::default()).unwrap();
+    assert_eq!(
+        whole::<_, SubdividedBy<6>, 3>(cv, EnvVertices::per_vertex),
+        (r.checksum, r.stats.pixels)
+    );
 }

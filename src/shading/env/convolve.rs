@@ -218,29 +218,56 @@ impl<D: EnvLookup, G: EnvLookup, F: TexSampler, WU: WrapMode, WV: WrapMode> Shad
 
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; 8], TexTriangle>) -> Option<u16> {
+        Some(self.lit(f.triangle, &f.varyings, f.lambda, None))
+    }
+}
+
+impl<D: EnvLookup, G: EnvLookup, F: TexSampler, WU: WrapMode, WV: WrapMode>
+    EnvLit<'_, D, G, F, WU, WV>
+{
+    /// The colour of a pixel from its first eight varyings (`n`, `v` in the fitted
+    /// formats of [`EnvLit::triangle`](Shader::triangle), then `u, v`) and `lambda`: the
+    /// base texel times `tint` (Q8 per channel, `0..=256`; `None` is white) times the
+    /// irradiance, plus `ks` times the glossy texel. The tint and the irradiance multiply
+    /// in Q8 first, `min(256, (e · (t + 1)) >> 8)`: `e` itself for `t` = 255 and 256 (an
+    /// interpolated white colour comes out one Q8 step below 1.0 where the interpolator
+    /// rounds down), within one step of `e · t / 256` otherwise; the base then takes one
+    /// rounding either way.
+    #[inline(always)]
+    pub(crate) fn lit(
+        &self,
+        tri: TexTriangle,
+        a: &[i32; 8],
+        lambda: i32,
+        tint: Option<[u16; 3]>,
+    ) -> u16 {
         const S: u32 = VARYING_BITS - FIT_BITS;
-        let [nx, ny, nz, vx, vy, vz, u, v] = f.varyings;
-        let n = [nx >> S, ny >> S, nz >> S];
+        let n = [a[0] >> S, a[1] >> S, a[2] >> S];
         let e = self.diffuse.lookup(n);
         let g = self
             .glossy
-            .lookup(reflect_fit(n, [vx >> S, vy >> S, vz >> S]));
+            .lookup(reflect_fit(n, [a[3] >> S, a[4] >> S, a[5] >> S]));
         let ks = self.specular;
         let g = if ks >= 256 {
             g
         } else {
             modulate_rgb(g, ks, ks, ks)
         };
-        let base = self.base.sample(f.triangle, u, v, f.lambda);
-        let lit = modulate_rgb(
-            base,
+        let base = self.base.sample(tri, a[6], a[7], lambda);
+        let mut q = [
             q8_of(e >> 11, false),
             q8_of((e >> 5) & 63, true),
             q8_of(e & 31, false),
-        );
+        ];
+        if let Some(t) = tint {
+            for (q, t) in q.iter_mut().zip(t) {
+                *q = ((u32::from(*q) * (u32::from(t.min(256)) + 1)) >> 8).min(256) as u16;
+            }
+        }
+        let lit = modulate_rgb(base, q[0], q[1], q[2]);
         let r = ((lit >> 11) + (g >> 11)).min(31);
         let gg = ((lit >> 5) & 63) + ((g >> 5) & 63);
         let b = ((lit & 31) + (g & 31)).min(31);
-        Some((r << 11) | (gg.min(63) << 5) | b)
+        (r << 11) | (gg.min(63) << 5) | b
     }
 }

@@ -8,6 +8,8 @@
 //!   nearest); [`cube_mip`]: [`MipCubeMap`] and [`ReflectPerPixelMip`], a mip chain per
 //!   face with GL's LOD per pixel ([`reflect_lod`]) ([`SeamlessMipCubeMap`]: seamless on every level, the sampler's
 //!   filters kept).
+//! * [`cube_vertex`]: [`CubeVertex`], the real-time cube map: face coordinates computed
+//!   per vertex on one face per triangle, then a plain textured draw of that face.
 //! * [`direction`]: [`Direction`] and [`DirectionMip`], a cube map read in an interpolated
 //!   direction (sky boxes, GL's `samplerCube`), the latter with GL's cube-map level of
 //!   detail per pixel, both times a vertex colour.
@@ -60,6 +62,7 @@ pub mod angles;
 pub mod convolve;
 pub mod cube;
 pub mod cube_mip;
+pub mod cube_vertex;
 pub mod direction;
 pub mod latlong;
 pub mod reflect;
@@ -71,6 +74,7 @@ pub mod tinted;
 pub use convolve::{convolve_face, EnvLit, Lobe};
 pub use cube::{face_coords, CubeMap, EnvLookup, FaceCoords, FACE_NAMES};
 pub use cube_mip::{EnvLookupLod, MipCubeMap, ReflectPerPixelMip};
+pub use cube_vertex::{CubeVertex, CubeVertexTriangle};
 pub use direction::{Direction, DirectionMip, WHITE};
 pub use latlong::LatLongMap;
 pub use reflect::{reflect_fit, reflect_unit, EnvVertices, ReflectPerPixel, ReflectPerVertex};

@@ -234,10 +234,15 @@ pub(super) fn models(f: &Figures) -> String {
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
 /// of the pixel loop, against the plain lit textured `sphere` (the same bands); and the
 /// flame from baked layers against the same quad textured (`flame_plain`).
-const REALTIME: [(&str, &str, &str); 6] = [
+const REALTIME: [(&str, &str, &str); 7] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
+        "sphere",
+    ),
+    (
+        "environment map: cube-map face per triangle, its coordinates per vertex",
+        "env_cube_vertex",
         "sphere",
     ),
     (

@@ -73,7 +73,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 37] = [
+const SCENES: [&str; 38] = [
     "cube",
     // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
     // compared with.
@@ -82,6 +82,9 @@ const SCENES: [&str; 37] = [
     // The sphere as a mirror through per-vertex sphere-map coordinates: a plain textured
     // draw, beside the sphere it is compared with.
     "env_matcap",
+    // The sphere as a mirror through a cube-map face per triangle and face coordinates per
+    // vertex: a plain textured draw of that face, beside the sphere as well.
+    "env_cube_vertex",
     // The marble, wood and granite baked into the sphere's texture (at build time): the same
     // draw as `sphere`.
     "noise_baked",

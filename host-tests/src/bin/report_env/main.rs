@@ -2,7 +2,8 @@
 //! environment-mapped benchmark sphere (frame 0, the 64-texel procedural sky cube map,
 //! exact perspective): reflection per pixel or per vertex, nearest or bilinear; then the
 //! same sky as a 64 x 64 sphere map and a 128 x 64 latitude-longitude map; then the
-//! textured sphere lit by the sky's irradiance and glossy maps (`EnvLit`).
+//! textured sphere lit by the sky's irradiance and glossy maps (`EnvLit`); then the
+//! real-time modes (sphere-map coordinates per vertex, a cube-map face per triangle).
 //!
 //! ```text
 //! report_env --out DIR [--runs N] [--mcu mcu.tsv]
@@ -37,7 +38,7 @@ use fixel::geometry::Vertex;
 use fixel::math::Vec3;
 use fixel::pipeline::Exact;
 use fixel::shading::env::{
-    convolve_face, sky, CubeMap, EnvLit, EnvVertices, LatLongMap, Lobe, MipCubeMap,
+    convolve_face, sky, CubeMap, CubeVertex, EnvLit, EnvVertices, LatLongMap, Lobe, MipCubeMap,
     ReflectPerPixel, ReflectPerPixelMip, ReflectPerVertex, SphereMap,
 };
 use fixel::shading::TexBinding;
@@ -481,6 +482,43 @@ fn main() {
             mcu_cell(name, &row.want, "Cortex-M4F"),
             fmt_err(&e),
             fmt_err(&cmp(&row.image, &row.own))
+        );
+    }
+
+    // The real-time cube map: a face per triangle, its coordinates per vertex, a plain
+    // textured draw (affine in 64-pixel pieces, as the `env_cube_vertex` scene).
+    {
+        let name = "cube-vertex-bilinear";
+        let f = host_tests::env_scene::faces(SIZE);
+        let chains: [MipTexture<'_>; 6] = core::array::from_fn(|k| {
+            MipTexture::single(Texture::new(&f[k], SIZE, SIZE).expect("face"))
+        });
+        let shader = CubeVertex::new(&chains, Bilinear, Lod::default()).expect("faces");
+        let (img, ns) =
+            measure::run_in::<_, fixel::pipeline::SubdividedBy<6>, 3>(shader, &sphere.vertex, runs);
+        let m = Box::new(fixel_scenes::sphere());
+        let mut buf = Box::new(env::EnvBuffers::new());
+        let (mut a, mut b) = (|| {}, || {});
+        let r = env::cube_vertex_frame(
+            &mut buf,
+            [&f[0], &f[1], &f[2], &f[3], &f[4], &f[5]],
+            &m.positions,
+            &m.normals,
+            &m.indices,
+            &mut a,
+            &mut b,
+        )
+        .expect("band frame");
+        let want = (format!("0x{:08x}", r.checksum), u64::from(r.stats.pixels));
+        let e = cmp(&img, &ref_pixel(&sphere, &rf, RefFilter::Bilinear));
+        let own = host_tests::reference::cube_vertex::render_cube_vertex(&sphere.pixel, &rf, W, H);
+        point(name, ns, &want, &e);
+        md += &format!(
+            "| {name} (face per triangle, its uv per vertex, plain textured draw, affine every 64 px) | {ns:.1} | {} | {} | {} | {} |\n",
+            mcu_cell(name, &want, "Cortex-M0+"),
+            mcu_cell(name, &want, "Cortex-M4F"),
+            fmt_err(&e),
+            fmt_err(&cmp(&img, &own))
         );
     }
 

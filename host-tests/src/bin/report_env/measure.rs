@@ -9,7 +9,7 @@ use std::time::Instant;
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::geometry::{Cull, Vertex, Viewport};
 use fixel::math::{Mat4, Vec3};
-use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
+use fixel::pipeline::{DepthLess, Exact, ProjectionStage, ShadedDraw};
 use fixel::shading::env::EnvVertices;
 use fixel::shading::Shader;
 use fixel::surface::{Frame, DEPTH_CLEAR};
@@ -47,14 +47,14 @@ pub fn mesh<const V: usize, const T: usize>(
 
 pub type Image = (Vec<u16>, Vec<bool>);
 
-fn draw<S: Shader<Varyings = [i32; N]>, const N: usize>(
+fn draw<S: Shader<Varyings = [i32; N]>, P: ProjectionStage, const N: usize>(
     shader: S,
     tris: &[[Vertex<N>; 3]],
     color: &mut [Rgb565],
     depth: &mut [u16],
 ) -> u32 {
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
-    let d = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
+    let d = ShadedDraw::<_, P, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
     let mut f = Frame::new(color, W, H)
         .expect("frame")
         .with_depth(depth)
@@ -63,8 +63,17 @@ fn draw<S: Shader<Varyings = [i32; N]>, const N: usize>(
     d.clip_triangles(tris, &mut f).expect("draw")
 }
 
-/// The frame, and the median ns per pixel over `runs` draws.
+/// The frame, and the median ns per pixel over `runs` draws (exact perspective).
 pub fn run<S: Shader<Varyings = [i32; N]>, const N: usize>(
+    shader: S,
+    tris: &[[Vertex<N>; 3]],
+    runs: u32,
+) -> (Image, f64) {
+    run_in::<S, Exact, N>(shader, tris, runs)
+}
+
+/// [`run`] under projection stage `P`.
+pub fn run_in<S: Shader<Varyings = [i32; N]>, P: ProjectionStage, const N: usize>(
     shader: S,
     tris: &[[Vertex<N>; 3]],
     runs: u32,
@@ -75,7 +84,7 @@ pub fn run<S: Shader<Varyings = [i32; N]>, const N: usize>(
     let mut px = 0;
     for _ in 0..runs {
         let t = Instant::now();
-        px = draw(shader, tris, &mut color, &mut depth);
+        px = draw::<S, P, N>(shader, tris, &mut color, &mut depth);
         ns.push(t.elapsed().as_nanos() as f64 / f64::from(px.max(1)));
     }
     ns.sort_by(f64::total_cmp);
