@@ -43,7 +43,7 @@ use fixel::surface::BandRange;
 use fixel::texture::MipTexture;
 use fixel_scenes as demo;
 use model_scene::{ModelBuffers, ModelTarget};
-use scenes::{Buffers, FrameResult, SmallBuffers, SphereBuffers, Target};
+use scenes::{Buffers, FrameResult, SmallBuffers, Target};
 
 /// One scene's counts (a row of `scenes.csv`).
 struct Row {
@@ -111,6 +111,11 @@ fn row(
 /// pixels, and each triangle's band range to count the pieces from.
 type RangeBuffers = Buffers<64, 32, 0, 16>;
 
+/// The sphere firmware's storage without kept set-ups: a triangle kept whole for the next
+/// band ends its band range in the band that keeps it, so the pieces are counted from the
+/// ranges of a frame that keeps none (the same pixels).
+type PieceBuffers = Buffers<{ scenes::RANGES }, { scenes::CACHE }, 0, 0>;
+
 fn rows() -> Vec<Row> {
     let (mut n1, mut n2) = (|| {}, || {});
     let mut out = Vec::new();
@@ -158,7 +163,7 @@ fn rows() -> Vec<Row> {
     // The sphere and the teapot: band ranges, as their firmwares draw them.
     let t256 = checker(256, 128);
     let tex = Texture::new(&t256, 256, 128).unwrap();
-    let mut buf = Box::new(SphereBuffers::with_storage());
+    let mut buf = Box::new(PieceBuffers::with_storage());
     let sphere = Box::new(demo::sphere());
     let mesh = sphere.mesh().unwrap();
     let r = scenes::sphere(Target::Bands(&mut *buf), tex, &mesh, 0, &mut n1, &mut n2).unwrap();
@@ -171,7 +176,7 @@ fn rows() -> Vec<Row> {
         &teapot::TEAPOT_INDICES,
     )
     .unwrap();
-    let mut buf = Box::new(SphereBuffers::with_storage());
+    let mut buf = Box::new(PieceBuffers::with_storage());
     let r = scenes::teapot(Target::Bands(&mut *buf), tex, &mesh, 0, &mut n1, &mut n2).unwrap();
     out.push(row("teapot", "ranges", wh, &mesh, &r, &buf.ranges));
 
@@ -191,7 +196,7 @@ fn rows() -> Vec<Row> {
         fox::FOX_LEVELS,
     )
     .unwrap();
-    let mut mb = Box::new(ModelBuffers::<{ model_scene::FOX_RANGES }>::new());
+    let mut mb = Box::new(ModelBuffers::<{ model_scene::FOX_RANGES }, 0>::new());
     let r = model_scene::render(
         ModelTarget::Bands(&mut mb),
         tex,
@@ -218,10 +223,7 @@ fn rows() -> Vec<Row> {
         c::CESIUM_MAN_LEVELS,
     )
     .unwrap();
-    let mut mb = Box::new(ModelBuffers::<
-        { model_scene::CESIUM_MAN_RANGES },
-        { model_scene::CESIUM_MAN_SETUPS },
-    >::new());
+    let mut mb = Box::new(ModelBuffers::<{ model_scene::CESIUM_MAN_RANGES }, 0>::new());
     let r = model_scene::render(
         ModelTarget::Bands(&mut mb),
         tex,
