@@ -18,7 +18,8 @@ const RGB565: u64 = 2;
 /// Bytes of a band range, a cached prepared vertex and a kept set-up on the 32-bit parts.
 const RANGE: u64 = 2;
 const CACHED_VERTEX: u64 = 32;
-const KEPT_SETUP: u64 = 88;
+/// (`KeptSetup` holds no pointer: the host's size is the parts'.)
+const KEPT_SETUP: u64 = core::mem::size_of::<fixel::pipeline::KeptSetup>() as u64;
 
 /// The Fox's texture as the firmware bakes it (`assets/gltf/fox.rs`): 128 x 128, 8 levels.
 const FOX_TEXTURE: (u32, u32, u32) = (128, 128, 8);

@@ -1,12 +1,14 @@
 //! What a model's frame does, counted by drawing it on the host as the model firmwares
 //! (`examples/firmware/src/model_scene.rs`) draw the glTF samples: lit, bilinear, repeat,
 //! perspective exact every 64 pixels, depth-tested, back faces culled, in bands of 8 rows
-//! through band ranges (one per triangle), a 64-entry vertex cache and 36 kept set-ups.
-//! The frame's pixels, screen triangles and band pieces, and each band's share of them,
-//! feed the cost model of `fit.rs`.
+//! through band ranges (one per triangle) and a 64-entry vertex cache. It keeps no set-ups
+//! for the next band (the same pixels): a triangle kept whole for the next band ends its
+//! band range where it is kept, and the pieces are counted from the ranges. The frame's
+//! pixels, screen triangles and band pieces, and each band's share of them, feed the cost
+//! model of `fit.rs`.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel::pipeline::{KeptSetup, Pipeline};
+use fixel::pipeline::Pipeline;
 use fixel::prelude::*;
 use fixel::scene::{mesh_to_sink, CachedVertex, Camera, DirectionalLight, Mesh, MeshTransform};
 use fixel::surface::{BandRange, Binned};
@@ -30,7 +32,7 @@ pub const ROWS: u32 = 8;
 /// Prepared vertices cached across the band passes (the firmwares' `CACHE`).
 pub const CACHE: usize = 64;
 /// Set-ups kept from one band for the next (the firmwares' `SETUPS`).
-pub const SETUPS: usize = 36;
+pub const SETUPS: usize = 31;
 
 /// A baked model's data and texture, in fixel's formats.
 pub struct Model {
@@ -102,7 +104,6 @@ pub fn count(
     let band_px = (w * ROWS) as usize;
     let mut color = vec![Rgb565::new(0, 0, 0); band_px];
     let mut depth = vec![0u16; band_px];
-    let mut setups = vec![KeptSetup::EMPTY; SETUPS];
     let mut cache = vec![CachedVertex::EMPTY; CACHE];
     let mut ranges = vec![BandRange::EMPTY; mesh.triangles()];
     let mut bins: [Binned; 0] = [];
@@ -113,8 +114,7 @@ pub fn count(
         let mut bands = BandRenderer::new(&mut color, w, ROWS, h)
             .map_err(err)?
             .with_depth(&mut depth)
-            .map_err(err)?
-            .with_setup_cache(&mut setups);
+            .map_err(err)?;
         bands
             .render_spans(
                 &[&draw],
