@@ -28,7 +28,13 @@ const CHIPS: [(&str, &str, f64); 3] = [
 const TECHNIQUES: [(&str, &[(&str, &str)]); 7] = [
     (
         "plain textured sphere (for scale)",
-        &[("lit, bilinear", "sphere")],
+        &[
+            ("lit, bilinear", "sphere"),
+            (
+                "lit, bilinear from footprints sized at compile time",
+                "sphere_sized",
+            ),
+        ],
     ),
     (
         "environment map",
