@@ -86,6 +86,33 @@ fn walked<G: fixel::scene::VertexUv>(
     c
 }
 
+/// The benchmark sphere's triangles, each vertex from its position and normal by `vertex`.
+fn sphere_triangles<const N: usize>(
+    s: &demo::MeshData<{ demo::SPHERE_VERTICES }, { demo::SPHERE_TRIANGLES }>,
+    vertex: impl Fn(Vec3, Vec3) -> Option<Vertex<N>>,
+) -> Vec<[Vertex<N>; 3]> {
+    s.indices
+        .iter()
+        .map(|t| {
+            t.map(|i| {
+                vertex(s.positions[usize::from(i)], s.normals[usize::from(i)]).expect("vertex")
+            })
+        })
+        .collect()
+}
+
+/// A cleared, depth-tested whole frame drawn by `draw`: its colours.
+fn draw_whole(draw: impl FnOnce(&mut Frame<'_, Rgb565>)) -> Vec<Rgb565> {
+    let (mut c, mut z) = buffers();
+    let mut f = Frame::new(&mut c, W, H)
+        .expect("frame")
+        .with_depth(&mut z)
+        .expect("depth");
+    f.clear(Rgb565::new(0, 0, 0));
+    draw(&mut f);
+    c
+}
+
 fn env(out: &std::path::Path) {
     let vp = Viewport::new(0, 0, W, H).expect("viewport");
     let faces: Vec<Vec<Rgb565>> = (0..6)
@@ -104,28 +131,13 @@ fn env(out: &std::path::Path) {
     let cam = demo::camera(20);
     let model = demo::sphere_model(0);
     let setup = EnvVertices::new(&model, &cam.projection.mul(&cam.view), Vec3::ZERO);
-    let tris: Vec<[Vertex<6>; 3]> = s
-        .indices
-        .iter()
-        .map(|t| {
-            t.map(|i| {
-                let i = usize::from(i);
-                setup
-                    .per_pixel(s.positions[i], s.normals[i])
-                    .expect("vertex")
-            })
-        })
-        .collect();
-    let (mut c, mut z) = buffers();
-    let mut f = Frame::new(&mut c, W, H)
-        .expect("frame")
-        .with_depth(&mut z)
-        .expect("depth");
-    f.clear(Rgb565::new(0, 0, 0));
-    ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)
-        .expect("draw")
-        .clip_triangles(&tris, &mut f)
-        .expect("drawn");
+    let tris = sphere_triangles(&s, |p, n| setup.per_pixel(p, n));
+    let c = draw_whole(|f| {
+        ShadedDraw::<_, Exact, DepthLess>::new(ReflectPerPixel(cube), vp, Cull::Back)
+            .expect("draw")
+            .clip_triangles(&tris, f)
+            .expect("drawn");
+    });
     let mut map = vec![Rgb565::new(0, 0, 0); 128 * 128];
     fixel::shading::env::bake_sphere_map(&cube, 128, &mut map).expect("sphere map");
     let tex = Texture::new(&map, 128, 128).expect("texture");
@@ -138,29 +150,14 @@ fn env(out: &std::path::Path) {
     let chains: [MipTexture<'_>; 6] = core::array::from_fn(|i| {
         MipTexture::single(Texture::new(&faces[i], 64, 64).expect("face"))
     });
-    let per_vertex: Vec<[Vertex<3>; 3]> = s
-        .indices
-        .iter()
-        .map(|t| {
-            t.map(|i| {
-                let i = usize::from(i);
-                setup
-                    .per_vertex(s.positions[i], s.normals[i])
-                    .expect("vertex")
-            })
-        })
-        .collect();
-    let (mut cv, mut z) = buffers();
-    let mut f = Frame::new(&mut cv, W, H)
-        .expect("frame")
-        .with_depth(&mut z)
-        .expect("depth");
-    f.clear(Rgb565::new(0, 0, 0));
+    let per_vertex = sphere_triangles(&s, |p, n| setup.per_vertex(p, n));
     let shader = CubeVertex::new(&chains, Bilinear, Lod::default()).expect("faces");
-    ShadedDraw::<_, SubdividedBy<6>, DepthLess>::new(shader, vp, Cull::Back)
-        .expect("draw")
-        .clip_triangles(&per_vertex, &mut f)
-        .expect("drawn");
+    let cv = draw_whole(|f| {
+        ShadedDraw::<_, SubdividedBy<6>, DepthLess>::new(shader, vp, Cull::Back)
+            .expect("draw")
+            .clip_triangles(&per_vertex, f)
+            .expect("drawn");
+    });
     common::write_png(
         &out.join("realtime_env.png"),
         3 * W,
