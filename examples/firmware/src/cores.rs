@@ -17,7 +17,6 @@
 use core::convert::Infallible;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes as demo;
 use fixel::geometry::ScreenTriangle;
 use fixel::prelude::*;
 use fixel::scene::{
@@ -25,6 +24,7 @@ use fixel::scene::{
 };
 use fixel::surface::{BandDraw, BandShare, Binned, BinnedFrame, Blocking, TriangleSink};
 use fixel::texture::MipTexture;
+use fixel_scenes as demo;
 
 use crate::scenes::{viewport, Fnv1a, LitFootprint, LitSphere, BAND_PIXELS, H, ROWS, W};
 use crate::{bench_end, bench_mark, bench_start, data, outln};

@@ -2,12 +2,12 @@
 //! host's runtime values bit for bit). The linker keeps only the ones a binary uses.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes::{
-    MeshData, FINE_SPHERE_TRIANGLES, FINE_SPHERE_VERTICES, SPHERE_TRIANGLES, SPHERE_VERTICES,
-};
 use fixel::math::{Fx, Vec3};
 use fixel::scene::{face_planes, FacePlane};
 use fixel::texture::{MipTexture, Texture};
+use fixel_scenes::{
+    MeshData, FINE_SPHERE_TRIANGLES, FINE_SPHERE_VERTICES, SPHERE_TRIANGLES, SPHERE_VERTICES,
+};
 
 /// Raw little-endian RGB565 bytes to colours, at compile time.
 const fn texels<const N: usize>(b: &[u8]) -> [Rgb565; N] {
@@ -74,8 +74,14 @@ texture!(
 /// The two tiles of the flame from baked layers (`fixel::shading::noise::FLAME_LAYERS`,
 /// 64 x 64 Q15 partial turbulence each, 8 KB each), baked by `build.rs`.
 pub static FLAME_LAYER_TEXELS: [[u16; 64 * 64]; 2] = [
-    raw(include_bytes!(concat!(env!("OUT_DIR"), "/flame-layer0.bin"))),
-    raw(include_bytes!(concat!(env!("OUT_DIR"), "/flame-layer1.bin"))),
+    raw(include_bytes!(concat!(
+        env!("OUT_DIR"),
+        "/flame-layer0.bin"
+    ))),
+    raw(include_bytes!(concat!(
+        env!("OUT_DIR"),
+        "/flame-layer1.bin"
+    ))),
 ];
 texture!(WOOD256X128_TEXELS, WOOD256X128, 256, 128, "wood256x128.bin");
 texture!(

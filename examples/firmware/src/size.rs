@@ -4,13 +4,13 @@
 //! harness without fixel (its flash is subtracted to get fixel's share).
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes as demo;
 use fixel::math::{Fx, Mat4, Vec3};
 use fixel::pipeline::{Draw, DrawMode, Stages};
 use fixel::prelude::{BandRenderer, Cull, Viewport};
 use fixel::scene::{mesh_triangles, DirectionalLight, Mesh};
 use fixel::surface::{Binned, Frame};
 use fixel::texture::{MipTexture, Texture};
+use fixel_scenes as demo;
 
 use crate::data;
 use crate::scenes::{Fnv1a, H, ROWS, W};

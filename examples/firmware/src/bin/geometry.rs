@@ -22,7 +22,6 @@
 #![no_main]
 
 use embedded_graphics_core::pixelcolor::Rgb565;
-use fixel_scenes::{self as demo, MeshData};
 use fixel::geometry::{clip_and_project, keeps, prepare, ClipVertex, ScreenTriangle, ScreenVertex};
 use fixel::prelude::*;
 use fixel::scene::{
@@ -30,6 +29,7 @@ use fixel::scene::{
     MeshTransform, TriangleOut,
 };
 use fixel_firmware::{bench_end, bench_mark, bench_start, data, outln, report_begin, scenes};
+use fixel_scenes::{self as demo, MeshData};
 
 const MAXV: usize = demo::FINE_SPHERE_VERTICES;
 const MAXT: usize = demo::FINE_SPHERE_TRIANGLES;

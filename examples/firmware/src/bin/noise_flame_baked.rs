@@ -16,13 +16,7 @@ fn run() -> bool {
     let frames = core::hint::black_box(4);
     let layers = core::hint::black_box(&data::FLAME_LAYER_TEXELS);
     report("noise_flame_baked", |pause, resume| {
-        flame_baked_scene::flame_baked_bands(
-            color,
-            [&layers[0], &layers[1]],
-            frames,
-            pause,
-            resume,
-        )
+        flame_baked_scene::flame_baked_bands(color, [&layers[0], &layers[1]], frames, pause, resume)
     })
 }
 

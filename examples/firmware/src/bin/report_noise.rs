@@ -181,7 +181,7 @@ fn cube_and_flame(ramps: &Ramps, band: BandLimit) -> bool {
             noise::flame_frames_with(flame, 4, octaves, pause, resume)
         });
     }
-        // SAFETY: the only reference to FLAME_BAND, taken once in this single-threaded firmware.
+    // SAFETY: the only reference to FLAME_BAND, taken once in this single-threaded firmware.
     let flame_band = unsafe { &mut *core::ptr::addr_of_mut!(FLAME_BAND) };
     let layers = core::hint::black_box(&fixel_firmware::data::FLAME_LAYER_TEXELS);
     ok &= counted("flame-baked", |pause, resume| {

@@ -4,9 +4,9 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes::shadow::{self as scene, SceneLight};
 use fixel_firmware::shadow::{self, ShadowBuffers, MAP_TEXELS};
 use fixel_firmware::{bench_end, bench_start, outln};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 

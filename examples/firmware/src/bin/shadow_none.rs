@@ -4,9 +4,9 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes::shadow::{self as scene, SceneLight};
 use fixel_firmware::shadow::{self, ShadowBuffers};
 use fixel_firmware::{data, report};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 

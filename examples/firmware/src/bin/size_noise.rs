@@ -5,7 +5,6 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes as demo;
 use fixel::geometry::{Cull, Viewport};
 use fixel::math::{Fx, Mat4};
 use fixel::pipeline::{Exact, NoDepth, ShadedDraw};
@@ -14,6 +13,7 @@ use fixel::shading::noise::presets::{MARBLE_AMP, MARBLE_FREQ, MARBLE_KEYS};
 use fixel::shading::noise::{BandLimit, Marble, Ramp, SolidMesh, SolidShader};
 use fixel_firmware::outln;
 use fixel_firmware::scenes::{H, W};
+use fixel_scenes as demo;
 // The same triangle as the other `size_*` firmwares.
 use fixel_firmware::size::{INDICES, NORMALS, POSITIONS};
 
