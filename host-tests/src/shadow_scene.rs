@@ -12,9 +12,11 @@ use fixel::math::{Mat4, Vec3};
 use fixel::pipeline::{DepthLess, DepthOnlyDraw, Exact, ShadedDraw};
 use fixel::scene::{light_pass_mesh, shadowed_mesh_triangles, Camera, Mesh};
 use fixel::shading::pcf::ShadowFilter;
-use fixel::shading::shadow::{with_light, Bias, LightKind, LightSpace, Outside, Shadowed};
-use fixel::shading::Flat;
-use fixel::surface::{DepthMap, Frame};
+use fixel::shading::shadow::{
+    with_light, Bias, LightKind, LightSpace, Outside, Shadowed, ShadowedUv,
+};
+use fixel::shading::{Flat, Fragment, Shader};
+use fixel::surface::{DepthMap, Frame, ShadowMap};
 use fixel_scenes::shadow as scene;
 
 use crate::reference::shadow::{mul, transform, RefBias, ShadowScene, M4};
@@ -147,22 +149,71 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     s: &Setup,
 ) -> FixelShadow {
-    let mut texels = vec![0u16; (s.size * s.size) as usize];
-    let mut map = DepthMap::new(&mut texels, s.size).expect("map size");
-    map.clear();
-    let light = DepthOnlyDraw::new(&map, s.light_cull).expect("light pass");
-    let mut texels_written = 0;
-    for m in meshes {
-        let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
-        let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
-        texels_written +=
-            light_pass_mesh(&light, &mesh, &m.model, space, &mut map).expect("light pass");
+    both_passes::<K, Shadowed<'_, Flat, K, F, M>, M>(meshes, camera, space, s, |map| {
+        Shadowed::new(Flat(0xFFFF), map, s.bias)
+    })
+}
+
+/// A white shader with texture coordinates (varyings `u, v`, unread): what [`ShadowedUv`]
+/// carries the light coordinates through.
+#[derive(Clone, Copy, Debug)]
+pub struct FlatUv;
+
+impl Shader for FlatUv {
+    type Varyings = [i32; 2];
+    type Triangle = ();
+    const TEXCOORDS: Option<(usize, usize)> = Some((0, 1));
+    fn triangle(&self, _: &mut [[i32; 2]; 3]) {}
+    fn shade(&self, _: &Fragment<[i32; 2], ()>) -> Option<u16> {
+        Some(0xFFFF)
     }
-    let shader = Shadowed::<_, K, F, M>::new(Flat(0xFFFF), map.view(), s.bias)
-        .expect("shader")
-        .with_darkness(0)
-        .expect("darkness")
-        .with_outside(s.outside);
+}
+
+/// [`fixel_shadow`] through [`ShadowedUv`]: the light coordinates from texture
+/// coordinates `u = x + 0.375 z`, `v = y + 0.625 z` of the model-space position (a linear
+/// map whose kernel lies in no coordinate plane, so no face of the scene is degenerate).
+/// `M` is 2 plus the light's varying count.
+pub fn fixel_shadow_uv<K: LightKind, F: ShadowFilter, const M: usize>(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    space: &LightSpace<K>,
+    s: &Setup,
+) -> FixelShadow {
+    both_passes::<K, ShadowedUv<'_, FlatUv, K, F, M>, M>(meshes, camera, space, s, |map| {
+        ShadowedUv::new(FlatUv, map, s.bias)
+    })
+}
+
+/// The light pass, then the lit pass with the shader `make` builds on the map.
+fn both_passes<'m, K: LightKind, S, const M: usize>(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    space: &LightSpace<K>,
+    s: &Setup,
+    make: impl FnOnce(ShadowMap<'m>) -> Result<S, fixel::Error>,
+) -> FixelShadow
+where
+    S: Shader<Varyings = [i32; M]> + ShadowedLike,
+{
+    let mut texels = vec![0u16; (s.size * s.size) as usize];
+    let texels_written;
+    {
+        let mut map = DepthMap::new(&mut texels, s.size).expect("map size");
+        map.clear();
+        let light = DepthOnlyDraw::new(&map, s.light_cull).expect("light pass");
+        let mut written = 0;
+        for m in meshes {
+            let uvs = uvs_of(m);
+            let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
+            written +=
+                light_pass_mesh(&light, &mesh, &m.model, space, &mut map).expect("light pass");
+        }
+        texels_written = written;
+    }
+    // The map lives as long as the shader: leaked for the test's lifetime.
+    let texels: &'m [u16] = Box::leak(texels.into_boxed_slice());
+    let view = ShadowMap::new(texels, s.size).expect("map");
+    let shader = make(view).expect("shader").dark_outside(s.outside);
     let vp = Viewport::new(0, 0, s.w, s.h).expect("viewport");
     let draw = ShadedDraw::<_, Exact, DepthLess>::new(shader, vp, Cull::Back).expect("draw");
     let n = (s.w * s.h) as usize;
@@ -173,12 +224,20 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
         .expect("depth");
     frame.clear(Rgb565::BLACK);
     let mut pixels = 0;
+    let uv_varyings = M > 4;
     for m in meshes {
-        let uvs = vec![[fixel::math::Fx::ZERO; 2]; m.positions.len()];
+        let uvs = uvs_of(m);
         let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
         shadowed_mesh_triangles(&mesh, &m.model, camera, None, space, |cv, lv| {
-            let tri =
-                [0, 1, 2].map(|k| with_light::<0, M>(&Vertex::new(cv[k].position, []), lv[k]));
+            let tri = [0, 1, 2].map(|k| {
+                if uv_varyings {
+                    let v = cv[k].to_vertex();
+                    let uv = Vertex::new(v.position, [v.varyings[0], v.varyings[1]]);
+                    with_light::<2, M>(&uv, lv[k])
+                } else {
+                    with_light::<0, M>(&Vertex::new(cv[k].position, []), lv[k])
+                }
+            });
             pixels += draw
                 .clip_triangles(&[tri], &mut frame)
                 .expect("frame has depth");
@@ -194,9 +253,40 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
     FixelShadow {
         lit,
         covered,
-        map: texels,
+        map: texels.to_vec(),
         texels_written,
         pixels,
+    }
+}
+
+/// The texture coordinates of [`fixel_shadow_uv`] for a mesh.
+fn uvs_of(m: &SceneMesh) -> Vec<[fixel::math::Fx; 2]> {
+    m.positions
+        .iter()
+        .map(|p| {
+            let z = p.z.to_num::<f64>();
+            [
+                fixel::math::Fx::from_num(p.x.to_num::<f64>() + 0.375 * z),
+                fixel::math::Fx::from_num(p.y.to_num::<f64>() + 0.625 * z),
+            ]
+        })
+        .collect()
+}
+
+/// Shadows at brightness 0 with the setup's choice outside the frustum, for either
+/// shadowed form.
+pub trait ShadowedLike: Sized {
+    /// Darkness 0 and `outside`.
+    fn dark_outside(self, outside: Outside) -> Self;
+}
+
+impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool> ShadowedLike
+    for Shadowed<'_, S, K, F, M, UV>
+{
+    fn dark_outside(self, outside: Outside) -> Self {
+        self.with_darkness(0)
+            .expect("darkness")
+            .with_outside(outside)
     }
 }
 

@@ -13,8 +13,8 @@ use fixel::shading::shadow::{Bias, Directional, LightKind, LightSpace, Outside};
 use fixel_scenes::shadow::{self as scene, SceneLight};
 use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter, RefShadowImage};
 use host_tests::shadow_scene::{
-    demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, FixelShadow, LitError, SceneMesh,
-    Setup,
+    demo_meshes, fixel_shadow, fixel_shadow_uv, lit_error, ref_bias, ref_scene, FixelShadow,
+    LitError, SceneMesh, Setup,
 };
 
 fn ref_filter<F: ShadowFilter>() -> RefShadowFilter {
@@ -86,6 +86,36 @@ fn directional_matches_reference_for_each_filter() {
         assert!(e.mean < 0.01, "{e}");
         assert!((e.wrong as f64) < 0.005 * e.both as f64, "{e}");
     }
+}
+
+/// The real-time form (`ShadowedUv`: light coordinates from texture coordinates) against
+/// the reference, with the budgets of the light-varying form.
+#[test]
+fn through_texture_coordinates_matches_reference_for_each_filter() {
+    fn check<K: LightKind, F: ShadowFilter, const M: usize>(
+        name: &str,
+        space: &LightSpace<K>,
+    ) -> LitError {
+        let m = demo_meshes();
+        let s = Setup::new::<F>(64);
+        let fx = fixel_shadow_uv::<K, F, M>(&m, &scene::camera(), space, &s);
+        let r = reference(&m, space, &s, ref_filter::<F>());
+        let e = lit_error(&fx.lit, &fx.covered, &r.lit, &r.covered);
+        println!(
+            "shadow through uv {name}: {} {} map 64: {e}",
+            K::NAME,
+            F::NAME
+        );
+        assert_eq!(e.coverage_diff, 0, "{e}");
+        assert!(e.mean < 0.01, "{e}");
+        assert!((e.wrong as f64) < 0.005 * e.both as f64, "{e}");
+        e
+    }
+    let high = scene::directional(SceneLight::High).unwrap();
+    check::<_, SingleTap, 5>("high", &high);
+    check::<_, Pcf2x2, 5>("high", &high);
+    check::<_, Pcf3x3, 5>("high", &high);
+    check::<_, Pcf2x2, 6>("spot", &scene::spot().unwrap());
 }
 
 #[test]

@@ -30,10 +30,11 @@ fn texture(w: u32, h: u32) -> Vec<Rgb565> {
 }
 
 /// Checksums printed by the firmware (identical on Cortex-M4F and Cortex-M0+).
-const FIRMWARE: [(&str, u32); 7] = [
+const FIRMWARE: [(&str, u32); 8] = [
     ("shadow_light", 0x89313f10),
     ("shadow_none", 0x1d0baf22),
     ("shadow_single", 0xd32ba043),
+    ("shadow_single_uv", 0x383f159b),
     ("shadow_pcf2x2", 0x7ac488c8),
     ("shadow_pcf3x3", 0x4f3ec924),
     ("shadow_spot", 0x08120866),
@@ -42,7 +43,7 @@ const FIRMWARE: [(&str, u32); 7] = [
 
 /// The banded firmware frame and the same frame drawn whole: (banded, whole) checksums and
 /// the pixels written.
-fn frames<K: LightKind, F: ShadowFilter, const M: usize>(
+fn frames<K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
     space: &LightSpace<K>,
     light: SceneLight,
     cull: Cull,
@@ -58,16 +59,20 @@ where
     let mut buf = Box::new(ShadowBuffers::new());
     shadow::light_pass_culling(space, &mut buf.map, cull).unwrap();
     let banded =
-        shadow::lit_pass::<K, F, M>(&mut buf, space, light, c, f, &mut || (), &mut || ()).unwrap();
+        shadow::lit_pass::<K, F, M, UV>(&mut buf, space, light, c, f, &mut || (), &mut || ())
+            .unwrap();
     // Whole frame, through the demo's own lit pass.
     let map = ShadowMap::new(&buf.map, shadow::MAP).unwrap();
     let (ct, ft) = (MipTexture::single(c), MipTexture::single(f));
     let vp = Viewport::new(0, 0, 320, 240).unwrap();
     let draw = |t| {
         let tex = TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
-        let s =
-            Shadowed::<_, K, F, M>::new(ModulateIntensity { tex }, map, Bias::for_filter::<F>())
-                .unwrap();
+        let s = Shadowed::<_, K, F, M, UV>::new(
+            ModulateIntensity { tex },
+            map,
+            Bias::for_filter::<F>(),
+        )
+        .unwrap();
         ShadedDraw::<_, Exact, DepthLess>::new(s, vp, Cull::Back).unwrap()
     };
     let (dc, df) = (draw(&ct), draw(&ft));
@@ -113,23 +118,27 @@ fn firmware_checksums_and_bands_equal_whole_frame() {
     for (name, (banded, whole, px)) in [
         (
             "shadow_single",
-            frames::<_, SingleTap, 6>(&high, SceneLight::High, Cull::Back),
+            frames::<_, SingleTap, 6, false>(&high, SceneLight::High, Cull::Back),
+        ),
+        (
+            "shadow_single_uv",
+            frames::<_, SingleTap, 6, true>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_pcf2x2",
-            frames::<_, Pcf2x2, 6>(&high, SceneLight::High, Cull::Back),
+            frames::<_, Pcf2x2, 6, false>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_pcf3x3",
-            frames::<_, Pcf3x3, 6>(&high, SceneLight::High, Cull::Back),
+            frames::<_, Pcf3x3, 6, false>(&high, SceneLight::High, Cull::Back),
         ),
         (
             "shadow_spot",
-            frames::<_, Pcf2x2, 7>(&scene::spot().unwrap(), SceneLight::Spot, Cull::Back),
+            frames::<_, Pcf2x2, 7, false>(&scene::spot().unwrap(), SceneLight::Spot, Cull::Back),
         ),
         (
             "shadow_grazing",
-            frames::<_, Pcf3x3, 6>(
+            frames::<_, Pcf3x3, 6, false>(
                 &scene::directional(SceneLight::Grazing).unwrap(),
                 SceneLight::Grazing,
                 Cull::Front,
@@ -145,25 +154,42 @@ fn firmware_checksums_and_bands_equal_whole_frame() {
         println!("mcu-expected scene={name} checksum=0x{c:08x} pixels={px}");
     }
     assert_eq!(got, FIRMWARE);
-    // The whole-frame firmware's own path (`whole_shadow_single`).
+    // The whole-frame firmwares' own path (`whole_shadow_single`, `whole_shadow_single_uv`).
     let mut map = vec![0u16; shadow::MAP_TEXELS];
     shadow::light_pass_culling(&high, &mut map, Cull::Back).unwrap();
     let (mut color, mut depth) = (vec![Rgb565::new(0, 0, 0); 320 * 240], vec![0u16; 320 * 240]);
-    let w = shadow::lit_pass_whole::<_, SingleTap, 6>(
-        &mut color,
-        &mut depth,
-        &map,
-        &high,
-        SceneLight::High,
-        c,
-        f,
-        &mut || (),
-        &mut || (),
-    )
-    .unwrap();
-    assert_eq!((w.checksum, w.stats.pixels), (got[2].1, pixels[2]));
-    println!(
-        "mcu-expected scene=whole_shadow_single checksum=0x{:08x} pixels={}",
-        w.checksum, w.stats.pixels
-    );
+    let mut whole = |uv: bool| {
+        let w = if uv {
+            shadow::lit_pass_whole::<_, SingleTap, 6, true>
+        } else {
+            shadow::lit_pass_whole::<_, SingleTap, 6, false>
+        };
+        w(
+            &mut color,
+            &mut depth,
+            &map,
+            &high,
+            SceneLight::High,
+            c,
+            f,
+            &mut || (),
+            &mut || (),
+        )
+        .unwrap()
+    };
+    for (k, name, uv) in [
+        (2, "whole_shadow_single", false),
+        (3, "whole_shadow_single_uv", true),
+    ] {
+        let w = whole(uv);
+        assert_eq!(
+            (w.checksum, w.stats.pixels),
+            (got[k].1, pixels[k]),
+            "{name}"
+        );
+        println!(
+            "mcu-expected scene={name} checksum=0x{:08x} pixels={}",
+            w.checksum, w.stats.pixels
+        );
+    }
 }

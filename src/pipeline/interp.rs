@@ -155,6 +155,22 @@ impl<V: Varyings> Hyper<V> {
         add(&mut self.s, &d.s);
         self.q = self.q.wrapping_add(d.q);
     }
+    /// [`Hyper::add`] of `q` and the first `live` varyings only (the others go stale).
+    #[inline(always)]
+    fn add_live(&mut self, d: &Hyper<V>, live: usize) {
+        for k in 0..V::N.min(live) {
+            self.s.as_mut_slice()[k] = self.s.as_slice()[k].wrapping_add(d.s.as_slice()[k]);
+        }
+        self.q = self.q.wrapping_add(d.q);
+    }
+    /// [`Hyper::resolve`] of the first `live` varyings into `out` (the others untouched).
+    #[inline(always)]
+    fn resolve_live(&self, out: &mut V, live: usize) {
+        let r = recip_q30(self.q);
+        for k in 0..V::N.min(live) {
+            out.as_mut_slice()[k] = mul_q16(self.s.as_slice()[k], r);
+        }
+    }
     /// The varyings: `s / q`.
     #[inline(always)]
     pub(super) fn resolve(&self) -> V {
@@ -177,6 +193,9 @@ pub(crate) struct FillSpec {
     pub lod: bool,
     /// Left shift to undo on the pair (wrapping), see `Shader::coord_shift`.
     pub shift: u32,
+    /// The varyings the shader reads ([`Shader::INTERPOLATED`](crate::shading::Shader::INTERPOLATED)):
+    /// the exact mode fills only the first `live` (the others are left stale).
+    pub live: usize,
 }
 
 /// Interpolation along one span, a chunk of pixels at a time.
@@ -249,7 +268,11 @@ impl<V: Varyings> Fill<V> for ExactInterp<V> {
         let mut m = mask;
         for (k, v) in vals.iter_mut().enumerate() {
             if m & 1 != 0 {
-                *v = self.h.resolve();
+                if spec.live >= V::N {
+                    *v = self.h.resolve();
+                } else {
+                    self.h.resolve_live(v, spec.live);
+                }
                 if spec.shift != 0 {
                     unshift(v, spec.pair, spec.shift);
                 }
@@ -260,7 +283,11 @@ impl<V: Varyings> Fill<V> for ExactInterp<V> {
                 }
             }
             m >>= 1;
-            self.h.add(&self.d);
+            if spec.live >= V::N {
+                self.h.add(&self.d);
+            } else {
+                self.h.add_live(&self.d, spec.live);
+            }
         }
     }
 }

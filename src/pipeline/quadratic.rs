@@ -284,6 +284,7 @@ mod tests {
         pair: (0, 1),
         lod: false,
         shift: 0,
+        live: usize::MAX,
     };
 
     /// A right triangle `(0, 0)`, `(w, 0)`, `(0, h)` in pixels whose vertices lie at clip

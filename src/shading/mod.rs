@@ -282,6 +282,11 @@ pub trait Shader: Copy {
     /// fit `i32` afterwards.
     fn triangle(&self, varyings: &mut [Self::Varyings; 3]) -> Self::Triangle;
 
+    /// How many of the varyings, from the first, the shader reads in [`Shader::shade`]: the
+    /// exact projection's span loop interpolates only those (the others reach
+    /// [`Shader::triangle`] at the vertices and are stale in fragments). Default: all.
+    const INTERPOLATED: usize = usize::MAX;
+
     /// [`Shader::triangle`]'s result in 32 bits, for a band renderer that keeps a triangle
     /// from one band for the next and draws it there without its screen triangle (see
     /// [`BandRenderer::with_setup_cache`](crate::surface::BandRenderer::with_setup_cache)).

@@ -75,7 +75,7 @@ pub fn light_pass_culling<K: LightKind>(
 /// before); `M` is 6 for a directional light, 7 for the spot. `pause` and `resume` bracket
 /// the checksum of each band (left out of instruction counts).
 #[allow(clippy::too_many_arguments)]
-pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize>(
+pub fn lit_pass<K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
     buf: &mut ShadowBuffers,
     space: &LightSpace<K>,
     light: SceneLight,
@@ -89,7 +89,7 @@ where
 {
     let map = fixel::surface::ShadowMap::new(&buf.map, MAP)?;
     let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
-    let shader = |t| -> Result<Shadowed<'_, _, K, F, M>, Error> {
+    let shader = |t| -> Result<Shadowed<'_, _, K, F, M, UV>, Error> {
         Shadowed::new(
             ModulateIntensity {
                 tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
@@ -118,7 +118,7 @@ where
 /// `map`, through the scene's own lit pass (`fixel_scenes::shadow::lit_pass`): the figure
 /// the banded frame is compared with, and the same checksum.
 #[allow(clippy::too_many_arguments)]
-pub fn lit_pass_whole<K: LightKind, F: ShadowFilter, const M: usize>(
+pub fn lit_pass_whole<K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
     color: &mut [Rgb565],
     depth: &mut [u16],
     map: &[u16],
@@ -131,7 +131,7 @@ pub fn lit_pass_whole<K: LightKind, F: ShadowFilter, const M: usize>(
 ) -> Result<FrameResult, Error> {
     let map = fixel::surface::ShadowMap::new(map, MAP)?;
     let (ct, ft) = (MipTexture::single(cube_tex), MipTexture::single(floor_tex));
-    let shader = |t| -> Result<Shadowed<'_, _, K, F, M>, Error> {
+    let shader = |t| -> Result<Shadowed<'_, _, K, F, M, UV>, Error> {
         Shadowed::new(
             ModulateIntensity {
                 tex: TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default())?,
@@ -248,14 +248,14 @@ where
 /// A whole `shadow_*` firmware under directional light `light`: see [`run`].
 /// (Firmware only: the host tests include this file for the scene code above.)
 #[cfg(target_os = "none")]
-pub fn run_directional<F: ShadowFilter>(
+pub fn run_directional<F: ShadowFilter, const UV: bool>(
     name: &str,
     light: SceneLight,
     cull: Cull,
     buf: &mut ShadowBuffers,
 ) -> bool {
     match scene::directional(light) {
-        Ok(space) => run::<_, F, 6>(name, &space, light, cull, buf),
+        Ok(space) => run::<_, F, 6, UV>(name, &space, light, cull, buf),
         Err(_) => false,
     }
 }
@@ -264,7 +264,7 @@ pub fn run_directional<F: ShadowFilter>(
 /// counted), then the lit pass with filter `F` (`M`: 6 directional, 7 spot), counted and
 /// reported as scene `name`.
 #[cfg(target_os = "none")]
-pub fn run<K: LightKind, F: ShadowFilter, const M: usize>(
+pub fn run<K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
     name: &str,
     space: &LightSpace<K>,
     light: SceneLight,
@@ -278,7 +278,7 @@ where
         return false;
     }
     crate::report(name, |pause, resume| {
-        lit_pass::<_, F, M>(
+        lit_pass::<_, F, M, UV>(
             buf,
             space,
             light,
@@ -293,7 +293,7 @@ where
 /// The whole-frame twin of a directional `shadow_*` firmware: the light pass into `map`
 /// (not counted), then [`lit_pass_whole`] with filter `F`, counted and reported as `name`.
 #[cfg(target_os = "none")]
-pub fn run_whole_directional<F: ShadowFilter>(
+pub fn run_whole_directional<F: ShadowFilter, const UV: bool>(
     name: &str,
     light: SceneLight,
     map: &mut [u16],
@@ -307,7 +307,7 @@ pub fn run_whole_directional<F: ShadowFilter>(
         return false;
     }
     crate::report(name, |pause, resume| {
-        lit_pass_whole::<_, F, 6>(
+        lit_pass_whole::<_, F, 6, UV>(
             color,
             depth,
             map,

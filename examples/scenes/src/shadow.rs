@@ -181,8 +181,9 @@ pub fn light_pass_culling<K: LightKind>(
 /// each, usually differing in texture only); `M` is 6 (directional) or 7 (spot).
 /// Returns the pixels written.
 #[allow(clippy::type_complexity)]
-pub fn lit_pass<'a, P, K, F, FS, WU, WV, C, T, const M: usize>(
-    draws: [&ShadedDraw<Shadowed<'a, ModulateIntensity<'a, FS, WU, WV>, K, F, M>, P, DepthLess>; 2],
+pub fn lit_pass<'a, P, K, F, FS, WU, WV, C, T, const M: usize, const UV: bool>(
+    draws: [&ShadedDraw<Shadowed<'a, ModulateIntensity<'a, FS, WU, WV>, K, F, M, UV>, P, DepthLess>;
+        2],
     space: &LightSpace<K>,
     light: SceneLight,
     target: &mut T,
@@ -196,7 +197,7 @@ where
     WV: WrapMode,
     C: TargetColor,
     T: RenderTarget<Color = C>,
-    Shadowed<'a, ModulateIntensity<'a, FS, WU, WV>, K, F, M>: Shader<Varyings = [i32; M]>,
+    Shadowed<'a, ModulateIntensity<'a, FS, WU, WV>, K, F, M, UV>: Shader<Varyings = [i32; M]>,
 {
     let (cube, model, floor) = meshes();
     let cam = camera();

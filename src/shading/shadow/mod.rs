@@ -106,8 +106,10 @@ use crate::texture::ShadowMap;
 use crate::Error;
 
 mod light_space;
+mod through_uv;
 
 pub use light_space::{Directional, LightKind, LightSpace, Spot};
+pub use through_uv::UvLight;
 
 /// `1.0` of the normalized map coordinates `s, t` (Q12.20).
 pub const ST_ONE: i32 = 1 << 20;
@@ -222,6 +224,8 @@ pub struct ShadowTriangle {
     mode: u8,
     /// For [`LOOKUP`]: the biased depth of vertex 0, `base[2] - bias` (Q16.4).
     depth: i32,
+    /// For [`ShadowedUv`]: the light coordinates from the texture coordinates.
+    uv: UvLight,
 }
 
 /// Every pixel inside the frustum (an affine light, vertices inside by a margin): the
@@ -260,7 +264,7 @@ const GENERAL: u8 = 2;
 /// # Ok::<(), fixel::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct Shadowed<'a, S, K, F, const M: usize> {
+pub struct Shadowed<'a, S, K, F, const M: usize, const UV: bool = false> {
     inner: S,
     map: ShadowMap<'a>,
     bias: Bias,
@@ -269,10 +273,24 @@ pub struct Shadowed<'a, S, K, F, const M: usize> {
     _kinds: core::marker::PhantomData<(K, F)>,
 }
 
-impl<'a, S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shadowed<'a, S, K, F, M> {
+/// [`Shadowed`] in its real-time form: the light coordinates of each pixel come from its
+/// texture coordinates ([`UvLight`], solved per triangle), so the span loop interpolates
+/// only the inner shader's varyings. The vertices still carry the light varyings (`M` as for
+/// [`Shadowed`]); `S` must have texture coordinates ([`Shader::TEXCOORDS`]). Pixels may differ
+/// from [`Shadowed`]'s where a point lies within rounding of a texel's edge or of the
+/// biased depth (see [`UvLight`] for the error).
+pub type ShadowedUv<'a, S, K, F, const M: usize> = Shadowed<'a, S, K, F, M, true>;
+
+impl<'a, S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>
+    Shadowed<'a, S, K, F, M, UV>
+{
     const VARYINGS_ADD_UP: () = assert!(
         M == <S::Varyings as Varyings>::N + K::VARYINGS,
         "Shadowed<S, K, F, M>: M must be S's varyings plus the light's (3 directional, 4 spot)"
+    );
+    const UV_NEEDS_TEXCOORDS: () = assert!(
+        !UV || S::TEXCOORDS.is_some(),
+        "ShadowedUv<S, ..>: S must have texture coordinates (Shader::TEXCOORDS)"
     );
 
     /// `inner` shadowed by `map` with `bias`; shadows at brightness 0.4 (102 / 256), points
@@ -283,6 +301,8 @@ impl<'a, S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shadowed<'a, 
     pub fn new(inner: S, map: ShadowMap<'a>, bias: Bias) -> Result<Self, Error> {
         #[allow(clippy::let_unit_value)]
         let () = Self::VARYINGS_ADD_UP;
+        #[allow(clippy::let_unit_value)]
+        let () = Self::UV_NEEDS_TEXCOORDS;
         Ok(Shadowed {
             inner,
             map,
@@ -340,7 +360,9 @@ fn light_part<const M: usize>(v: &[i32; M], n: usize) -> [i32; 4] {
     core::array::from_fn(|k| v.get(n + k).copied().unwrap_or(0))
 }
 
-impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadowed<'_, S, K, F, M> {
+impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool> Shader
+    for Shadowed<'_, S, K, F, M, UV>
+{
     type Varyings = [i32; M];
     /// The inner shader's, and the lookup's ([`ShadowTriangle`]: the light varyings of
     /// vertex 0, the bias, and whether the frustum test or the map can be skipped).
@@ -351,6 +373,11 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
     const LOD: bool = S::LOD;
     const LOD_DIRECTION: Option<usize> = S::LOD_DIRECTION;
     const LOD_REFLECTION: Option<usize> = S::LOD_REFLECTION;
+    const INTERPOLATED: usize = if UV {
+        <S::Varyings as Varyings>::N
+    } else {
+        usize::MAX
+    };
 
     #[inline(always)]
     fn lod_granularity(&self) -> crate::texture::LodGranularity {
@@ -384,6 +411,24 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
             }
         }
         let light = [0, 1, 2].map(|k| light_part(&v[k], n));
+        let uv = if UV {
+            let (pu, pv) = S::TEXCOORDS.unwrap_or((0, 1));
+            let at = |k: usize| {
+                let s = inner.get(k).map(|x| x.as_slice()).unwrap_or(&[]);
+                [
+                    s.get(pu).copied().unwrap_or(0),
+                    s.get(pv).copied().unwrap_or(0),
+                ]
+            };
+            UvLight::solve(
+                [at(0), at(1), at(2)],
+                S::coord_shift(&t),
+                light,
+                K::VARYINGS,
+            )
+        } else {
+            UvLight::default()
+        };
         let p = light.map(K::project);
         // A triangle turned away from the light, or edge-on to it, is in its own shade: a
         // bias of `i32::MIN` takes its depth past every texel (`d - bias` saturates).
@@ -423,6 +468,7 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
                 bias,
                 mode,
                 depth,
+                uv,
             },
         )
     }
@@ -430,8 +476,14 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize> Shader for Shadow
     #[inline(always)]
     fn shade(&self, f: &Fragment<[i32; M], Self::Triangle>) -> Option<u16> {
         let n = <S::Varyings as Varyings>::N;
-        let d = light_part(&f.varyings, n);
         let tri = f.triangle.1;
+        let d = if UV {
+            let (pu, pv) = S::TEXCOORDS.unwrap_or((0, 1));
+            let get = |k: usize| f.varyings.get(k).copied().unwrap_or(0);
+            tri.uv.at(get(pu), get(pv), K::VARYINGS)
+        } else {
+            light_part(&f.varyings, n)
+        };
         let lit = match tri.mode {
             LOOKUP => F::lit(
                 &self.map,

@@ -14,9 +14,10 @@ pub(super) const BAR: f64 = 1.3;
 
 /// Scenes held to [`BAR`]: every banded scene with a whole-frame twin. (The classic cube,
 /// floor, teapot and sphere in its slower mode are reported beside them.)
-const HELD: [&str; 11] = [
+const HELD: [&str; 12] = [
     "sphere_sized",
     "shadow_single",
+    "shadow_single_uv",
     "noise",
     "noise_flame",
     "noise_light3d",
@@ -234,7 +235,7 @@ pub(super) fn models(f: &Figures) -> String {
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
 /// of the pixel loop, against the plain lit textured `sphere` (the same bands); and the
 /// flame from baked layers against the same quad textured (`flame_plain`).
-const REALTIME: [(&str, &str, &str); 7] = [
+const REALTIME: [(&str, &str, &str); 8] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
@@ -270,12 +271,21 @@ const REALTIME: [(&str, &str, &str); 7] = [
         "noise_flame_baked",
         "flame_plain",
     ),
+    (
+        "shadow map: single tap, light coordinates from the texture coordinates",
+        "shadow_single_uv",
+        "shadow_none",
+    ),
 ];
 
 /// The plain draws the real-time modes are compared with.
-const PLAIN: [(&str, &str); 2] = [
+const PLAIN: [(&str, &str); 3] = [
     ("plain: lit, bilinear, the sphere's own texture", "sphere"),
     ("plain: the flame's quad, bilinear, unlit", "flame_plain"),
+    (
+        "plain: the shadow scene's lit pass without shadows",
+        "shadow_none",
+    ),
 ];
 
 /// The README's table of the real-time modes: instructions per pixel on each core and the

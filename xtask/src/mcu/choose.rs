@@ -79,6 +79,10 @@ const TECHNIQUES: [(&str, &[(&str, &str)]); 7] = [
             ("PCF 3 x 3", "shadow_pcf3x3"),
             ("PCF 2 x 2", "shadow_pcf2x2"),
             ("single tap", "shadow_single"),
+            (
+                "single tap, light from texture coordinates",
+                "shadow_single_uv",
+            ),
         ],
     ),
 ];

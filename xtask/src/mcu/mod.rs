@@ -73,7 +73,7 @@ const MCUS: [Mcu; 3] = [
 ];
 
 /// Scene firmwares (binaries of `examples/firmware`), frame 0 each.
-const SCENES: [&str; 38] = [
+const SCENES: [&str; 39] = [
     "cube",
     // The cube with silhouette anti-aliasing from depth on each band: beside the cube it is
     // compared with.
@@ -102,6 +102,8 @@ const SCENES: [&str; 38] = [
     "shadow_light",
     "shadow_none",
     "shadow_single",
+    // The single tap with light coordinates from the texture coordinates (`ShadowedUv`).
+    "shadow_single_uv",
     "shadow_pcf2x2",
     "shadow_pcf3x3",
     "shadow_spot",
@@ -143,7 +145,7 @@ const SCENES: [&str; 38] = [
 /// `FIXEL_FW_MEMORY=whole`): the figures to compare with whole-frame renderers and with the
 /// banded scenes; and `sphere_sized`, the sphere in bands in its fastest mode, whose
 /// texture footprints (256 KB) need this layout's flash (its RAM is a band firmware's).
-const WHOLE_SCENES: [&str; 21] = [
+const WHOLE_SCENES: [&str; 22] = [
     "whole_cube",
     "sphere_sized",
     "whole_sphere",
@@ -154,6 +156,7 @@ const WHOLE_SCENES: [&str; 21] = [
     "whole_floor",
     "whole_floor_bilinear",
     "whole_shadow_single",
+    "whole_shadow_single_uv",
     "whole_noise",
     "whole_noise_flame",
     "whole_noise_light3d",

@@ -3,17 +3,17 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes::shadow::SceneLight;
 use fixel::geometry::Cull;
 use fixel::shading::pcf::Pcf3x3;
 use fixel_firmware::shadow::{self, ShadowBuffers};
+use fixel_scenes::shadow::SceneLight;
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 
 fn run() -> bool {
     // SAFETY: single-threaded firmware, the only reference to BUF.
     let buf = unsafe { &mut *core::ptr::addr_of_mut!(BUF) };
-    shadow::run_directional::<Pcf3x3>("shadow_pcf3x3", SceneLight::High, Cull::Back, buf)
+    shadow::run_directional::<Pcf3x3, false>("shadow_pcf3x3", SceneLight::High, Cull::Back, buf)
 }
 
 fixel_firmware::entry!(run);

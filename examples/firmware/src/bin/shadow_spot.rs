@@ -3,10 +3,10 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes::shadow::{self as scene, SceneLight};
 use fixel::geometry::Cull;
 use fixel::shading::pcf::Pcf2x2;
 use fixel_firmware::shadow::{self, ShadowBuffers};
+use fixel_scenes::shadow::{self as scene, SceneLight};
 
 static mut BUF: ShadowBuffers = ShadowBuffers::new();
 
@@ -16,7 +16,7 @@ fn run() -> bool {
     let Ok(space) = scene::spot() else {
         return false;
     };
-    shadow::run::<_, Pcf2x2, 7>("shadow_spot", &space, SceneLight::Spot, Cull::Back, buf)
+    shadow::run::<_, Pcf2x2, 7, false>("shadow_spot", &space, SceneLight::Spot, Cull::Back, buf)
 }
 
 fixel_firmware::entry!(run);

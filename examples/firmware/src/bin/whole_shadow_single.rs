@@ -5,14 +5,14 @@
 #![no_std]
 #![no_main]
 
-use fixel_scenes::shadow::SceneLight;
 use fixel::shading::pcf::SingleTap;
 use fixel_firmware::{scenes, shadow};
+use fixel_scenes::shadow::SceneLight;
 
 fn run() -> bool {
     let mut map = [0u16; shadow::MAP_TEXELS];
     let mut buf = scenes::Whole::new();
-    shadow::run_whole_directional::<SingleTap>(
+    shadow::run_whole_directional::<SingleTap, false>(
         "whole_shadow_single",
         SceneLight::High,
         &mut map,
