@@ -251,7 +251,7 @@ fn bad_input_is_refused_with_errors_that_say_what() {
 /// The showcase panels (64x64 map, textured): goldens catch unintended changes.
 #[test]
 fn golden_showcase_panels() {
-    fn panel<K: LightKind, F: ShadowFilter, const M: usize>(
+    fn panel<K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
         space: &LightSpace<K>,
         light: SceneLight,
         name: &str,
@@ -271,7 +271,7 @@ fn golden_showcase_panels() {
         let vp = Viewport::new(0, 0, 320, 240).unwrap();
         let draw = |t| {
             let tex = TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
-            let s = Shadowed::<_, K, F, M>::new(
+            let s = Shadowed::<_, K, F, M, UV>::new(
                 ModulateIntensity { tex },
                 view,
                 Bias::for_filter::<F>(),
@@ -292,10 +292,11 @@ fn golden_showcase_panels() {
     }
     let high = scene::directional(SceneLight::High).unwrap();
     let grazing = scene::directional(SceneLight::Grazing).unwrap();
-    panel::<_, Pcf2x2, 6>(&high, SceneLight::High, "shadow-high-pcf2x2");
-    panel::<_, Pcf3x3, 6>(&grazing, SceneLight::Grazing, "shadow-grazing-pcf3x3");
-    panel::<_, SingleTap, 6>(&high, SceneLight::High, "shadow-high-single");
-    panel::<_, Pcf2x2, 7>(
+    panel::<_, Pcf2x2, 6, false>(&high, SceneLight::High, "shadow-high-pcf2x2");
+    panel::<_, Pcf3x3, 6, false>(&grazing, SceneLight::Grazing, "shadow-grazing-pcf3x3");
+    panel::<_, SingleTap, 6, false>(&high, SceneLight::High, "shadow-high-single");
+    panel::<_, SingleTap, 6, true>(&high, SceneLight::High, "shadow-high-single-uv");
+    panel::<_, Pcf2x2, 7, false>(
         &scene::spot().unwrap(),
         SceneLight::Spot,
         "shadow-spot-pcf2x2",

@@ -29,7 +29,9 @@ use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
 use fixel::shading::shadow::{Bias, LightKind, LightSpace, Outside};
 use fixel_scenes::shadow::{self as scene, SceneLight};
 use host_tests::reference::shadow::{light_map, lit_pass, RefShadowFilter};
-use host_tests::shadow_scene::{demo_meshes, fixel_shadow, lit_error, ref_bias, ref_scene, Setup};
+use host_tests::shadow_scene::{
+    demo_meshes, fixel_shadow, fixel_shadow_uv, lit_error, ref_bias, ref_scene, Setup,
+};
 
 fn ref_filter<F: ShadowFilter>() -> RefShadowFilter {
     match F::NAME {
@@ -169,6 +171,49 @@ fn row<K: LightKind, F: ShadowFilter, const M: usize>(
     )
 }
 
+/// A row of the real-time form (`ShadowedUv`, light coordinates from texture coordinates),
+/// 64 x 64 map: host ns/px, the banded firmware scene's instructions per pixel where there is
+/// one, and the errors as [`row`]'s. `M` is 2 plus the light's varyings.
+fn row_uv<K: LightKind, F: ShadowFilter, const M: usize>(
+    space: &LightSpace<K>,
+    truth: &host_tests::reference::shadow::RefShadowImage,
+    table: &str,
+) -> String {
+    let m = demo_meshes();
+    let cam = scene::camera();
+    let s = Setup::new::<F>(64);
+    let mut best = f64::MAX;
+    let mut fx = fixel_shadow_uv::<K, F, M>(&m, &cam, space, &s);
+    for _ in 0..5 {
+        let t = Instant::now();
+        fx = fixel_shadow_uv::<K, F, M>(&m, &cam, space, &s);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    let sc = ref_scene(&m, &cam, space.matrix(), s.w, s.h);
+    let map = light_map(&sc, 64, false);
+    let r = lit_pass(&sc, &map, ref_filter::<F>(), &ref_bias(&s.bias), 1.0);
+    let own = lit_error(&fx.lit, &fx.covered, &r.lit, &r.covered);
+    let alias = lit_error(&fx.lit, &fx.covered, &truth.lit, &truth.covered);
+    let firmware = match (K::NAME, F::NAME) {
+        ("directional", "single tap") => Some("shadow_single_uv"),
+        _ => None,
+    };
+    let (m0, m4) = firmware.map_or(("-".into(), "-".into()), |f| {
+        (mcu(table, f, "Cortex-M0+"), mcu(table, f, "Cortex-M4F"))
+    });
+    format!(
+        "| {} | {} | {:.1} | {m0} | {m4} | {:.4} | {} | {:.4} | {} ({:.2} %) |",
+        K::NAME,
+        F::NAME,
+        best * 1e9 / f64::from(fx.pixels),
+        own.mean,
+        own.wrong,
+        alias.mean,
+        alias.wrong,
+        100.0 * alias.wrong as f64 / alias.both.max(1) as f64
+    )
+}
+
 fn truth<K: LightKind>(space: &LightSpace<K>) -> host_tests::reference::shadow::RefShadowImage {
     let m = demo_meshes();
     let sc = ref_scene(&m, &scene::camera(), space.matrix(), 320, 240);
@@ -265,6 +310,26 @@ fn main() {
         out += &row::<_, Pcf3x3, 4>(&spot, size, &ts, &table, &fw, &mut pts);
         out += "\n";
     }
+    out += "\nThe real-time form (`ShadowedUv`: each pixel's light coordinates from its texture \
+        coordinates, solved per triangle; the span loop interpolates no light varying), 64x64 \
+        map, the same errors; M0+ / M4F: the banded firmware scene `shadow_single_uv` of \
+        `cargo xtask mcu` (beside `shadow_single`: M0+ ";
+    out += &format!(
+        "{}, M4F {}; `shadow_none`: M0+ {}, M4F {}).\n\n",
+        mcu(&table, "shadow_single", "Cortex-M0+"),
+        mcu(&table, "shadow_single", "Cortex-M4F"),
+        mcu(&table, "shadow_none", "Cortex-M0+"),
+        mcu(&table, "shadow_none", "Cortex-M4F"),
+    );
+    out += "| light | filter | host ns/px | M0+ instr/px (bands) | M4F instr/px (bands) | mean \\|Δlit\\| vs f64, same map | wrong-side px vs f64, same map | mean \\|Δlit\\| vs f64 1024² | wrong-side px vs f64 1024² |\n|---|---|---|---|---|---|---|---|---|\n";
+    out += &row_uv::<_, SingleTap, 5>(&high, &th, &table);
+    out += "\n";
+    out += &row_uv::<_, Pcf2x2, 5>(&high, &th, &table);
+    out += "\n";
+    out += &row_uv::<_, Pcf3x3, 5>(&high, &th, &table);
+    out += "\n";
+    out += &row_uv::<_, Pcf2x2, 6>(&spot, &ts, &table);
+    out += "\n";
     out += "\n![shadow maps: host cost against aliasing](shadow.png)\n";
     print!("{out}");
     let dir = args.out.unwrap_or_else(|| {
