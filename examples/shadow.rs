@@ -6,7 +6,10 @@
 //! | high directional light, PCF 2x2 bilinear | grazing directional light, PCF 3x3 |
 //! | spot light, PCF 2x2 bilinear | high light, single tap (the texels show) |
 //!
-//! and each panel alone (`shadow-*.png`), plus the high light's depth map (`shadow-map.png`),
+//! and each panel alone (`shadow-*.png`), plus the high light's depth map (`shadow-map.png`);
+//! `realtime_shadow.png`: the high light's single tap through light varyings (left) and in
+//! its real-time form, the light coordinates from the texture coordinates (`ShadowedUv`,
+//! right, the same shadow for fewer instructions);
 //! and `shadow-teapot.png`: the Utah teapot (baked from OBJ, 1560 triangles) casting its
 //! shadow on the floor under the high light (PCF 2x2) and the grazing light (PCF 3x3).
 //!
@@ -36,7 +39,7 @@ const W: u32 = demo::WIDTH;
 const H: u32 = demo::HEIGHT;
 const MAP: u32 = 64;
 
-fn panel<'t, K: LightKind, F: ShadowFilter, const M: usize>(
+fn panel<'t, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool>(
     space: &LightSpace<K>,
     light: SceneLight,
     tex: &'t MipTexture<'t>,
@@ -49,7 +52,7 @@ fn panel<'t, K: LightKind, F: ShadowFilter, const M: usize>(
     let view = map.view();
     let draw = |t: &'t MipTexture<'t>| {
         let binding = TexBinding::new(t, Bilinear, Repeat, Repeat, Lod::default()).unwrap();
-        let shader = Shadowed::<_, K, F, M>::new(
+        let shader = Shadowed::<_, K, F, M, UV>::new(
             ModulateIntensity { tex: binding },
             view,
             Bias::for_filter::<F>(),
@@ -73,7 +76,7 @@ fn panel<'t, K: LightKind, F: ShadowFilter, const M: usize>(
         F::NAME,
         MAP * MAP
     );
-    if light == SceneLight::High && F::NAME == "single tap" {
+    if light == SceneLight::High && F::NAME == "single tap" && !UV {
         // The depth map itself, nearest = bright, scaled up 4x.
         let s = MAP as usize;
         let mut img = vec![Rgb565::default(); s * s * 16];
@@ -106,19 +109,19 @@ fn main() {
     let panels = [
         (
             "high-pcf2x2",
-            panel::<_, Pcf2x2, 6>(&high, SceneLight::High, &tex, &floor),
+            panel::<_, Pcf2x2, 6, false>(&high, SceneLight::High, &tex, &floor),
         ),
         (
             "grazing-pcf3x3",
-            panel::<_, Pcf3x3, 6>(&grazing, SceneLight::Grazing, &tex, &floor),
+            panel::<_, Pcf3x3, 6, false>(&grazing, SceneLight::Grazing, &tex, &floor),
         ),
         (
             "spot-pcf2x2",
-            panel::<_, Pcf2x2, 7>(&spot, SceneLight::Spot, &tex, &floor),
+            panel::<_, Pcf2x2, 7, false>(&spot, SceneLight::Spot, &tex, &floor),
         ),
         (
             "high-single",
-            panel::<_, SingleTap, 6>(&high, SceneLight::High, &tex, &floor),
+            panel::<_, SingleTap, 6, false>(&high, SceneLight::High, &tex, &floor),
         ),
     ];
     let mut sheet = vec![Rgb565::default(); (4 * W * H) as usize];
@@ -138,6 +141,20 @@ fn main() {
     }
     let path = common::out_dir().join("shadow.png");
     common::write_png(&path, 2 * W, 2 * H, &sheet);
+    println!("wrote {}", path.display());
+
+    // The single tap through light varyings and through the texture coordinates.
+    let uv = panel::<_, SingleTap, 6, true>(&high, SceneLight::High, &tex, &floor);
+    let mut pair = vec![Rgb565::default(); (2 * W * H) as usize];
+    for (k, px) in [&panels[3].1, &uv].iter().enumerate() {
+        for y in 0..H {
+            for x in 0..W {
+                pair[(y * 2 * W + k as u32 * W + x) as usize] = px[(y * W + x) as usize];
+            }
+        }
+    }
+    let path = common::out_dir().join("realtime_shadow.png");
+    common::write_png(&path, 2 * W, H, &pair);
     println!("wrote {}", path.display());
 
     // The teapot on the floor, under the high and the grazing light.
