@@ -8,7 +8,8 @@ use fixel::pipeline::{DepthLess, Exact, ShadedDraw};
 use fixel::prelude::*;
 use fixel::shading::pcf::{Pcf2x2, Pcf3x3, ShadowFilter, SingleTap};
 use fixel::shading::shadow::{
-    Bias, Directional, LightKind, LightSpace, Shadowed, Spot, DEPTH_STEP, ST_ONE,
+    Bias, Directional, LightKind, LightSpace, Shadowed, Spot, UvLight, DEPTH_STEP, ST_ONE,
+    UV_ABSOLUTE as ABSOLUTE,
 };
 use fixel::shading::{Flat, ModulateIntensity};
 use fixel::surface::{DepthMap, ShadowMap};
@@ -55,6 +56,79 @@ fn near_edge(r: Stq, c: [f64; 4]) -> bool {
                 || t > 1.0 - 1e-4
                 || !(0.5..=65534.5).contains(&d)
         })
+}
+
+/// The light coordinates [`UvLight`] gives at barycentric point `(b1, b2)` of a triangle,
+/// the exact affine value there (f64) and the triangle's conditioning, for texture
+/// coordinates `uv` and light coordinates `light` at the vertices; `None` for a sliver.
+fn uv_light_at(
+    uv: [[i32; 2]; 3],
+    light: [[i32; 4]; 3],
+    b1: f64,
+    b2: f64,
+) -> Option<([i32; 4], [f64; 4], f64)> {
+    let m = UvLight::solve(uv, 0, light, 4);
+    let lerp = |a: i32, b: i32, c: i32| {
+        f64::from(a) + b1 * (f64::from(b) - f64::from(a)) + b2 * (f64::from(c) - f64::from(a))
+    };
+    let u = lerp(uv[0][0], uv[1][0], uv[2][0]);
+    let v = lerp(uv[0][1], uv[1][1], uv[2][1]);
+    let area = (f64::from(uv[1][0]) - f64::from(uv[0][0]))
+        * (f64::from(uv[2][1]) - f64::from(uv[0][1]))
+        - (f64::from(uv[2][0]) - f64::from(uv[0][0])) * (f64::from(uv[1][1]) - f64::from(uv[0][1]));
+    let extent = |k: usize| {
+        let c = uv.map(|p| f64::from(p[k]));
+        c[0].max(c[1]).max(c[2]) - c[0].min(c[1]).min(c[2])
+    };
+    // The conditioning: 2 for a right triangle along the axes, large for a sliver.
+    let cond = extent(0) * extent(1) / area.abs();
+    if cond.is_nan() || cond > 64.0 {
+        return None;
+    }
+    let got = m.at(u.round() as i32, v.round() as i32, 4);
+    // The first `ABSOLUTE` coordinates come out as they are, the others as differences.
+    let want = core::array::from_fn(|c| {
+        let base = if c < ABSOLUTE {
+            0.0
+        } else {
+            f64::from(light[0][c])
+        };
+        lerp(light[0][c], light[1][c], light[2][c]) - base
+    });
+    Some((got, want, cond))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    /// `UvLight` inside random triangles (texture coordinates up to 2^12 texels apart in
+    /// I16F16, light coordinates up to 2^21 apart, conditioning `c = e_u e_v / A` up to 64):
+    /// within `2^-11 c` of the largest light difference plus 2 units of the exact affine
+    /// value (plus `2^-14` of the largest value for the coordinates it gives absolute),
+    /// `u, v` rounded to the fragment's integers.
+    #[test]
+    fn light_from_texture_coordinates_is_the_affine_map(
+        uv in proptest::array::uniform3(proptest::array::uniform2(-(1i32 << 27)..(1 << 27))),
+        light in proptest::array::uniform3(proptest::array::uniform4(-(1i32 << 20)..(1 << 20))),
+        b1 in 0.0f64..1.0,
+        b2 in 0.0f64..1.0,
+    ) {
+        let (b1, b2) = if b1 + b2 > 1.0 { (1.0 - b1, 1.0 - b2) } else { (b1, b2) };
+        if let Some((got, want, cond)) = uv_light_at(uv, light, b1, b2) {
+            for c in 0..4 {
+                let range = (1..3)
+                    .map(|i| (f64::from(light[i][c]) - f64::from(light[0][c])).abs())
+                    .fold(1.0, f64::max);
+                let err = (f64::from(got[c]) - want[c]).abs();
+                // An absolute coordinate's precision is capped by its magnitude.
+                let magnitude = light.iter().map(|l| f64::from(l[c]).abs()).fold(0.0, f64::max);
+                let capped = if c < ABSOLUTE { magnitude / 16384.0 } else { 0.0 };
+                let allowed = range * cond / 2048.0 + 2.0 + capped;
+                prop_assert!(err <= allowed,
+                    "c={c} got={} want={} range={range} cond={cond}", got[c], want[c]);
+            }
+        }
+    }
 }
 
 proptest! {

@@ -109,7 +109,7 @@ mod light_space;
 mod through_uv;
 
 pub use light_space::{Directional, LightKind, LightSpace, Spot};
-pub use through_uv::UvLight;
+pub use through_uv::{UvLight, ABSOLUTE as UV_ABSOLUTE};
 
 /// `1.0` of the normalized map coordinates `s, t` (Q12.20).
 pub const ST_ONE: i32 = 1 << 20;
@@ -484,16 +484,24 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool> S
         } else {
             light_part(&f.varyings, n)
         };
+        // Vertex 0's value to add back: none for the coordinates `UvLight` gives absolute.
+        let base = |k: usize| {
+            if UV && k < through_uv::ABSOLUTE {
+                0
+            } else {
+                tri.base.get(k).copied().unwrap_or(0)
+            }
+        };
         let lit = match tri.mode {
             LOOKUP => F::lit(
                 &self.map,
-                d[0].wrapping_add(tri.base[0]),
-                d[1].wrapping_add(tri.base[1]),
+                d[0].wrapping_add(base(0)),
+                d[1].wrapping_add(base(1)),
                 d[2].wrapping_add(tri.depth),
             ),
             IN_SHADE => 0,
             _ => self.lit(
-                core::array::from_fn(|k| d[k].wrapping_add(tri.base[k])),
+                core::array::from_fn(|k| d[k].wrapping_add(base(k))),
                 tri.bias,
             ),
         };

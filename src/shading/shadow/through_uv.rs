@@ -16,22 +16,41 @@
 //!
 //! # Formats and error
 //!
-//! `u - u0` and `v - v0` (I16F16 texel units, as the fragment has them) are shifted right by
-//! `p`, the smallest shift that brings the triangle's largest vertex difference below
-//! `2^15`; the coefficients are `a 2^q` rounded to `i32` with `q` (per light coordinate, at
-//! most 30) the largest, to a bit, that keeps both below `2^15`, so each product and their
-//! sum fit `i32`. Inside the triangle the result differs from the exact affine map by at
-//! most `2^-13` of the triangle's largest light-coordinate difference from vertex 0, plus 2
-//! units (tested): for a triangle that spans a whole 64 x 64 map, 1/128 texel, and 8 depth
-//! steps over the whole depth range, far inside the bias such a sloped receiver gets. Beyond
-//! that the fragment's `u, v` carry the span loop's own interpolation error, as the light
-//! varyings would.
+//! `u - u0` and `v - v0` (I16F16 texel units, as the fragment has them) are each shifted
+//! right by the smallest shift that brings the triangle's largest vertex difference on that
+//! axis below `2^15` ([`COORD_BITS`]); the coefficients are `a 2^q` rounded to `i32` with
+//! `q` (per light coordinate, at most 30) the largest that keeps both below `2^15`, so each
+//! product and their sum fit `i32`. The solve keeps 7 more bits per axis and divides once
+//! per triangle (a 64-bit reciprocal of the determinant). Inside the triangle the result differs from the exact
+//! affine map by at most `2^-11 c` of the triangle's largest light-coordinate difference
+//! from vertex 0, plus 2 units, where `c = e_u e_v / A` is the conditioning of its texture
+//! coordinates (extents `e_u`, `e_v`, area `A`: 2 for a right triangle along the axes;
+//! tested up to 64). For a right triangle that spans a whole 64 x 64 map that is 1/16
+//! texel, and 64 depth steps across the whole depth range (such a sloped receiver's bias
+//! is several hundred steps). The map coordinates `s, t` come out absolute (vertex 0's value
+//! folded into the sum, [`ABSOLUTE`]: the lookup adds nothing per pixel), which caps their
+//! `q` so that every value of the triangle times `2^q` fits `i32`: that adds at most
+//! `2^-14` of the largest value (1/256 texel of a 64 x 64 map). Beyond that the fragment's
+//! `u, v` carry the span loop's own interpolation error, as the light varyings would.
 //!
-//! A triangle whose texture coordinates have no area at this precision (`det = 0`), or
-//! whose slope does not fit (`q < 0`), takes its first vertex's light coordinates for every
-//! pixel.
+//! A triangle whose texture coordinates have no area at this precision (a sliver thinner
+//! than `2^-15` of its extent) takes its first vertex's light coordinates for every pixel;
+//! slivers lose precision in proportion to `c` before that: give meshes with slivers in
+//! texture space the light-varying form.
 
 use crate::math::div_u64;
+
+/// How many light coordinates, from the first, [`UvLight::at`] gives absolute (the map's
+/// `s, t`, or a spot light's `a, b`): the lookup then adds no vertex-0 value to them.
+pub const ABSOLUTE: usize = 2;
+
+/// Bits of a fragment's `u - u0`, `v - v0` after their shift.
+const COORD_BITS: u32 = 15;
+/// Bits of a coefficient: with [`COORD_BITS`], each product below `2^30`.
+const COEF_BITS: u32 = 30 - COORD_BITS;
+/// Bits of the differences the solve keeps (the determinant below `2^(2 SOLVE_BITS + 1)`,
+/// a coefficient's numerator times `2^e` below `2^(COEF_BITS + 2 SOLVE_BITS + 1)` = 2^62).
+const SOLVE_BITS: u32 = 22;
 
 /// The per-triangle map from a fragment's `(u, v)` to its light coordinates (differences
 /// from vertex 0, in the light's formats).
@@ -39,14 +58,17 @@ use crate::math::div_u64;
 pub struct UvLight {
     /// Vertex 0's `u, v` in the fragment's units (I16F16 texels, wrapping).
     pub(super) origin: [i32; 2],
-    /// Right shift of `u - u0`, `v - v0`.
-    pub(super) p: u8,
+    /// Right shifts of `u - u0` and of `v - v0`.
+    pub(super) p: [u8; 2],
     /// Per light coordinate: right shift of the sum.
     pub(super) q: [u8; 4],
     /// Per light coordinate: `a 2^q` (below `2^15`).
     pub(super) a: [i32; 4],
     /// Per light coordinate: `b 2^q`.
     pub(super) b: [i32; 4],
+    /// The first [`ABSOLUTE`] coordinates' vertex-0 value times `2^q`: those come out
+    /// absolute, not as differences.
+    pub(super) c: [i32; ABSOLUTE],
 }
 
 /// `x << k` for `|x| < 2^33`, saturated at `±2^46` (then `>> 31` is below `2^15`).
@@ -67,79 +89,125 @@ impl UvLight {
             widen(d, shift)
         };
         let (du1, dv1, du2, dv2) = (diff(1, 0), diff(1, 1), diff(2, 0), diff(2, 1));
-        let largest = du1
-            .unsigned_abs()
-            .max(dv1.unsigned_abs())
-            .max(du2.unsigned_abs())
-            .max(dv2.unsigned_abs());
-        let p = (64 - largest.leading_zeros()).saturating_sub(15).min(31);
-        let r = |d: i64| d >> p.min(63);
-        let (u1, v1, u2, v2) = (r(du1), r(dv1), r(du2), r(dv2));
-        let det = u1 * v2 - u2 * v1;
+        // Per axis, the smallest shift that brings its largest difference below 2^15.
+        let shift_of = |a: i64, b: i64| {
+            let largest = a.unsigned_abs().max(b.unsigned_abs());
+            (64 - largest.leading_zeros())
+                .saturating_sub(COORD_BITS)
+                .min(31)
+        };
+        let (pu, pv) = (shift_of(du1, du2), shift_of(dv1, dv2));
+        // Without a solve (below), every pixel gets vertex 0's coordinates.
         let mut out = UvLight {
             origin,
-            p: p as u8,
+            p: [pu as u8, pv as u8],
+            c: [light[0][0], light[0][1]],
             ..UvLight::default()
         };
+        // The solve keeps 9 more bits per axis than the pixels (differences below 2^24, the
+        // determinant below 2^49): its rounding stays far below the pixels'.
+        let (su, sv) = (
+            pu.saturating_sub(SOLVE_BITS - COORD_BITS),
+            pv.saturating_sub(SOLVE_BITS - COORD_BITS),
+        );
+        let (u1, u2, v1, v2) = (du1 >> su, du2 >> su, dv1 >> sv, dv2 >> sv);
+        let det = u1 * v2 - u2 * v1;
         if det == 0 {
             return out;
         }
-        // One division per triangle: 2^62 / |det| (at least 2^31, as |det| < 2^31).
         let det_abs = det.unsigned_abs();
-        let inv = div_u64(1 << 62, det_abs);
         let det_bits = 64 - det_abs.leading_zeros();
+        // One division per triangle: 2^62 / |det|, at least 2^17 (|det| < 2^45), so each
+        // coefficient below 2^15 comes out within a quarter unit plus its rounding.
+        let inv = div_u64(1 << 62, det_abs);
         let [l0, l1s, l2s] = light;
         for (c, ((&x0, &x1), &x2)) in l0.iter().zip(&l1s).zip(&l2s).enumerate().take(n) {
             let l1 = i64::from(x1) - i64::from(x0);
             let l2 = i64::from(x2) - i64::from(x0);
-            // Below 2^33 x 2^15 x 2: no overflow.
+            // Below 2^33 x 2^24 x 2: no overflow.
             let na = l1 * v2 - l2 * v1;
             let nb = u1 * l2 - u2 * l1;
             let big = na.unsigned_abs().max(nb.unsigned_abs());
-            // A q with |n| 2^q < 2^14 |det| (so the coefficient is below 2^15, and
-            // |n| 2^q below 2^45), at most 30.
-            let q = (14 + det_bits as i32 - (64 - big.leading_zeros()) as i32).min(30);
-            if q < 0 {
+            // The coefficients per pixel unit (2^(pu - su) solve units of u, likewise v) are
+            // n 2^e / det with e = q + (pu - su) for a, q + (pv - sv) for b. From the bit
+            // lengths, q0 keeps both below 2^15 and q0 + 1 below 2^16: they are computed at
+            // q0 + 1 (at most 30) and halved back to q0 when one reaches 2^15. Then
+            // |n| 2^e < 2^(16 + bits(det)) <= 2^61.
+            let extra = (pu - su).max(pv - sv) as i32;
+            let q0 =
+                COEF_BITS as i32 - 1 + det_bits as i32 - (64 - big.leading_zeros()) as i32 - extra;
+            if q0 < 0 {
                 return UvLight {
                     a: [0; 4],
                     b: [0; 4],
+                    q: [0; 4],
+                    c: [light[0][0], light[0][1]],
                     ..out
                 };
             }
-            // n 2^q / det, rounded: (|n| 2^q) (2^62 / |det|) / 2^62.
-            let coef = |num: i64| {
-                let m = ((u128::from(num.unsigned_abs() << q) * u128::from(inv) + (1 << 61)) >> 62)
-                    as i64;
-                let m = m.min(1 << 15);
+            let q = (q0 + 1).min(30) as u32;
+            // |n| 2^e / |det|, rounded: |n| 2^e (2^62 / |det|) / 2^62.
+            let magnitude = |num: i64, e: u32| {
+                let scaled = u128::from(num.unsigned_abs() << e) * u128::from(inv);
+                ((scaled + (1 << 61)) >> 62) as u64
+            };
+            let (mut ma, mut mb) = (magnitude(na, q + (pu - su)), magnitude(nb, q + (pv - sv)));
+            let mut q = q;
+            if ma.max(mb) >= 1 << COEF_BITS {
+                (ma, mb, q) = ((ma + 1) >> 1, (mb + 1) >> 1, q - 1);
+            }
+            // An absolute coordinate adds its vertex-0 value times 2^q: q is capped so that
+            // every value of the triangle times 2^q fits i32 (the sum wraps on the way).
+            if c < ABSOLUTE {
+                let mag = i64::from(x0)
+                    .unsigned_abs()
+                    .max(i64::from(x1).unsigned_abs())
+                    .max(i64::from(x2).unsigned_abs());
+                let cap = 30u32.saturating_sub(64 - mag.leading_zeros());
+                if q > cap {
+                    let k = q - cap;
+                    (ma, mb, q) = ((ma + (1 << (k - 1))) >> k, (mb + (1 << (k - 1))) >> k, cap);
+                }
+                if let Some(cc) = out.c.get_mut(c) {
+                    *cc = (i64::from(x0) << q) as i32;
+                }
+            }
+            let signed = |m: u64, num: i64| {
+                let m = m.min(1 << COEF_BITS) as i32;
                 if (num < 0) != (det < 0) {
-                    -m as i32
+                    -m
                 } else {
-                    m as i32
+                    m
                 }
             };
             if let (Some(a), Some(b), Some(qc)) =
                 (out.a.get_mut(c), out.b.get_mut(c), out.q.get_mut(c))
             {
-                *a = coef(na);
-                *b = coef(nb);
+                *a = signed(ma, na);
+                *b = signed(mb, nb);
                 *qc = q as u8;
             }
         }
         out
     }
 
-    /// The light coordinates (differences from vertex 0) of a fragment with texture
-    /// coordinates `u, v` (the fragment's values); the first `n` are computed, the others 0.
+    /// The light coordinates of a fragment with texture coordinates `u, v` (the fragment's
+    /// values): the first [`ABSOLUTE`] as they are, the others as differences from vertex 0;
+    /// the first `n` are computed, the others 0.
     #[inline(always)]
     pub fn at(&self, u: i32, v: i32, n: usize) -> [i32; 4] {
-        let du = u.wrapping_sub(self.origin[0]) >> self.p;
-        let dv = v.wrapping_sub(self.origin[1]) >> self.p;
+        let du = u.wrapping_sub(self.origin[0]) >> self.p[0];
+        let dv = v.wrapping_sub(self.origin[1]) >> self.p[1];
         core::array::from_fn(|c| {
             if c < n {
-                self.a[c]
+                let sum = self.a[c]
                     .wrapping_mul(du)
-                    .wrapping_add(self.b[c].wrapping_mul(dv))
-                    >> self.q[c]
+                    .wrapping_add(self.b[c].wrapping_mul(dv));
+                let sum = match self.c.get(c) {
+                    Some(&base) => sum.wrapping_add(base),
+                    None => sum,
+                };
+                sum >> self.q[c]
             } else {
                 0
             }
@@ -149,7 +217,7 @@ impl UvLight {
 
 #[cfg(test)]
 mod tests {
-    use super::UvLight;
+    use super::{UvLight, ABSOLUTE};
 
     /// The exact affine map at `(u, v)` in f64.
     fn exact(uv: [[i32; 2]; 3], light: [[i32; 4]; 3], c: usize, u: f64, v: f64) -> f64 {
@@ -187,7 +255,12 @@ mod tests {
         ] {
             let got = m.at(u, v, 3);
             for c in 0..3 {
-                let want = exact(uv, light, c, f64::from(u), f64::from(v));
+                let base = if c < ABSOLUTE {
+                    f64::from(light[0][c])
+                } else {
+                    0.0
+                };
+                let want = exact(uv, light, c, f64::from(u), f64::from(v)) + base;
                 let range = (0..3)
                     .map(|i| f64::from(light[i][c] - light[0][c]).abs())
                     .fold(1.0, f64::max);
@@ -217,7 +290,8 @@ mod tests {
         let uv = [[0, 0], [100 << 16, 100 << 16], [200 << 16, 200 << 16]];
         let light = [[5, 6, 7, 8], [500, 600, 700, 800], [9, 9, 9, 9]];
         let m = UvLight::solve(uv, 0, light, 4);
-        assert_eq!(m.at(123 << 16, 7 << 16, 4), [0; 4]);
+        // The absolute coordinates are vertex 0's, the others differences of 0.
+        assert_eq!(m.at(123 << 16, 7 << 16, 4), [5, 6, 0, 0]);
     }
 
     #[test]
