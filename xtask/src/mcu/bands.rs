@@ -235,7 +235,7 @@ pub(super) fn models(f: &Figures) -> String {
 /// The real-time modes, each a plain textured draw of the sphere after its work moved out
 /// of the pixel loop, against the plain lit textured `sphere` (the same bands); and the
 /// flame from baked layers against the same quad textured (`flame_plain`).
-const REALTIME: [(&str, &str, &str); 8] = [
+const REALTIME: [(&str, &str, &str); 6] = [
     (
         "environment map: sphere-map coordinates per vertex",
         "env_matcap",
@@ -247,18 +247,8 @@ const REALTIME: [(&str, &str, &str); 8] = [
         "sphere",
     ),
     (
-        "solid noise: marble baked into the texture",
+        "solid noise: marble baked into the texture (wood and granite: docs/mcu.md)",
         "noise_baked",
-        "sphere",
-    ),
-    (
-        "solid noise: wood baked into the texture",
-        "noise_baked_wood",
-        "sphere",
-    ),
-    (
-        "solid noise: granite baked into the texture",
-        "noise_baked_granite",
         "sphere",
     ),
     (
