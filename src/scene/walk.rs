@@ -799,6 +799,62 @@ mod tests {
         out.seen
     }
 
+    /// Records each triangle's id and corner positions; asks for attributes when `full`.
+    struct Positions {
+        full: bool,
+        seen: Vec<(usize, [(i32, i32); 3])>,
+    }
+
+    impl TriangleOut for Positions {
+        fn wants(&self, _: usize) -> bool {
+            true
+        }
+        fn attributes(&self) -> bool {
+            self.full
+        }
+        fn triangle(&mut self, id: usize, tri: &ScreenTriangle) {
+            if !self.full {
+                // Through the default `triangle_rows`: positions alone.
+                assert!(tri
+                    .iter()
+                    .all(|v| v.z == 0 && v.w == 0 && v.varyings == [0; 5]));
+            }
+            self.seen.push((id, tri.map(|v| (v.x, v.y))));
+        }
+    }
+
+    /// Without attributes the walker hands over the very positions it hands over with them
+    /// (the rows a band renderer's binning pass counts), for the same triangles, whatever
+    /// the cache: a slot per vertex, direct-mapped, or so short that corners of one
+    /// triangle share a slot (16 entries: the sphere's rings are 49 vertices apart).
+    #[test]
+    fn rows_alone_are_the_positions_of_the_full_walk() {
+        let sphere = demo::sphere();
+        let mesh = sphere.mesh().expect("the demo sphere");
+        let vp = Viewport::new(0, 0, 320, 240).expect("a viewport");
+        let mode = DrawMode {
+            shading: Shading::Gouraud,
+            cull: Cull::Back,
+            ..DrawMode::default()
+        };
+        let draw = Draw::<Rgb565>::dynamic(mode, None, vp).expect("an untextured draw");
+        let transform = MeshTransform::new(&demo::sphere_model(3), &demo::camera(20));
+        for len in [mesh.vertices(), 64, 16, 0] {
+            let run = |full: bool| {
+                let mut cache = std::vec![CachedVertex::default(); len];
+                let mut out = Positions {
+                    full,
+                    seen: Vec::new(),
+                };
+                walk_mesh(&draw, &mesh, &transform, None, &mut cache, 0, &mut out);
+                out.seen
+            };
+            let full = run(true);
+            assert!(full.len() > 500, "{} triangles", full.len());
+            assert_eq!(run(false), full, "cache of {len}");
+        }
+    }
+
     /// The model-space back-face test spares the far side's vertices: with back faces
     /// culled, the demo sphere prepares well under half of its vertices, and draws exactly
     /// the triangles it draws without the test (every triangle it drops faces away).
