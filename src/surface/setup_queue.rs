@@ -119,6 +119,21 @@ impl<'s> SetupQueue<'s> {
 }
 
 impl SetupQueue<'_> {
+    /// Whether [`resume_before`](Self::resume_before) with `key` has anything to do: its
+    /// first test of the head, inline, so that the band pass calls it (out of line, with
+    /// its closure) only when the head waits to be resumed or dropped.
+    #[inline(always)]
+    pub(super) fn waits_before(&self, key: Option<u32>) -> bool {
+        if self.state.len == 0 {
+            return false;
+        }
+        let Some(h) = self.slots.get(self.state.head) else {
+            return false;
+        };
+        let above = self.band.wrapping_sub(1);
+        !(h.band == self.band || key.is_some_and(|k| h.band == above && h.key >= k))
+    }
+
     /// Draws what the band above kept resumable for the screen triangles before `key`
     /// (every one with `None`), in key order, through `draw`; returns the pixels `draw`
     /// counted. An entry whose triangle goes on below row `end` (this band's end,

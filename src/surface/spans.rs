@@ -377,7 +377,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 let (first, end) = band.row_range();
                 let (r0, r1) = rows_of(tri);
                 // What the band above kept for the triangles before this one, in order.
-                if key.is_some() {
+                if key.is_some() && setups.waits_before(key) {
                     *pixels = pixels.saturating_add(resume(draws, setups, band, key, end));
                 }
                 let goes_on = r1 > end;
