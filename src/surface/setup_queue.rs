@@ -72,7 +72,9 @@ impl<'s> SetupQueue<'s> {
     }
 
     /// What to do with the set-up of screen triangle `key` of draw `draw` in this band;
-    /// `goes_on` when it has rows below the band (its set-up is worth keeping).
+    /// `goes_on` when it has rows below the band (its set-up is worth keeping). Inlined
+    /// into the band passes, which ask once per triangle a band draws.
+    #[inline(always)]
     pub(super) fn slot(&mut self, key: u32, draw: u8, goes_on: bool) -> SetupSlot<'_> {
         let above = self.band.wrapping_sub(1);
         // Drop what the band above kept for triangles before this one (and anything older).
