@@ -32,7 +32,9 @@
 //! entries); empty, nothing is cached (each corner is prepared on its own). A band
 //! renderer's sink keeps the cache across its band passes ([`TriangleOut::fresh`]), and its
 //! binning pass places vertices without the depth division (completed for the triangles a
-//! band draws).
+//! band draws) and hands over positions alone ([`TriangleOut::triangle_rows`]). A band
+//! pass's triangles, known to pass the cull, take the same path as a whole frame's: read
+//! straight out of the cache.
 
 use crate::color::TargetColor;
 use crate::geometry::clip::{complete_depth, keeps_xy, prepare, prepare_without_depth};
@@ -121,16 +123,6 @@ impl CachedVertex {
         (self.x >> (SUB_BITS + 1), self.y >> (SUB_BITS + 1))
     }
 
-    /// [`CachedVertex::screen`]'s position alone (depth, `w` and varyings zero).
-    fn position(&self) -> ScreenVertex {
-        let (x, y) = self.xy();
-        ScreenVertex {
-            x,
-            y,
-            ..ScreenVertex::default()
-        }
-    }
-
     /// The screen vertex with its texture coordinates; its colour varyings are left zero
     /// (the walker sets them once the vertex is lit).
     fn screen(&self) -> ScreenVertex {
@@ -200,6 +192,17 @@ pub trait TriangleOut {
     fn attributes(&self) -> bool;
     /// One screen triangle of triangle `id`.
     fn triangle(&mut self, id: usize, tri: &ScreenTriangle);
+    /// [`triangle`](Self::triangle) when [`attributes`](Self::attributes) is false: the
+    /// screen triangle's positions alone (`x` and `y`; the rest zero). By default the same
+    /// positions go to [`triangle`](Self::triangle) with zero depth and varyings.
+    fn triangle_rows(&mut self, id: usize, tri: &ScreenTriangle<0>) {
+        let at = |v: &ScreenVertex<0>| ScreenVertex {
+            x: v.x,
+            y: v.y,
+            ..ScreenVertex::default()
+        };
+        self.triangle(id, &[at(&tri[0]), at(&tri[1]), at(&tri[2])]);
+    }
 }
 
 /// A mesh's model-view and model-view-projection matrices (two 4x4 products: about 2,500
@@ -371,142 +374,141 @@ pub fn walk_mesh<C: TargetColor, O: TriangleOut, G: VertexUv>(
         // slots, and only what the outcode and cull tests read copied out (12 bytes per
         // corner, not 32): a culled triangle (half of a closed mesh) copies nothing more.
         let slots = idx.map(|i| usize::from(i) & mask);
-        if !known {
-            // Corners not prepared yet: unless the triangle surely faces the culled way
-            // (then they are not prepared for it), prepared now.
-            let keys = idx.map(|i| u32::from(i) | tag);
+        let keys = idx.map(|i| u32::from(i) | tag);
+        // A triangle known to pass the cull skips both tests. Else, with corners not
+        // prepared yet: unless the triangle surely faces the culled way (then they are not
+        // prepared for it), prepared now.
+        let faced = if known {
+            None
+        } else {
             let missing = (0..3).any(|k| {
                 cache
                     .get(slots[k])
                     .is_some_and(|c| c.key != keys[k] || c.state == EMPTY)
             });
-            // The model-space test decides whatever the cache holds (it and the screen-space
-            // test can disagree on a sliver whose projection rounds to the other
-            // orientation). With a corner missing it runs first, as it then saves preparing
-            // corners; with all three prepared it runs once the cheaper screen-space test has
-            // kept a triangle inside the guard band, or before a crossing one is clipped.
-            let faced = faces.filter(|_| !missing);
+            // The model-space test decides whatever the cache holds (it and the
+            // screen-space test can disagree on a sliver whose projection rounds to the
+            // other orientation). With a corner missing it runs first, as it then saves
+            // preparing corners; with all three prepared it runs once the cheaper
+            // screen-space test has kept a triangle inside the guard band, or before a
+            // crossing one is clipped.
             if missing && faces.is_some_and(|f| f.culls(mesh.positions, idx)) {
                 continue;
             }
-            let mut cut = [(0i32, 0i32, 0u8); 3];
-            for k in 0..3 {
-                let i = usize::from(idx[k]);
-                if let Some(c) = cache.get_mut(slots[k]) {
-                    if c.key != keys[k] || c.state == EMPTY {
-                        place(&ctx, vp, i, c, full);
-                        generate_uv(&uvs, &ctx, i, c);
-                        c.key = keys[k];
-                    }
-                    cut[k] = (c.x, c.y, c.outcode);
+            faces.filter(|_| !missing)
+        };
+        // The corners prepared in their cache slots, and only what the outcode and cull
+        // tests read copied out (12 bytes per corner, not 32): a culled triangle (half of a
+        // closed mesh) copies nothing more.
+        let mut cut = [(0i32, 0i32, 0u8); 3];
+        for k in 0..3 {
+            let i = usize::from(idx[k]);
+            if let Some(c) = cache.get_mut(slots[k]) {
+                if c.key != keys[k] || c.state == EMPTY {
+                    place(&ctx, vp, i, c, full);
+                    generate_uv(&uvs, &ctx, i, c);
+                    c.key = keys[k];
                 }
+                cut[k] = (c.x, c.y, c.outcode);
             }
-            let codes = [cut[0].2, cut[1].2, cut[2].2];
-            let inside = codes[0] | codes[1] | codes[2] == 0;
+        }
+        let codes = [cut[0].2, cut[1].2, cut[2].2];
+        let inside = codes[0] | codes[1] | codes[2] == 0;
+        let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
+        if !known {
             // Cull from the cached positions: a culled triangle builds no screen vertices.
-            let xy = |k: usize| (cut[k].0 >> (SUB_BITS + 1), cut[k].1 >> (SUB_BITS + 1));
             if inside && !keeps_xy([xy(0), xy(1), xy(2)], cull) {
                 continue;
             }
             if faced.is_some_and(|f| f.culls_out_of_line(mesh.positions, idx)) {
                 continue;
             }
-            if !inside {
-                to_clip(draw, &ctx, &uvs, idx, lit, id, codes, out);
+        }
+        if !inside {
+            to_clip(draw, &ctx, &uvs, idx, lit, id, codes, out);
+            continue;
+        }
+        if !full {
+            // Without attributes only the rows count (a band renderer's binning pass once
+            // its bins are full): the positions alone, straight from the cut.
+            let at = |k: usize| {
+                let (x, y) = xy(k);
+                ScreenVertex::<0> {
+                    x,
+                    y,
+                    ..ScreenVertex::default()
+                }
+            };
+            out.triangle_rows(id, &[at(0), at(1), at(2)]);
+            continue;
+        }
+        // Corners in three distinct slots (always, with a slot per vertex), placed with
+        // depth: lit where they lie and read straight out of the cache, without the copies
+        // of the general path below (the same triangle).
+        if slots[0] != slots[1] && slots[1] != slots[2] && slots[0] != slots[2] {
+            let mut ready = true;
+            for k in 0..3 {
+                match cache.get_mut(slots[k]) {
+                    Some(c) if c.state == PLACED || c.state == LIT => {
+                        if lit && c.state == PLACED {
+                            light_vertex(&ctx, usize::from(idx[k]), c);
+                        }
+                        ready &= c.state != FAILED;
+                    }
+                    _ => ready = false,
+                }
+            }
+            if let (true, Some(a), Some(b), Some(c)) = (
+                ready,
+                cache.get(slots[0]),
+                cache.get(slots[1]),
+                cache.get(slots[2]),
+            ) {
+                out.triangle(id, &[a.screen_lit(), b.screen_lit(), c.screen_lit()]);
                 continue;
             }
-            // Corners in three distinct slots (always, with a slot per vertex), placed with
-            // depth: lit where they lie and read straight out of the cache, without the
-            // copies of the general path below (the same triangle).
-            if full && slots[0] != slots[1] && slots[1] != slots[2] && slots[0] != slots[2] {
-                let mut ready = true;
-                for k in 0..3 {
-                    match cache.get_mut(slots[k]) {
-                        Some(c) if c.state == PLACED || c.state == LIT => {
-                            if lit && c.state == PLACED {
-                                light_vertex(&ctx, usize::from(idx[k]), c);
-                            }
-                            ready &= c.state != FAILED;
-                        }
-                        _ => ready = false,
-                    }
-                }
-                if let (true, Some(a), Some(b), Some(c)) = (
-                    ready,
-                    cache.get(slots[0]),
-                    cache.get(slots[1]),
-                    cache.get(slots[2]),
-                ) {
-                    out.triangle(id, &[a.screen_lit(), b.screen_lit(), c.screen_lit()]);
-                    continue;
-                }
-            }
         }
-        // The corners copied out whole (prepared now for a triangle known to pass the cull, a
-        // band pass's). Two corners of a small cache may share a direct-mapped slot, and the
-        // later one then replaced the earlier: placed again.
-        let mut v: [CachedVertex; 3] = core::array::from_fn(|k| {
-            let i = usize::from(idx[k]);
-            let key = i as u32 | tag;
-            match cache.get_mut(slots[k]) {
-                Some(c) if c.key == key && c.state != EMPTY => *c,
-                Some(c) if known => {
-                    place(&ctx, vp, i, c, full);
-                    generate_uv(&uvs, &ctx, i, c);
-                    c.key = key;
-                    *c
-                }
-                _ => {
-                    let mut c = CachedVertex::EMPTY;
-                    place(&ctx, vp, i, &mut c, full);
-                    generate_uv(&uvs, &ctx, i, &mut c);
-                    c.key = key;
-                    c
-                }
+        // The general path (a corner the binning pass left without depth, a corner whose
+        // lighting failed, or two corners of a small cache sharing a direct-mapped slot,
+        // where the later one replaced the earlier: placed again): the corners copied out
+        // whole.
+        let mut v: [CachedVertex; 3] = core::array::from_fn(|k| match cache.get(slots[k]) {
+            Some(c) if c.key == keys[k] && c.state != EMPTY => *c,
+            _ => {
+                let i = usize::from(idx[k]);
+                let mut c = CachedVertex::EMPTY;
+                place(&ctx, vp, i, &mut c, full);
+                generate_uv(&uvs, &ctx, i, &mut c);
+                c.key = keys[k];
+                c
             }
         });
-        if known {
-            let codes = [v[0].outcode, v[1].outcode, v[2].outcode];
-            if codes[0] | codes[1] | codes[2] != 0 {
-                to_clip(draw, &ctx, &uvs, idx, lit, id, codes, out);
-                continue;
+        let mut tri = [v[0].screen(), v[1].screen(), v[2].screen()];
+        // Complete what binning left out (depth), then light.
+        let mut failed = false;
+        for k in 0..3 {
+            let before = v[k].state;
+            if v[k].state == NO_DEPTH {
+                complete_depth(&mut tri[k], vp);
+                v[k].z = tri[k].z;
+                v[k].state = PLACED;
             }
-        }
-        // Without attributes only the rows count (a band renderer's binning pass once its
-        // bins are full): positions alone.
-        let mut tri = if full {
-            [v[0].screen(), v[1].screen(), v[2].screen()]
-        } else {
-            [v[0].position(), v[1].position(), v[2].position()]
-        };
-        if full {
-            // Kept: complete what binning left out (depth), then light.
-            let mut failed = false;
-            for k in 0..3 {
-                let before = v[k].state;
-                if v[k].state == NO_DEPTH {
-                    complete_depth(&mut tri[k], vp);
-                    v[k].z = tri[k].z;
-                    v[k].state = PLACED;
-                }
-                if lit && v[k].state == PLACED {
-                    light_vertex(&ctx, usize::from(idx[k]), &mut v[k]);
-                }
-                if v[k].state != before {
-                    let i = usize::from(idx[k]);
-                    if let Some(c) = cache.get_mut(i & mask) {
-                        if c.key == v[k].key {
-                            *c = v[k];
-                        }
+            if lit && v[k].state == PLACED {
+                light_vertex(&ctx, usize::from(idx[k]), &mut v[k]);
+            }
+            if v[k].state != before {
+                if let Some(c) = cache.get_mut(slots[k]) {
+                    if c.key == v[k].key {
+                        *c = v[k];
                     }
                 }
-                failed |= v[k].state == FAILED;
-                let c = i32::from(v[k].color.min(COLOR_ONE)) << 16;
-                tri[k].varyings[2..].fill(c);
             }
-            if failed {
-                continue;
-            }
+            failed |= v[k].state == FAILED;
+            let c = i32::from(v[k].color.min(COLOR_ONE)) << 16;
+            tri[k].varyings[2..].fill(c);
+        }
+        if failed {
+            continue;
         }
         out.triangle(id, &tri);
     }
@@ -695,6 +697,10 @@ pub fn mesh_to_sink<C: TargetColor, G: VertexUv>(
         fn triangle(&mut self, id: usize, tri: &ScreenTriangle) {
             self.sink.push(id, self.draw, tri);
         }
+        fn triangle_rows(&mut self, id: usize, tri: &ScreenTriangle<0>) {
+            self.sink
+                .push_rows::<{ crate::geometry::CLASSIC_VARYINGS }>(id, self.draw, tri);
+        }
     }
     let mut out = ToSink {
         sink,
@@ -791,6 +797,62 @@ mod tests {
         };
         walk_mesh(&draw, &mesh, &transform, None, &mut cache, 5, &mut out);
         out.seen
+    }
+
+    /// Records each triangle's id and corner positions; asks for attributes when `full`.
+    struct Positions {
+        full: bool,
+        seen: Vec<(usize, [(i32, i32); 3])>,
+    }
+
+    impl TriangleOut for Positions {
+        fn wants(&self, _: usize) -> bool {
+            true
+        }
+        fn attributes(&self) -> bool {
+            self.full
+        }
+        fn triangle(&mut self, id: usize, tri: &ScreenTriangle) {
+            if !self.full {
+                // Through the default `triangle_rows`: positions alone.
+                assert!(tri
+                    .iter()
+                    .all(|v| v.z == 0 && v.w == 0 && v.varyings == [0; 5]));
+            }
+            self.seen.push((id, tri.map(|v| (v.x, v.y))));
+        }
+    }
+
+    /// Without attributes the walker hands over the very positions it hands over with them
+    /// (the rows a band renderer's binning pass counts), for the same triangles, whatever
+    /// the cache: a slot per vertex, direct-mapped, or so short that corners of one
+    /// triangle share a slot (16 entries: the sphere's rings are 49 vertices apart).
+    #[test]
+    fn rows_alone_are_the_positions_of_the_full_walk() {
+        let sphere = demo::sphere();
+        let mesh = sphere.mesh().expect("the demo sphere");
+        let vp = Viewport::new(0, 0, 320, 240).expect("a viewport");
+        let mode = DrawMode {
+            shading: Shading::Gouraud,
+            cull: Cull::Back,
+            ..DrawMode::default()
+        };
+        let draw = Draw::<Rgb565>::dynamic(mode, None, vp).expect("an untextured draw");
+        let transform = MeshTransform::new(&demo::sphere_model(3), &demo::camera(20));
+        for len in [mesh.vertices(), 64, 16, 0] {
+            let run = |full: bool| {
+                let mut cache = std::vec![CachedVertex::default(); len];
+                let mut out = Positions {
+                    full,
+                    seen: Vec::new(),
+                };
+                walk_mesh(&draw, &mesh, &transform, None, &mut cache, 0, &mut out);
+                out.seen
+            };
+            let full = run(true);
+            assert!(full.len() > 500, "{} triangles", full.len());
+            assert_eq!(run(false), full, "cache of {len}");
+        }
     }
 
     /// The model-space back-face test spares the far side's vertices: with back faces

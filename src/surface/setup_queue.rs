@@ -72,7 +72,9 @@ impl<'s> SetupQueue<'s> {
     }
 
     /// What to do with the set-up of screen triangle `key` of draw `draw` in this band;
-    /// `goes_on` when it has rows below the band (its set-up is worth keeping).
+    /// `goes_on` when it has rows below the band (its set-up is worth keeping). Inlined
+    /// into the band passes, which ask once per triangle a band draws.
+    #[inline(always)]
     pub(super) fn slot(&mut self, key: u32, draw: u8, goes_on: bool) -> SetupSlot<'_> {
         let above = self.band.wrapping_sub(1);
         // Drop what the band above kept for triangles before this one (and anything older).
@@ -119,6 +121,21 @@ impl<'s> SetupQueue<'s> {
 }
 
 impl SetupQueue<'_> {
+    /// Whether [`resume_before`](Self::resume_before) with `key` has anything to do: its
+    /// first test of the head, inline, so that the band pass calls it (out of line, with
+    /// its closure) only when the head waits to be resumed or dropped.
+    #[inline(always)]
+    pub(super) fn waits_before(&self, key: Option<u32>) -> bool {
+        if self.state.len == 0 {
+            return false;
+        }
+        let Some(h) = self.slots.get(self.state.head) else {
+            return false;
+        };
+        let above = self.band.wrapping_sub(1);
+        !(h.band == self.band || key.is_some_and(|k| h.band == above && h.key >= k))
+    }
+
     /// Draws what the band above kept resumable for the screen triangles before `key`
     /// (every one with `None`), in key order, through `draw`; returns the pixels `draw`
     /// counted. An entry whose triangle goes on below row `end` (this band's end,

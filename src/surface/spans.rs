@@ -35,7 +35,7 @@
 //! | mesh | triangles | rung | storage besides the band | measured RAM (firmware) |
 //! |---|---:|---|---:|---:|
 //! | cube | 12 (6 on screen) | bins (16) | 2,688 + cache 32 x 32 = 1,024 + set-ups 16 x 100 = 1,600 | 21.1 KB |
-//! | benchmark sphere | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 31 x 100 = 3,100 | 23.3 KB |
+//! | benchmark sphere (`sphere_sized`) | 2,208 (656 on screen) | ranges | 4,416 + cache 64 x 32 = 2,048 + set-ups 40 x 100 = 4,000 (every triangle crossing a band boundary; 35 on Cortex-M0+) | 24.2 KB (Cortex-M4F) |
 //! | fine sphere | 10,080 | ranges | 20,160 + cache | over 24 KB: give `ranges` what fits, the rest is re-walked per band (flagged) |
 //! | any | n | bins | 168 per screen triangle | |
 //!
@@ -377,7 +377,7 @@ impl<C: TargetColor> MeshSink<'_, '_, '_, C> {
                 let (first, end) = band.row_range();
                 let (r0, r1) = rows_of(tri);
                 // What the band above kept for the triangles before this one, in order.
-                if key.is_some() {
+                if key.is_some() && setups.waits_before(key) {
                     *pixels = pixels.saturating_add(resume(draws, setups, band, key, end));
                 }
                 let goes_on = r1 > end;

@@ -10,7 +10,7 @@
 use fixel_firmware::{data, report, scenes};
 
 fn run() -> bool {
-    let mut buf = scenes::SphereBuffers::with_storage();
+    let mut buf = scenes::SizedSphereBuffers::with_storage();
     let frame = core::hint::black_box(0);
     let Ok(mesh) = core::hint::black_box(&data::SPHERE)
         .mesh()
