@@ -5,6 +5,7 @@
 //! ([`golden`]), plus small synthetic scenes ([`synthetic`]).
 
 pub mod adapter;
+pub mod bump_fast_scene;
 pub mod cost_plot;
 pub mod displaced;
 pub mod env_scene;

@@ -12,116 +12,16 @@
 
 use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
 use fixel::math::Fx;
-use fixel::shading::bump::{resolve_sphere, HeightDifferences};
-use fixel::shading::lighting::{Material, Specular};
-use fixel::texture::{chain_len, Filter, HeightMap, Texture};
+use fixel::shading::bump::HeightDifferences;
+use fixel::texture::{Filter, HeightMap, Texture};
 use fixel_scenes::surface;
-use host_tests::metrics::{channel_errors, compare};
-use host_tests::reference::{render, rgb565_from_f64, RefShading, RefTexture};
+use host_tests::bump_fast_scene::{
+    fixel_resolve, maps, material, ref_texture, reference_resolve, resolved_frame, LEVELS,
+    STRENGTH, TILE,
+};
+use host_tests::metrics::channel_errors;
+use host_tests::reference::{rgb565_from_f64, RefShading};
 use host_tests::{adapter, scenes};
-
-const W: u32 = 256;
-const H: u32 = 128;
-const TILE: u32 = 64;
-const LEVELS: u32 = 7;
-/// σ, texel widths per height step (the `bump` scene's 0.02).
-const STRENGTH: i32 = surface::RESOLVE_STRENGTH;
-
-struct Maps {
-    colours: Vec<Rgb565>,
-    heights: Vec<u8>,
-}
-
-fn maps() -> Maps {
-    let n = chain_len(TILE, TILE, LEVELS);
-    let mut m = Maps {
-        colours: vec![Rgb565::new(0, 0, 0); (TILE * TILE) as usize],
-        heights: vec![0; n],
-    };
-    let mut derivs = vec![Rgb565::new(0, 0, 0); n];
-    surface::brick_maps(TILE, LEVELS, &mut m.colours, &mut m.heights, &mut derivs).unwrap();
-    m
-}
-
-fn material() -> Material<'static> {
-    Material {
-        specular: 0,
-        ..surface::material(Specular::None)
-    }
-}
-
-fn fixel_resolve(m: &Maps) -> Vec<Rgb565> {
-    let tile = Texture::new(&m.colours, TILE, TILE).unwrap();
-    let hm = HeightMap::new(&m.heights, TILE, TILE, LEVELS).unwrap();
-    let normals = HeightDifferences::new(hm, Fx::from_bits(STRENGTH)).unwrap();
-    let mut out = vec![Rgb565::new(0, 0, 0); (W * H) as usize];
-    resolve_sphere(
-        &tile,
-        &normals,
-        &material(),
-        surface::resolve_light(),
-        W,
-        H,
-        &mut out,
-    )
-    .unwrap();
-    out
-}
-
-/// The f64 definition of the resolve.
-fn reference_resolve(m: &Maps) -> Vec<[f64; 3]> {
-    let pi = std::f64::consts::PI;
-    let sigma = f64::from(STRENGTH) / 65536.0;
-    let l = surface::resolve_light();
-    let l = [l.x, l.y, l.z].map(|c| c.to_num::<f64>());
-    let norm = |v: [f64; 3]| {
-        let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        v.map(|c| c / len)
-    };
-    let l = norm(l);
-    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let h = |i: i64, j: i64| {
-        let (i, j) = (i.rem_euclid(i64::from(TILE)), j.rem_euclid(i64::from(TILE)));
-        f64::from(m.heights[(j * i64::from(TILE) + i) as usize])
-    };
-    let mat = material();
-    let (ka, kd) = (
-        f64::from(mat.ambient) / 256.0,
-        f64::from(mat.diffuse) / 256.0,
-    );
-    (0..W * H)
-        .map(|k| {
-            let (i, j) = (k % W, k / W);
-            let th = pi * (f64::from(j) + 0.5) / f64::from(H);
-            let ph = 2.0 * pi * (f64::from(i) + 0.5) / f64::from(W);
-            let n = [th.sin() * ph.cos(), th.cos(), -th.sin() * ph.sin()];
-            let t = [-ph.sin(), 0.0, -ph.cos()];
-            let b = [th.cos() * ph.cos(), -th.sin(), -th.cos() * ph.sin()];
-            let lt = norm([dot(t, l), dot(b, l), dot(n, l)]);
-            let (ii, jj) = (i64::from(i), i64::from(j));
-            let du = (h(ii + 1, jj) - h(ii - 1, jj)) / 2.0;
-            let dv = (h(ii, jj + 1) - h(ii, jj - 1)) / 2.0;
-            let np = norm([-sigma * du, -sigma * dv, 1.0]);
-            let intensity = (ka + kd * dot(np, lt).max(0.0)).min(1.0);
-            let c = m.colours[((j % TILE) * TILE + i % TILE) as usize].into_storage();
-            let ch = [
-                f64::from(c >> 11) / 31.0,
-                f64::from((c >> 5) & 63) / 63.0,
-                f64::from(c & 31) / 31.0,
-            ];
-            ch.map(|x| x * intensity)
-        })
-        .collect()
-}
-
-fn ref_texture(texels: Vec<u16>) -> RefTexture {
-    RefTexture {
-        width: W,
-        height: H,
-        texels,
-        border: 0,
-    }
-}
 
 /// Every texel against the f64 resolve.
 #[test]
@@ -145,32 +45,10 @@ fn resolve_matches_reference() {
 #[test]
 fn resolved_frame_matches_reference() {
     let m = maps();
-    let mut s = scenes::sphere(0);
-    s.lit = false;
-    s.mode.shading = RefShading::Replace;
-    s.texture = ref_texture(fixel_resolve(&m).iter().map(|c| c.into_storage()).collect());
-    let mode = fixel::pipeline::DrawMode {
-        filter: Filter::Bilinear,
-        ..adapter::draw_mode(&s.mode, None, false)
-    };
-    let tris = scenes::to_ref_triangles(&s);
-    let got = adapter::render(
-        &adapter::clip_triangles(&tris),
-        Some(&s.texture),
-        mode,
-        s.width,
-        s.height,
-    );
-    let f64_tex = ref_texture(
-        reference_resolve(&m)
-            .into_iter()
-            .map(rgb565_from_f64)
-            .collect(),
-    );
-    let want = render(&tris, Some(&f64_tex), &s.mode, s.width, s.height);
-    let e = compare(&got.pixels, &got.covered, &want);
+    let (got, e) = resolved_frame(&m);
     println!("resolved sphere vs f64 textured sphere (f64 resolve): {e}");
     assert!(e.max <= 2 && e.mean <= 0.05, "{e}");
+    let s = scenes::sphere(0);
     host_tests::golden::assert_golden("bump_fast_sphere", s.width, s.height, &got.pixels);
 }
 

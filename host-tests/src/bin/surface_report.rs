@@ -123,6 +123,7 @@ fn main() {
             r.psnr
         ));
     }
+    md.push_str(&resolved_section());
     md.push_str(
         "\nReproduce: `cargo xtask report` (or `cargo run --release -p host-tests --bin surface_report -- \
          --out target/report [--mcu target/report/mcu.tsv]`).\n\n![cost against error](surface.png)\n",
@@ -146,4 +147,42 @@ fn main() {
         eprintln!("surface_report: no plot: {e}");
     }
     println!("surface_report: wrote {}", out.join("surface.md").display());
+}
+
+/// The real-time form, the lighting resolved into the texture (`bump_fast`): its own table,
+/// as its scene differs (the benchmark sphere at 320 x 240, the light fixed in object
+/// space). Error against its own f64 definition; the counts are the banded firmware
+/// scene's, quoted from `cargo xtask mcu`'s table (`target/mcu/scenes.md`) when it exists.
+fn resolved_section() -> String {
+    let m = host_tests::bump_fast_scene::maps();
+    let (got, e, seconds) = host_tests::bump_fast_scene::resolved_frame_timed(&m);
+    let pixels = got.covered.iter().filter(|c| **c).count().max(1);
+    let table = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/mcu/scenes.md"),
+    )
+    .unwrap_or_default();
+    let count = |core: &str| {
+        table
+            .lines()
+            .find(|l| l.starts_with(&format!("| bump_fast | {core} |")))
+            .and_then(|l| l.split('|').nth(3))
+            .map_or("-".to_string(), |v| v.trim().to_string())
+    };
+    format!(
+        "\nThe real-time form: the lighting resolved into the sphere's texture for a light fixed in \
+         object space (`bump::resolve_sphere`, once per light), then a plain textured draw of the \
+         benchmark sphere (320 x 240, frame 0). Error against its own f64 definition (the f64 \
+         resolve, drawn by the f64 renderer); M0+ / M4F: the banded firmware scene `bump_fast` of \
+         `cargo xtask mcu`.\n\n\
+         | variant | host ns/px | M0+ instr/px (bands) | M4F instr/px (bands) | max LSB | p99 LSB | > 2 LSB | PSNR dB |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|\n\
+         | `bump-resolved` | {:.1} | {} | {} | {} | {} | {:.2} % | {:.1} |\n",
+        seconds * 1e9 / pixels as f64,
+        count("Cortex-M0+"),
+        count("Cortex-M4F"),
+        e.max,
+        e.p99,
+        100.0 * e.share_over_2,
+        e.psnr_db
+    )
 }
