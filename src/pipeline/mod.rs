@@ -33,4 +33,4 @@ pub use stages::{
     ProjKind, Projection, ProjectionStage, Quadratic, QuadraticBy, Replace, Shading, ShadingStage,
     Stages, Subdivided, SubdividedBy,
 };
-pub use target::{RenderTarget, Row, Rows};
+pub use target::{Lent, RenderTarget, Row, Rows};

@@ -166,16 +166,6 @@ where
     // the test off at run time (the span loops read the switch for those alone).
     debug_assert!(P::KIND == ProjKind::Dynamic || !D::TEST || params.depth_on);
     let vp = params.viewport;
-    let (r0, r1) = target.row_range();
-    let clip = Rect {
-        x0: vp.x0.max(0),
-        x1: vp.x1.min(target.width() as i32),
-        ..vp
-    }
-    .rows(r0, r1);
-    if clip.is_empty() {
-        return 0;
-    }
     let kind = match P::KIND {
         ProjKind::Dynamic => params.kind,
         k => k,
@@ -195,7 +185,7 @@ where
             else {
                 return 0;
             };
-            return draw_set_up::<S, P, D, C>(shader, &setup, &rest, kind, params, clip, target);
+            return draw_set_up::<S, P, D, C>(shader, &setup, &rest, kind, params, target);
         }
         None => {
             let Some(entry) = slot else {
@@ -268,11 +258,12 @@ where
     let Some(setup) = &built else {
         return 0;
     };
-    draw_set_up::<S, P, D, C>(shader, setup, &rest, kind, params, clip, target)
+    draw_set_up::<S, P, D, C>(shader, setup, &rest, kind, params, target)
 }
 
 /// The raster of a set-up triangle (`setup`, and `rest`: corners, the shader's data, level
-/// of detail, range proof) within `clip`; the pixels written.
+/// of detail, range proof) within the viewport and the target's rows; the pixels written.
+/// The target is read in one call ([`RenderTarget::lend`]).
 #[inline(always)]
 fn draw_set_up<S, P, D, C>(
     shader: &S,
@@ -280,7 +271,6 @@ fn draw_set_up<S, P, D, C>(
     rest: &Resume<S::Triangle>,
     kind: ProjKind,
     params: &RasterParams,
-    clip: Rect,
     target: &mut dyn RenderTarget<Color = C>,
 ) -> u32
 where
@@ -290,7 +280,18 @@ where
     C: TargetColor,
 {
     let (corners, triangle, tri_lambda) = (rest.corners, rest.triangle, rest.lambda);
-    let floor = target.depth_floor();
+    let view = target.lend();
+    let vp = params.viewport;
+    let clip = Rect {
+        x0: vp.x0.max(0),
+        x1: vp.x1.min(view.width as i32),
+        ..vp
+    }
+    .rows(view.row_range.0, view.row_range.1);
+    if clip.is_empty() {
+        return 0;
+    }
+    let (rows, floor) = (view.rows, view.depth_floor);
     // Meshes of small triangles skip the row loop's clamp for triangles within the clip's
     // columns (not on ARMv6-M: there the band scenes lose a little; measure with
     // `cargo xtask mcu`).
@@ -315,7 +316,7 @@ where
                     floor,
                     lowest: u16::MAX,
                 },
-                rows: target.rows_mut(),
+                rows,
                 pixels: 0,
                 _stages: core::marker::PhantomData,
             };

@@ -150,6 +150,35 @@ pub trait RenderTarget {
     fn lower_depth_floor(&mut self, z: u16) {
         let _ = z;
     }
+
+    /// What one triangle's raster reads of the target, in one call: its
+    /// [`width`](Self::width), [`row_range`](Self::row_range) and
+    /// [`depth_floor`](Self::depth_floor), and its [`rows_mut`](Self::rows_mut). The
+    /// default asks each method in turn; a target drawn through `dyn RenderTarget` (a band)
+    /// answers in one call, which saves the span writer three indirect calls per triangle
+    /// (about 1 % of the Cortex-M4F sphere in bands; measure with `cargo xtask mcu`).
+    #[inline]
+    fn lend(&mut self) -> Lent<'_, Self::Color> {
+        Lent {
+            width: self.width(),
+            row_range: self.row_range(),
+            depth_floor: self.depth_floor(),
+            rows: self.rows_mut(),
+        }
+    }
+}
+
+/// A target as one triangle's raster reads it ([`RenderTarget::lend`]).
+#[derive(Debug)]
+pub struct Lent<'r, C> {
+    /// [`RenderTarget::width`].
+    pub width: u32,
+    /// [`RenderTarget::row_range`].
+    pub row_range: (i32, i32),
+    /// [`RenderTarget::depth_floor`].
+    pub depth_floor: u16,
+    /// [`RenderTarget::rows_mut`].
+    pub rows: Rows<'r, C>,
 }
 
 #[cfg(test)]

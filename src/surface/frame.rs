@@ -170,6 +170,16 @@ impl<C: TargetColor> RenderTarget for Frame<'_, C> {
     }
 
     #[inline]
+    fn lend(&mut self) -> crate::pipeline::Lent<'_, C> {
+        crate::pipeline::Lent {
+            width: self.width,
+            row_range: self.row_range(),
+            depth_floor: self.depth_floor,
+            rows: self.rows_mut(),
+        }
+    }
+
+    #[inline]
     fn rows_mut(&mut self) -> super::Rows<'_, C> {
         // The depth rows may be written through what is lent.
         self.depth_filled = false;
