@@ -250,9 +250,10 @@ fn mcu_frames() {
         (wf.checksum, wf.stats.pixels),
         "sphere: the sized footprints differ from the footprints"
     );
-    // And in bands (the `sphere_sized` firmware).
+    // And in bands (the `sphere_sized` firmware, with its buffers: the set-ups it keeps).
+    let mut sized_buf = Box::new(scenes::SizedSphereBuffers::with_storage());
     let rs = scenes::sphere_mip_as::<scenes::LitSphereSized, _, _, _, _>(
-        Target::Bands(&mut *buf),
+        Target::Bands(&mut *sized_buf),
         fp,
         &mesh,
         0,
