@@ -31,7 +31,7 @@ use model_scene::{ModelBuffers, ModelTarget};
 
 /// Draws one model in bands and whole; prints both expected lines.
 #[allow(clippy::too_many_arguments)]
-fn check<const R: usize>(
+fn check<const R: usize, const S: usize>(
     name: &str,
     positions: &[Vec3],
     normals: &[Vec3],
@@ -42,7 +42,7 @@ fn check<const R: usize>(
 ) {
     let mesh = Mesh::new(positions, Some(normals), uvs, indices).unwrap();
     assert_eq!(mesh.triangles(), R, "{name}: one band range per triangle");
-    let mut bands = Box::new(ModelBuffers::<R>::new());
+    let mut bands = Box::new(ModelBuffers::<R, S>::new());
     let b = model_scene::render(
         ModelTarget::Bands(&mut bands),
         texture,
@@ -88,7 +88,7 @@ fn check<const R: usize>(
 #[test]
 fn fox_frames() {
     use fox as f;
-    check::<{ model_scene::FOX_RANGES }>(
+    check::<{ model_scene::FOX_RANGES }, { model_scene::FOX_SETUPS }>(
         "fox",
         &f::FOX_POSITIONS,
         &f::FOX_NORMALS,
@@ -102,7 +102,7 @@ fn fox_frames() {
 #[test]
 fn cesium_man_frames() {
     use cesium_man as c;
-    check::<{ model_scene::CESIUM_MAN_RANGES }>(
+    check::<{ model_scene::CESIUM_MAN_RANGES }, { model_scene::CESIUM_MAN_SETUPS }>(
         "cesium_man",
         &c::CESIUM_MAN_POSITIONS,
         &c::CESIUM_MAN_NORMALS,

@@ -11,7 +11,7 @@ use fixel_firmware::model_scene::{self, ModelBuffers, ModelTarget};
 use fixel_firmware::report;
 
 fn run() -> bool {
-    let mut buf = ModelBuffers::<{ model_scene::FOX_RANGES }>::new();
+    let mut buf = ModelBuffers::<{ model_scene::FOX_RANGES }, { model_scene::FOX_SETUPS }>::new();
     let Ok(mesh) = Mesh::new(
         core::hint::black_box(&model::FOX_POSITIONS),
         Some(&model::FOX_NORMALS),
