@@ -477,12 +477,16 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool> S
     fn shade(&self, f: &Fragment<[i32; M], Self::Triangle>) -> Option<u16> {
         let n = <S::Varyings as Varyings>::N;
         let tri = f.triangle.1;
-        let d = if UV {
-            let (pu, pv) = S::TEXCOORDS.unwrap_or((0, 1));
-            let get = |k: usize| f.varyings.get(k).copied().unwrap_or(0);
-            tri.uv.at(get(pu), get(pv), K::VARYINGS)
-        } else {
-            light_part(&f.varyings, n)
+        // The light coordinates, for the pixels that read the map (not those of a triangle
+        // in its own shade).
+        let light = || {
+            if UV {
+                let (pu, pv) = S::TEXCOORDS.unwrap_or((0, 1));
+                let get = |k: usize| f.varyings.get(k).copied().unwrap_or(0);
+                tri.uv.at(get(pu), get(pv), K::VARYINGS)
+            } else {
+                light_part(&f.varyings, n)
+            }
         };
         // Vertex 0's value to add back: none for the coordinates `UvLight` gives absolute.
         let base = |k: usize| {
@@ -493,17 +497,23 @@ impl<S: Shader, K: LightKind, F: ShadowFilter, const M: usize, const UV: bool> S
             }
         };
         let lit = match tri.mode {
-            LOOKUP => F::lit(
-                &self.map,
-                d[0].wrapping_add(base(0)),
-                d[1].wrapping_add(base(1)),
-                d[2].wrapping_add(tri.depth),
-            ),
+            LOOKUP => {
+                let d = light();
+                F::lit(
+                    &self.map,
+                    d[0].wrapping_add(base(0)),
+                    d[1].wrapping_add(base(1)),
+                    d[2].wrapping_add(tri.depth),
+                )
+            }
             IN_SHADE => 0,
-            _ => self.lit(
-                core::array::from_fn(|k| d[k].wrapping_add(base(k))),
-                tri.bias,
-            ),
+            _ => {
+                let d = light();
+                self.lit(
+                    core::array::from_fn(|k| d[k].wrapping_add(base(k))),
+                    tri.bias,
+                )
+            }
         };
         let mut iv = S::Varyings::zero();
         for (a, b) in iv.as_mut_slice().iter_mut().zip(f.varyings.iter()) {
