@@ -183,6 +183,7 @@ fn opts() -> GltfOpts {
         max_texture_kib: 256,
         krate: "fixel".into(),
         rgb565: DEFAULT_RGB565.into(),
+        order_by_height: false,
     }
 }
 
@@ -249,6 +250,7 @@ fn committed_fixture_and_its_bake_are_current() {
         max_texture_kib: 256,
         krate: "fixel".into(),
         packed: false,
+        order_by_height: false,
     };
     let b = bake(load(&dir.join("tiles.gltf")).unwrap(), &args.opts()).unwrap();
     let want = source(
@@ -402,14 +404,15 @@ fn sizes_round_to_the_nearest_power_of_two_and_resampling_keeps_the_mean() {
 fn committed_sample_models_are_current() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let bless = std::env::var_os("FIXEL_BLESS").is_some();
-    for (glb, out, name, scale, levels) in [
-        ("Fox.glb", "fox.rs", "FOX", 0.02, Levels::Full),
+    for (glb, out, name, scale, levels, order_by_height) in [
+        ("Fox.glb", "fox.rs", "FOX", 0.02, Levels::Full, false),
         (
             "CesiumMan.glb",
             "cesium_man.rs",
             "CESIUM_MAN",
             2.0,
             Levels::Count(1),
+            true,
         ),
     ] {
         let args = GltfArgs {
@@ -423,6 +426,7 @@ fn committed_sample_models_are_current() {
             max_texture_kib: 256,
             krate: "fixel".into(),
             packed: true,
+            order_by_height,
         };
         let b = bake(load(&root.join(&args.input)).unwrap(), &args.opts()).unwrap();
         let bin_name = out.replace(".rs", ".bin");

@@ -117,6 +117,7 @@ pub fn load_model(path: &Path) -> Result<Model, String> {
         max_texture_kib: 256,
         krate: "fixel".into(),
         rgb565: crate::bake::DEFAULT_RGB565.into(),
+        order_by_height: false,
     };
     model_from(path, imported, &opts)
 }

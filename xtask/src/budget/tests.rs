@@ -51,6 +51,7 @@ fn counts_the_fox_as_the_firmware_draws_it() {
         max_texture_kib: 256,
         krate: "fixel".into(),
         rgb565: crate::bake::DEFAULT_RGB565.into(),
+        order_by_height: false,
     };
     let model = model_from(&path, bake_gltf::load(&path).unwrap(), &opts).unwrap();
     let (c, loads) = render::count(&model, (240, 320), &render::view()).unwrap();
