@@ -86,8 +86,11 @@ mod tests {
         }
     }
 
+    /// A corner's position, normal, texture coordinates and colour.
+    type Corner = ([f64; 3], [f64; 3], [f64; 2], [f64; 3]);
+
     /// Each corner's attributes, triangle by triangle: what the order must not change.
-    fn corners(m: &Imported) -> Vec<Vec<([f64; 3], [f64; 3], [f64; 2], [f64; 3])>> {
+    fn corners(m: &Imported) -> Vec<Vec<Corner>> {
         let c = m.colors.as_ref().unwrap();
         m.mesh
             .indices
