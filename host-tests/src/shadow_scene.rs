@@ -149,9 +149,10 @@ pub fn fixel_shadow<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     s: &Setup,
 ) -> FixelShadow {
-    both_passes::<K, Shadowed<'_, Flat, K, F, M>, M>(meshes, camera, space, s, |map| {
-        Shadowed::new(Flat(0xFFFF), map, s.bias)
-    })
+    let (texels, written) = light_pass(meshes, space, s);
+    let lit = |map| Shadowed::new(Flat(0xFFFF), map, s.bias);
+    lit_pass::<K, Shadowed<'_, Flat, K, F, M>, M, false>(meshes, camera, space, s, &texels, lit)
+        .with_map(texels, written)
 }
 
 /// A white shader with texture coordinates (varyings `u, v`, unread): what [`ShadowedUv`]
@@ -179,39 +180,49 @@ pub fn fixel_shadow_uv<K: LightKind, F: ShadowFilter, const M: usize>(
     space: &LightSpace<K>,
     s: &Setup,
 ) -> FixelShadow {
-    both_passes::<K, ShadowedUv<'_, FlatUv, K, F, M>, M>(meshes, camera, space, s, |map| {
-        ShadowedUv::new(FlatUv, map, s.bias)
-    })
+    let (texels, written) = light_pass(meshes, space, s);
+    let lit = |map| ShadowedUv::new(FlatUv, map, s.bias);
+    lit_pass::<K, ShadowedUv<'_, FlatUv, K, F, M>, M, true>(meshes, camera, space, s, &texels, lit)
+        .with_map(texels, written)
 }
 
-/// The light pass, then the lit pass with the shader `make` builds on the map.
-fn both_passes<'m, K: LightKind, S, const M: usize>(
+/// The light pass of `meshes` into a map of `s.size` texels square: its texels and the
+/// texels written.
+fn light_pass<K: LightKind>(
     meshes: &[SceneMesh],
-    camera: &Camera,
     space: &LightSpace<K>,
     s: &Setup,
-    make: impl FnOnce(ShadowMap<'m>) -> Result<S, fixel::Error>,
-) -> FixelShadow
-where
-    S: Shader<Varyings = [i32; M]> + ShadowedLike,
-{
+) -> (Vec<u16>, u32) {
     let mut texels = vec![0u16; (s.size * s.size) as usize];
-    let texels_written;
+    let mut written = 0;
     {
         let mut map = DepthMap::new(&mut texels, s.size).expect("map size");
         map.clear();
         let light = DepthOnlyDraw::new(&map, s.light_cull).expect("light pass");
-        let mut written = 0;
         for m in meshes {
             let uvs = uvs_of(m);
             let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
             written +=
                 light_pass_mesh(&light, &mesh, &m.model, space, &mut map).expect("light pass");
         }
-        texels_written = written;
     }
-    // The map lives as long as the shader: leaked for the test's lifetime.
-    let texels: &'m [u16] = Box::leak(texels.into_boxed_slice());
+    (texels, written)
+}
+
+/// The lit pass with the shader `make` builds on the map `texels`. `UV`: the lit-pass
+/// vertices carry the texture coordinates (the inner shader's two varyings) before the
+/// light's; otherwise the light's alone.
+fn lit_pass<'m, K: LightKind, S, const M: usize, const UV: bool>(
+    meshes: &[SceneMesh],
+    camera: &Camera,
+    space: &LightSpace<K>,
+    s: &Setup,
+    texels: &'m [u16],
+    make: impl FnOnce(ShadowMap<'m>) -> Result<S, fixel::Error>,
+) -> FixelShadow
+where
+    S: Shader<Varyings = [i32; M]> + ShadowedLike,
+{
     let view = ShadowMap::new(texels, s.size).expect("map");
     let shader = make(view).expect("shader").dark_outside(s.outside);
     let vp = Viewport::new(0, 0, s.w, s.h).expect("viewport");
@@ -224,13 +235,12 @@ where
         .expect("depth");
     frame.clear(Rgb565::BLACK);
     let mut pixels = 0;
-    let uv_varyings = M > 4;
     for m in meshes {
         let uvs = uvs_of(m);
         let mesh = Mesh::new(&m.positions, None, &uvs, &m.indices).expect("mesh");
         shadowed_mesh_triangles(&mesh, &m.model, camera, None, space, |cv, lv| {
             let tri = [0, 1, 2].map(|k| {
-                if uv_varyings {
+                if UV {
                     let v = cv[k].to_vertex();
                     let uv = Vertex::new(v.position, [v.varyings[0], v.varyings[1]]);
                     with_light::<2, M>(&uv, lv[k])
@@ -253,9 +263,20 @@ where
     FixelShadow {
         lit,
         covered,
-        map: texels.to_vec(),
-        texels_written,
+        map: Vec::new(),
+        texels_written: 0,
         pixels,
+    }
+}
+
+impl FixelShadow {
+    /// The lit pass's result with the light pass's map and texels written.
+    fn with_map(self, map: Vec<u16>, texels_written: u32) -> Self {
+        FixelShadow {
+            map,
+            texels_written,
+            ..self
+        }
     }
 }
 
