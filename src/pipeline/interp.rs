@@ -633,6 +633,22 @@ pub(crate) fn step<V: Varyings>(v: &mut V, d: &V) {
     add(v, d);
 }
 
+/// [`step`] of the first `live` varyings only (a shader's
+/// [`Shader::INTERPOLATED`](crate::shading::Shader::INTERPOLATED), a constant: with the
+/// default, all of them, the same code as [`step`]); the others go stale.
+#[inline(always)]
+pub(crate) fn step_live<V: Varyings>(v: &mut V, d: &V, live: usize) {
+    if live >= V::N {
+        add(v, d);
+    } else {
+        for k in 0..live {
+            if let (Some(a), Some(b)) = (v.as_mut_slice().get_mut(k), d.as_slice().get(k)) {
+                *a = a.wrapping_add(*b);
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::{scale_q16_split, INV_SMALL};

@@ -283,8 +283,9 @@ pub trait Shader: Copy {
     fn triangle(&self, varyings: &mut [Self::Varyings; 3]) -> Self::Triangle;
 
     /// How many of the varyings, from the first, the shader reads in [`Shader::shade`]: the
-    /// exact projection's span loop interpolates only those (the others reach
-    /// [`Shader::triangle`] at the vertices and are stale in fragments). Default: all.
+    /// span loops interpolate only those per pixel (the exact projection's, and the affine
+    /// and subdivided ones' steps; the quadratic projection steps them all). The others
+    /// reach [`Shader::triangle`] at the vertices and are stale in fragments. Default: all.
     const INTERPOLATED: usize = usize::MAX;
 
     /// [`Shader::triangle`]'s result in 32 bits, for a band renderer that keeps a triangle

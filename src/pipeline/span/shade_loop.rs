@@ -6,7 +6,7 @@
 
 use super::depth_pass::{low_bits, low_bits_short};
 use crate::color::TargetColor;
-use crate::pipeline::interp::step;
+use crate::pipeline::interp::step_live;
 use crate::pipeline::stages::DepthStage;
 use crate::shading::{Fragment, Shader};
 
@@ -111,7 +111,7 @@ macro_rules! shade_every {
             if let Some(c) = $colour {
                 *$o = C::from_rgb565(c);
             }
-            step(&mut $v, &$slope);
+            step_live(&mut $v, &$slope, S::INTERPOLATED);
         }
         return $out.len() as u32;
     };
@@ -178,7 +178,7 @@ macro_rules! shade_linear_fn {
                     }
                 }
                 m >>= 1;
-                step(&mut v, &slope);
+                step_live(&mut v, &slope, S::INTERPOLATED);
             }
             written
         }
@@ -253,7 +253,7 @@ pub(super) fn shade_depth_inline<S: Shader, C: TargetColor>(
                     hidden += 1;
                 }
                 z = z.wrapping_add(dz);
-                step(&mut v, &slope);
+                step_live(&mut v, &slope, S::INTERPOLATED);
             }
         };
     }
