@@ -4,6 +4,8 @@
 //! size), the unread varyings large and varied so that a loop stepping the wrong ones would
 //! show.
 
+mod common;
+
 use embedded_graphics_core::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use fixel::geometry::{Cull, Vertex, Viewport};
@@ -87,15 +89,8 @@ fn vertex() -> impl Strategy<Value = Vertex<4>> {
         })
 }
 
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(64)
-}
-
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: common::cases(64), ..ProptestConfig::default() })]
 
     #[test]
     fn reading_fewer_varyings_draws_the_same_pixels_in_every_projection(
