@@ -32,6 +32,22 @@ fn add<V: Varyings>(v: &mut V, d: &V) {
     }
 }
 
+/// [`add`] of the first `live` varyings only (a shader's
+/// [`Shader::INTERPOLATED`](crate::shading::Shader::INTERPOLATED), a constant: with the
+/// default, all of them, it is [`add`]); the others go stale.
+#[inline(always)]
+fn add_live<V: Varyings>(v: &mut V, d: &V, live: usize) {
+    if live >= V::N {
+        add(v, d);
+    } else {
+        for k in 0..live {
+            if let (Some(a), Some(b)) = (v.as_mut_slice().get_mut(k), d.as_slice().get(k)) {
+                *a = a.wrapping_add(*b);
+            }
+        }
+    }
+}
+
 /// The second index of the pair [`lod_pair`] gives for a reflection: `(a, REFLECTION)`
 /// names `n` at varyings `a..a + 3` and `v` at `a + 3..a + 6` ([`Shader::LOD_REFLECTION`]).
 /// Past every varying, so code that reads the pair as texel coordinates reads 0 there.
@@ -158,9 +174,7 @@ impl<V: Varyings> Hyper<V> {
     /// [`Hyper::add`] of `q` and the first `live` varyings only (the others go stale).
     #[inline(always)]
     fn add_live(&mut self, d: &Hyper<V>, live: usize) {
-        for k in 0..V::N.min(live) {
-            self.s.as_mut_slice()[k] = self.s.as_slice()[k].wrapping_add(d.s.as_slice()[k]);
-        }
+        add_live(&mut self.s, &d.s, live);
         self.q = self.q.wrapping_add(d.q);
     }
     /// [`Hyper::resolve`] of the first `live` varyings into `out` (the others untouched).
@@ -194,7 +208,7 @@ pub(crate) struct FillSpec {
     /// Left shift to undo on the pair (wrapping), see `Shader::coord_shift`.
     pub shift: u32,
     /// The varyings the shader reads ([`Shader::INTERPOLATED`](crate::shading::Shader::INTERPOLATED)):
-    /// the exact mode fills only the first `live` (the others are left stale).
+    /// the exact and linear fills step only the first `live` (the others are left stale).
     pub live: usize,
 }
 
@@ -614,7 +628,7 @@ impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
                     for k in 0..V::N {
                         x.as_mut_slice()[k] = v.as_slice()[k];
                     }
-                    step(&mut v, &p.slope);
+                    step_live(&mut v, &p.slope, spec.live);
                 }
             }
             if spec.lod {
@@ -627,26 +641,11 @@ impl<V: Varyings, const SUBDIVIDED: bool> Fill<V> for Linear<V, SUBDIVIDED> {
     }
 }
 
-/// `v += d` per varying, wrapping.
-#[inline(always)]
-pub(crate) fn step<V: Varyings>(v: &mut V, d: &V) {
-    add(v, d);
-}
-
-/// [`step`] of the first `live` varyings only (a shader's
-/// [`Shader::INTERPOLATED`](crate::shading::Shader::INTERPOLATED), a constant: with the
-/// default, all of them, the same code as [`step`]); the others go stale.
+/// `v += d` for the first `live` varyings, wrapping (see [`add_live`]): a span loop's step
+/// from one pixel to the next.
 #[inline(always)]
 pub(crate) fn step_live<V: Varyings>(v: &mut V, d: &V, live: usize) {
-    if live >= V::N {
-        add(v, d);
-    } else {
-        for k in 0..live {
-            if let (Some(a), Some(b)) = (v.as_mut_slice().get_mut(k), d.as_slice().get(k)) {
-                *a = a.wrapping_add(*b);
-            }
-        }
-    }
+    add_live(v, d, live);
 }
 
 #[cfg(test)]

@@ -148,7 +148,7 @@ fn run_linear<S: Shader, C: TargetColor, D: DepthStage, const SUB: bool, const Z
         pair,
         lod: per_piece,
         shift: ctx.coord_shift,
-        live: usize::MAX,
+        live: S::INTERPOLATED,
     };
     let dz = s.z.dx;
     let mut z = s.plane_at(&s.z, x, y);
@@ -262,7 +262,7 @@ fn run_short<
         pair: lod_pair::<S>().unwrap_or((0, 1)),
         lod: at_start,
         shift: ctx.coord_shift,
-        live: usize::MAX,
+        live: S::INTERPOLATED,
     };
     let p = Linear::<S::Varyings, SUB>::only_piece(s, x, y, n as u32, spec);
     let dz = s.z.dx;
